@@ -1,0 +1,113 @@
+// Scaling benchmark on the chain-with-contact example: NFRC wall time, Newton iterations, and
+// the cost of one Newton iteration relative to one dense LU of the bordered condensed system,
+// both measured in this run (ratios survive a noisy shared machine; absolute times do not).
+//
+//   build/bench/bench_chain [--quick]      prints a Markdown table
+#include <Eigen/LU>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "hbtrack/analysis/nfrc.hpp"
+#include "hbtrack/io/case_file.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// Median time of one dense partial-pivoting LU of a well-conditioned m x m matrix.
+double dense_lu_seconds(int m) {
+  Eigen::MatrixXd a = Eigen::MatrixXd::Random(m, m) + m * Eigen::MatrixXd::Identity(m, m);
+  const int reps = std::max(5, static_cast<int>(2e7 / (static_cast<double>(m) * m * m)));
+  std::vector<double> times;
+  double sink = 0;
+  for (int r = 0; r < std::min(reps, 2000); ++r) {
+    const auto t0 = Clock::now();
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
+    times.push_back(seconds_since(t0));
+    sink += lu.matrixLU()(0, 0);
+  }
+  if (sink == 42.0) std::printf(" ");  // keep the factorisations alive
+  return median(times);
+}
+
+// The chain example with n masses, the contact and the forcing at the free end, the range
+// around the first mode, and the forcing scaled so that the linear peak is three gaps.
+std::string chain_case(int n, int harmonics, const std::string& condensation) {
+  const double omega1 = 2.0 * std::sin(std::numbers::pi / (2.0 * (2 * n + 1)));
+  int samples = 64;
+  while (samples < 16 * (harmonics + 1)) samples *= 2;
+  char text[2048];
+  std::snprintf(text, sizeof text,
+                "[model]\nchain = { count = %d, mass = 1.0, stiffness = 1.0 }\n"
+                "[damping]\nmodal_ratios = [0.05]\n"
+                "[[forcing]]\ndof = \"x%d\"\nharmonic = 1\ncos = 1.0\n"
+                "[parameters]\namplitude = 1.0\nclearance = 0.05\n"
+                "[[elements]]\ntype = \"unilateral_spring\"\ndofs = [\"x%d\"]\nstiffness = 2.0\ngap = \"clearance\"\n"
+                "[harmonic_balance]\nharmonics = %d\nsamples = %d\ncondensation = \"%s\"\n"
+                "[continuation]\nomega_start = %.17g\nomega_end = %.17g\nstep = 0.02\n",
+                n, n, n, harmonics, samples, condensation.c_str(), 0.6 * omega1, 1.6 * omega1);
+  return text;
+}
+
+struct Row {
+  int n, harmonics, unknowns, points, newton, evaluations;
+  std::string condensation, stop;
+  double wall, lu, per_evaluation;
+};
+
+Row measure(int n, int harmonics, const std::string& condensation) {
+  const auto path = std::filesystem::temp_directory_path() / "hbtrack_bench_chain.toml";
+  std::ofstream(path) << chain_case(n, harmonics, condensation);
+  hbtrack::CaseDefinition c = hbtrack::load_case(path.string());
+  {
+    hbtrack::HarmonicBalance probe(c.model, c.elements, c.parameters, c.harmonic_balance);
+    const double peak = hbtrack::automatic_length_scale(probe, c.nfrc.omega_start, c.nfrc.omega_end);
+    c.parameters.set("amplitude", 3.0 * 0.05 / peak);
+  }
+  hbtrack::HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+  const auto t0 = Clock::now();
+  const hbtrack::NfrcResult r = hbtrack::compute_nfrc(hbm, c.nfrc, {});
+  const double wall = seconds_since(t0);
+  const auto& s = r.continuation.summary;
+  Row row{n, harmonics, hbm.unknowns(), s.points, s.newton_iterations, s.jacobian_evaluations, hbm.condensation_method(), s.stop_reason,
+          wall, dense_lu_seconds(hbm.unknowns() + 1), 0};
+  row.per_evaluation = wall / std::max(1, s.jacobian_evaluations);
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  std::vector<Row> rows;
+  const std::vector<int> sizes = quick ? std::vector<int>{2, 8} : std::vector<int>{2, 8, 32, 128};
+  const std::vector<int> harmonics = quick ? std::vector<int>{5} : std::vector<int>{5, 10, 20};
+  for (int n : sizes)
+    for (int h : harmonics) rows.push_back(measure(n, h, "auto"));
+  // Condensation against the full system on one size.
+  if (!quick)
+    for (const char* method : {"schur", "none"}) rows.push_back(measure(32, 10, method));
+
+  std::printf("| n | H | condensation | unknowns | points | Newton it. | Jacobians | NFRC wall [s] | per Jacobian [ms] | dense LU [ms] | per Jacobian / LU | stop |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Row& r : rows)
+    std::printf("| %d | %d | %s | %d | %d | %d | %d | %.4f | %.4f | %.4f | %.1f | %s |\n", r.n, r.harmonics, r.condensation.c_str(),
+                r.unknowns, r.points, r.newton, r.evaluations, r.wall, 1e3 * r.per_evaluation, 1e3 * r.lu, r.per_evaluation / r.lu,
+                r.stop.c_str());
+  return 0;
+}

@@ -1,0 +1,84 @@
+#pragma once
+// Nonlinear frequency response curve: arc-length continuation of the harmonic balance
+// solutions in omega, with the recorded outputs of each point.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hbtrack/continuation/continuation.hpp"
+#include "hbtrack/hbm/harmonic_balance.hpp"
+#include "hbtrack/hbm/recorded_outputs.hpp"
+
+namespace hbtrack {
+
+struct NfrcOptions {
+  double omega_start = 0;  // rad/s
+  double omega_end = 0;    // rad/s
+  // Displacement unit of the arc-length norm. 0 (default): adaptive, the current amplitude
+  // max|x| floored at 1 % of the peak linear response over the range; > 0: this fixed value.
+  double length_scale = 0;
+  ContinuationOptions continuation;
+  void validate() const;
+};
+
+// The HBM residual seen by the continuation engine, lambda = omega.
+class NfrcProblem final : public ContinuationProblem {
+ public:
+  // length_scale: the displacement unit of the arc-length norm. When `adaptive`, the unit
+  // follows the current amplitude max|u| and length_scale is only its floor.
+  NfrcProblem(HarmonicBalance& hbm, double length_scale, double omega_scale, double force_scale, bool adaptive = false)
+      : hbm_(hbm), length_scale_(length_scale), omega_scale_(omega_scale), force_scale_(force_scale), adaptive_(adaptive) {}
+  int size() const override { return hbm_.unknowns(); }
+  void evaluate(const Eigen::VectorXd& u, double omega, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
+                Eigen::VectorXd* r_omega) override {
+    hbm_.evaluate(u, omega, r, jacobian, r_omega);
+  }
+  Eigen::VectorXd unknown_scale(const Eigen::VectorXd& u) const override {
+    const double amplitude = adaptive_ && u.size() ? u.cwiseAbs().maxCoeff() : 0.0;
+    return Eigen::VectorXd::Constant(hbm_.unknowns(), std::max(length_scale_, amplitude));
+  }
+  double parameter_scale() const override { return omega_scale_; }
+  double residual_scale() const override { return force_scale_; }
+
+ private:
+  HarmonicBalance& hbm_;
+  double length_scale_, omega_scale_, force_scale_;
+  bool adaptive_;
+};
+
+// One recorded point of a branch.
+struct RecordedPoint {
+  double omega = 0;
+  std::vector<OutputValues> outputs;  // one per OutputDof
+};
+
+RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,
+                           const std::vector<OutputDof>& outputs);
+
+// Scales used by NfrcProblem, from the case: peak linear response and forcing norm.
+double automatic_length_scale(HarmonicBalance& hbm, double omega_start, double omega_end);
+double force_scale(HarmonicBalance& hbm, double length_scale);
+
+struct NfrcResult {
+  ContinuationResult continuation;
+  std::vector<RecordedPoint> recorded;
+  double length_scale = 0;
+};
+
+// Called for each accepted point with its recorded outputs; return false to stop.
+using RecordedObserver = std::function<bool(const BranchPoint&, const RecordedPoint&, int)>;
+
+NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
+                        const RecordedObserver& observer = {});
+
+// One periodic solution at fixed omega, by Newton from the linear solution (or from `guess`).
+struct FixedFrequencySolution {
+  bool converged = false;
+  int newton_iterations = 0;
+  Eigen::VectorXd x;
+  RecordedPoint recorded;
+};
+FixedFrequencySolution solve_at_frequency(HarmonicBalance& hbm, double omega, const std::vector<OutputDof>& outputs,
+                                          double tolerance, int max_iterations, const Eigen::VectorXd* guess = nullptr);
+
+}  // namespace hbtrack

@@ -1,0 +1,55 @@
+#pragma once
+// A local nonlinear element: forces on a few dofs computed pointwise in time from their
+// displacements and velocities (the "time" half of the alternating frequency/time method).
+// Elements see all N samples of a period at once so that the loop over samples stays inside
+// one virtual call.
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hbtrack/model/parameters.hpp"
+
+namespace hbtrack {
+
+// What an element returns for N samples of its k local dofs. Column layouts:
+//   force          N x k
+//   dforce_dx      N x (k*k), column i + k*j holds d f_i / d x_j
+//   dforce_dv      N x (k*k), same layout (left empty when the element ignores velocity)
+//   dforce_domega  N x k, explicit dependence on the forcing frequency (empty if none)
+//   dforce_dproperty N x (k*P), column i + k*p holds d f_i / d property_p
+struct ElementResponse {
+  Eigen::MatrixXd force;
+  Eigen::MatrixXd dforce_dx;
+  Eigen::MatrixXd dforce_dv;
+  Eigen::MatrixXd dforce_domega;
+  Eigen::MatrixXd dforce_dproperty;
+};
+
+class NonlinearElement {
+ public:
+  virtual ~NonlinearElement() = default;
+
+  virtual std::string type() const = 0;
+  // Names of the scalar properties the element reads (stiffness, gap, mu, ...), in the order
+  // of `properties` and of the columns of dforce_dproperty.
+  virtual const std::vector<std::string>& property_names() const = 0;
+  virtual bool depends_on_velocity() const = 0;
+  virtual bool depends_on_omega() const { return false; }
+  // Evaluates forces and derivatives. x, v: N x k samples; property_values: one per property.
+  virtual void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
+                        const std::vector<double>& property_values, ElementResponse& out,
+                        bool want_property_derivatives) const = 0;
+
+  int local_dofs() const { return static_cast<int>(dofs.size()); }
+  std::vector<double> property_values(const ParameterSet& parameters) const;
+
+  std::vector<int> dofs;                     // model dof indices, size k
+  std::vector<ParameterBinding> properties;  // one per property_names()
+  // Lanczos sigma-factor exponent p applied to this element's force harmonics (0: no filter).
+  double lanczos_exponent = 0.0;
+};
+
+using ElementList = std::vector<std::shared_ptr<NonlinearElement>>;
+
+}  // namespace hbtrack

@@ -1,0 +1,86 @@
+#pragma once
+// The harmonic balance residual of a structural model with local nonlinear elements, condensed
+// onto the retained dofs (paper eqs 9-11, 17-23):
+//   R(x, omega) = Zr(omega) x + f_nl(x, omega) - amplitude * Fr(omega),
+// with the nonlinear forces from the alternating frequency/time method and an analytic Jacobian.
+// Unknowns: harmonic-major real coefficients of the retained dofs, size q(2H+1).
+// The model, elements and options are constant; evaluation buffers are reused (not thread-safe:
+// one instance per thread).
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hbtrack/elements/nonlinear_element.hpp"
+#include "hbtrack/hbm/fourier_basis.hpp"
+#include "hbtrack/hbm/linear_condenser.hpp"
+#include "hbtrack/model/parameters.hpp"
+#include "hbtrack/model/structural_model.hpp"
+
+namespace hbtrack {
+
+struct HarmonicBalanceOptions {
+  int harmonics = 5;             // H
+  int samples = 0;               // N time samples per period; 0 picks a power of two >= 8(H+1)
+  std::string condensation = "auto";  // auto | schur | modal | none (solve the full system)
+  // Throws std::invalid_argument naming the field and the rule broken.
+  void validate() const;
+  int effective_samples() const;
+};
+
+class HarmonicBalance {
+ public:
+  HarmonicBalance(StructuralModel model, ElementList elements, ParameterSet parameters,
+                  HarmonicBalanceOptions options);
+
+  int unknowns() const { return static_cast<int>(retained_.size()) * basis_.coefficients(); }
+  int retained_dofs() const { return static_cast<int>(retained_.size()); }
+  const std::vector<int>& retained() const { return retained_; }
+  const FourierBasis& basis() const { return basis_; }
+  const StructuralModel& model() const { return model_; }
+  const ElementList& elements() const { return elements_; }
+  const HarmonicBalanceOptions& options() const { return options_; }
+  std::string condensation_method() const { return condenser_->method(); }
+  ParameterSet& parameters() { return parameters_; }
+  const ParameterSet& parameters() const { return parameters_; }
+  int amplitude_parameter() const { return amplitude_index_; }
+
+  // r = R(x, omega); optionally the Jacobian dR/dx and dR/d(omega).
+  void evaluate(const Eigen::VectorXd& x, double omega, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian = nullptr,
+                Eigen::VectorXd* r_omega = nullptr);
+  // dR/d(parameter) at fixed x and omega, analytic.
+  Eigen::VectorXd parameter_derivative(const Eigen::VectorXd& x, double omega, int parameter);
+  // Harmonic coefficients of every dof, n(2H+1) harmonic-major, recovered from a solution x.
+  Eigen::VectorXd expand(const Eigen::VectorXd& x, double omega);
+  // Solution of the linear system (nonlinear forces switched off) at omega, in unknown layout.
+  Eigen::VectorXd linear_solution(double omega);
+  // Nonlinear force harmonics on the retained dofs (unknown layout), Lanczos filter included.
+  Eigen::VectorXd nonlinear_forces(const Eigen::VectorXd& x, double omega);
+
+ private:
+  struct ElementSlot {
+    std::vector<int> columns;  // positions of the element's dofs among the retained dofs
+    Eigen::VectorXd sigma;     // Lanczos factors per coefficient
+    Eigen::MatrixXd x, v;      // N x k local samples
+    ElementResponse response;
+  };
+  void sample(const Eigen::VectorXd& x, double omega);
+  void add_condensed_linear_part(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
+                                 Eigen::VectorXd* r_omega);
+  Eigen::VectorXcd harmonic(const Eigen::VectorXd& x, int j, int dofs) const;
+
+  StructuralModel model_;
+  ElementList elements_;
+  ParameterSet parameters_;
+  HarmonicBalanceOptions options_;
+  FourierBasis basis_;
+  std::vector<int> retained_;
+  std::unique_ptr<LinearCondenser> condenser_;
+  int amplitude_index_ = -1;
+  std::vector<ElementSlot> slots_;
+  // Workspace: samples of all retained dofs.
+  Eigen::MatrixXd x_samples_, v_unit_samples_;
+  Eigen::MatrixXd block_, block_v_, coeffs_, coeffs_v_;
+};
+
+}  // namespace hbtrack

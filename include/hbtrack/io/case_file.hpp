@@ -1,0 +1,38 @@
+#pragma once
+// A study described in a TOML case file (format documented in docs/case-file.md): the model,
+// damping, forcing, nonlinear elements, named parameters, harmonic and continuation settings,
+// and the output dofs to record.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hbtrack/analysis/nfrc.hpp"
+#include "hbtrack/elements/nonlinear_element.hpp"
+#include "hbtrack/hbm/harmonic_balance.hpp"
+#include "hbtrack/hbm/recorded_outputs.hpp"
+#include "hbtrack/model/parameters.hpp"
+#include "hbtrack/model/structural_model.hpp"
+
+namespace hbtrack {
+
+// A bad case file or override: the message is one line "<file>:<line>: <field>: <rule>".
+class CaseError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct CaseDefinition {
+  std::string path;
+  StructuralModel model;
+  ElementList elements;
+  ParameterSet parameters;
+  HarmonicBalanceOptions harmonic_balance;
+  NfrcOptions nfrc;
+  std::vector<OutputDof> outputs;
+};
+
+// `overrides` are "NAME=VALUE": a named parameter (`amplitude=2`) or a dotted case key
+// (`harmonic_balance.harmonics=10`), applied before the case is read.
+CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace hbtrack

@@ -1,0 +1,31 @@
+#pragma once
+// Result folders (design.md contracts): a branch CSV appended and flushed point by point, so a
+// killed run keeps what it computed, and summary.json replaced atomically.
+#include <Eigen/Dense>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace hbtrack {
+
+class CsvAppender {
+ public:
+  CsvAppender(const std::string& path, const std::vector<std::string>& header);
+  void append(const std::vector<double>& row);
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::ofstream out_;
+  size_t columns_;
+};
+
+// Writes to DIR/name.tmp then renames over DIR/name.
+void write_json_atomically(const std::string& path, const nlohmann::json& document);
+
+// Creates DIR (and parents); throws std::runtime_error naming it on failure.
+void ensure_directory(const std::string& dir);
+
+}  // namespace hbtrack

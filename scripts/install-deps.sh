@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs the Debian packages hbtrack needs to build, test and plot. Idempotent; run as root
+# (or with sudo). The README and .ci/run both call this one script.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libeigen3-dev          # dense/sparse linear algebra
+  libcli11-dev           # command line
+  nlohmann-json3-dev     # summary.json
+  libtoml11-dev          # case files
+  libmatio-dev           # MATLAB .mat matrices
+  libgtest-dev           # tests
+  libbenchmark-dev       # bench/
+  python3-numpy python3-matplotlib  # plots of the main job
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+sudo_cmd=""
+[ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo_cmd apt-get update -qq
+$sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"

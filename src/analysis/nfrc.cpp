@@ -1,0 +1,84 @@
+#include "hbtrack/analysis/nfrc.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace hbtrack {
+
+void NfrcOptions::validate() const {
+  if (!std::isfinite(omega_start) || omega_start < 0)
+    throw std::invalid_argument("continuation.omega_start: must be finite and >= 0");
+  if (!std::isfinite(omega_end) || omega_end < 0) throw std::invalid_argument("continuation.omega_end: must be finite and >= 0");
+  if (omega_end == omega_start) throw std::invalid_argument("continuation.omega_end: must differ from omega_start");
+  if (!std::isfinite(length_scale) || length_scale < 0) throw std::invalid_argument("continuation.length_scale: must be >= 0");
+  continuation.validate();
+}
+
+RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,
+                           const std::vector<OutputDof>& outputs) {
+  RecordedPoint p;
+  p.omega = omega;
+  if (outputs.empty()) return p;
+  const Eigen::VectorXd full = hbm.expand(x, omega);
+  const int samples = std::max(hbm.basis().samples(), 256);
+  for (const OutputDof& o : outputs)
+    p.outputs.push_back(output_values(full, hbm.model().dofs(), hbm.basis().harmonics(), o.dof, samples));
+  return p;
+}
+
+double automatic_length_scale(HarmonicBalance& hbm, double omega_start, double omega_end) {
+  // The largest linear response on the retained dofs over the range sets the displacement unit.
+  double peak = 0;
+  constexpr int grid = 64;
+  for (int i = 0; i <= grid; ++i) {
+    const double omega = omega_start + (omega_end - omega_start) * i / grid;
+    const Eigen::VectorXd x = hbm.linear_solution(omega);
+    if (x.allFinite()) peak = std::max(peak, x.cwiseAbs().maxCoeff());
+  }
+  return peak > 0 ? peak : 1.0;
+}
+
+double force_scale(HarmonicBalance& hbm, double length_scale) {
+  double unit = 0;
+  for (const HarmonicForce& f : hbm.model().forcing)
+    unit = std::max({unit, f.cos_part.cwiseAbs().maxCoeff(), f.sin_part.cwiseAbs().maxCoeff()});
+  const double amplitude = std::abs(hbm.parameters().value(hbm.amplitude_parameter()));
+  if (unit * amplitude > 0) return unit * amplitude;
+  if (unit > 0) return unit;
+  return hbm.model().stiffness.cwiseAbs().maxCoeff() * length_scale;
+}
+
+NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
+                        const RecordedObserver& observer) {
+  options.validate();
+  NfrcResult result;
+  const bool adaptive = options.length_scale == 0;
+  const double reference = adaptive ? automatic_length_scale(hbm, options.omega_start, options.omega_end) : options.length_scale;
+  result.length_scale = adaptive ? 0.01 * reference : reference;
+  NfrcProblem problem(hbm, result.length_scale, std::abs(options.omega_end - options.omega_start),
+                      force_scale(hbm, reference), adaptive);
+  const Eigen::VectorXd x0 = hbm.linear_solution(options.omega_start);
+  result.continuation = continue_branch(
+      problem, x0, options.omega_start, options.omega_end, options.continuation,
+      [&](const BranchPoint& p, int index) {
+        // The last point may replace a point beyond the range end: keep recorded in step.
+        result.recorded.resize(static_cast<size_t>(index));
+        result.recorded.push_back(record_point(hbm, p.u, p.lambda, outputs));
+        return !observer || observer(p, result.recorded.back(), index);
+      });
+  return result;
+}
+
+FixedFrequencySolution solve_at_frequency(HarmonicBalance& hbm, double omega, const std::vector<OutputDof>& outputs,
+                                          double tolerance, int max_iterations, const Eigen::VectorXd* guess) {
+  FixedFrequencySolution s;
+  s.x = guess ? *guess : hbm.linear_solution(omega);
+  const double length = automatic_length_scale(hbm, omega, omega);
+  NfrcProblem problem(hbm, length, std::max(omega, 1.0), force_scale(hbm, length));
+  s.newton_iterations = newton_at_fixed_parameter(problem, s.x, omega, tolerance, max_iterations);
+  s.converged = s.newton_iterations >= 0;
+  if (s.converged) s.recorded = record_point(hbm, s.x, omega, outputs);
+  return s;
+}
+
+}  // namespace hbtrack

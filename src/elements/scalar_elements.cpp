@@ -1,0 +1,85 @@
+#include "hbtrack/elements/scalar_elements.hpp"
+
+#include <cmath>
+
+namespace hbtrack {
+
+void ScalarElement::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double /*omega*/,
+                             const std::vector<double>& props, ElementResponse& out,
+                             bool want_property_derivatives) const {
+  const Eigen::Index n = x.rows();
+  const int k = local_dofs();
+  const int np = static_cast<int>(props.size());
+  const bool with_v = depends_on_velocity();
+  out.force.resize(n, k);
+  out.dforce_dx.resize(n, k * k);
+  if (with_v) out.dforce_dv.resize(n, k * k); else out.dforce_dv.resize(0, 0);
+  out.dforce_domega.resize(0, 0);
+  if (want_property_derivatives) out.dforce_dproperty.resize(n, k * np);
+  for (Eigen::Index t = 0; t < n; ++t) {
+    double d = 0, dd = 0;
+    for (int i = 0; i < k; ++i) {
+      d += weights(i) * x(t, i);
+      if (with_v) dd += weights(i) * v(t, i);
+    }
+    const ScalarLaw law_value = law(d, dd, props.data());
+    for (int i = 0; i < k; ++i) {
+      out.force(t, i) = weights(i) * law_value.f;
+      for (int j = 0; j < k; ++j) {
+        out.dforce_dx(t, i + k * j) = weights(i) * weights(j) * law_value.df_dd;
+        if (with_v) out.dforce_dv(t, i + k * j) = weights(i) * weights(j) * law_value.df_dv;
+      }
+      if (want_property_derivatives)
+        for (int p = 0; p < np; ++p) out.dforce_dproperty(t, i + k * p) = weights(i) * law_value.df_dp[p];
+    }
+  }
+}
+
+const std::vector<std::string>& CubicSpring::property_names() const {
+  static const std::vector<std::string> names{"cubic_stiffness"};
+  return names;
+}
+
+ScalarElement::ScalarLaw CubicSpring::law(double d, double, const double* p) const {
+  ScalarLaw out;
+  out.f = p[0] * d * d * d;
+  out.df_dd = 3.0 * p[0] * d * d;
+  out.df_dp[0] = d * d * d;
+  return out;
+}
+
+const std::vector<std::string>& GapContact::property_names() const {
+  static const std::vector<std::string> names{"stiffness", "gap", "width"};
+  return names;
+}
+
+ScalarElement::ScalarLaw GapContact::law(double d, double, const double* p) const {
+  const ContactForce c = contact_force(kind_, d - p[1], p[0], p[2]);
+  ScalarLaw out;
+  out.f = c.force;
+  out.df_dd = c.d_gap;
+  out.df_dp[0] = c.d_stiffness;
+  out.df_dp[1] = -c.d_gap;
+  out.df_dp[2] = c.d_width;
+  return out;
+}
+
+const std::vector<std::string>& TanhFriction::property_names() const {
+  static const std::vector<std::string> names{"mu", "normal_load", "regularization_velocity"};
+  return names;
+}
+
+ScalarElement::ScalarLaw TanhFriction::law(double, double d_dot, const double* p) const {
+  const double mu = p[0], load = p[1], vr = p[2];
+  const double t = std::tanh(d_dot / vr);
+  const double sech2 = 1.0 - t * t;
+  ScalarLaw out;
+  out.f = mu * load * t;
+  out.df_dv = mu * load * sech2 / vr;
+  out.df_dp[0] = load * t;
+  out.df_dp[1] = mu * t;
+  out.df_dp[2] = -mu * load * sech2 * d_dot / (vr * vr);
+  return out;
+}
+
+}  // namespace hbtrack

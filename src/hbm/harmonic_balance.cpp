@@ -1,0 +1,284 @@
+#include "hbtrack/hbm/harmonic_balance.hpp"
+
+#include <algorithm>
+#include <complex>
+#include <set>
+#include <stdexcept>
+
+#include "hbtrack/elements/lanczos.hpp"
+
+namespace hbtrack {
+
+using cd = std::complex<double>;
+using Eigen::MatrixXd;
+using Eigen::VectorXcd;
+using Eigen::VectorXd;
+
+void HarmonicBalanceOptions::validate() const {
+  if (harmonics < 1) throw std::invalid_argument("harmonic_balance.harmonics: must be >= 1, got " + std::to_string(harmonics));
+  if (harmonics > 500) throw std::invalid_argument("harmonic_balance.harmonics: must be <= 500, got " + std::to_string(harmonics));
+  if (samples != 0 && samples < 2 * harmonics + 1)
+    throw std::invalid_argument("harmonic_balance.samples: must be >= 2*harmonics+1 = " + std::to_string(2 * harmonics + 1) +
+                                ", got " + std::to_string(samples));
+  if (samples > (1 << 20)) throw std::invalid_argument("harmonic_balance.samples: must be <= 1048576");
+  if (condensation != "auto" && condensation != "schur" && condensation != "modal" && condensation != "none")
+    throw std::invalid_argument("harmonic_balance.condensation: must be auto, schur, modal or none, got '" + condensation + "'");
+}
+
+int HarmonicBalanceOptions::effective_samples() const {
+  if (samples > 0) return samples;
+  int n = 16;
+  while (n < 8 * (harmonics + 1)) n *= 2;
+  return n;
+}
+
+HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, ParameterSet parameters,
+                                 HarmonicBalanceOptions options)
+    : model_(std::move(model)),
+      elements_(std::move(elements)),
+      parameters_(std::move(parameters)),
+      options_(std::move(options)),
+      basis_((options_.validate(), options_.harmonics), options_.effective_samples()) {
+  model_.validate();
+  amplitude_index_ = parameters_.find("amplitude");
+  if (amplitude_index_ < 0) amplitude_index_ = parameters_.set("amplitude", 1.0);
+
+  std::set<int> nonlinear;
+  for (const auto& e : elements_) {
+    if (static_cast<int>(e->properties.size()) != static_cast<int>(e->property_names().size()))
+      throw std::invalid_argument("element " + e->type() + ": property count does not match");
+    for (int d : e->dofs) {
+      if (d < 0 || d >= model_.dofs()) throw std::invalid_argument("element " + e->type() + ": dof index out of range");
+      nonlinear.insert(d);
+    }
+  }
+  std::string method = options_.condensation;
+  if (nonlinear.empty()) method = "none";  // a linear model: keep every dof as unknown
+  if (method == "none") {
+    for (int i = 0; i < model_.dofs(); ++i) retained_.push_back(i);
+  } else {
+    retained_.assign(nonlinear.begin(), nonlinear.end());
+  }
+  if (method == "auto") method = modes_diagonalise_damping(model_) ? "modal" : "schur";
+  if (method == "modal") {
+    if (!modes_diagonalise_damping(model_))
+      throw std::invalid_argument("harmonic_balance.condensation: 'modal' needs damping diagonalised by the normal modes and K > 0; use 'schur'");
+    condenser_ = make_modal_condenser(model_, retained_, options_.harmonics);
+  } else {
+    condenser_ = make_schur_condenser(model_, retained_, options_.harmonics);
+  }
+
+  const int n_samples = basis_.samples();
+  slots_.resize(elements_.size());
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    ElementSlot& s = slots_[e];
+    for (int d : elements_[e]->dofs)
+      s.columns.push_back(static_cast<int>(std::lower_bound(retained_.begin(), retained_.end(), d) - retained_.begin()));
+    s.sigma = lanczos_factors(options_.harmonics, elements_[e]->lanczos_exponent);
+    s.x.resize(n_samples, elements_[e]->local_dofs());
+    s.v.resize(n_samples, elements_[e]->local_dofs());
+  }
+}
+
+void HarmonicBalance::sample(const VectorXd& x, double omega) {
+  const int q = retained_dofs();
+  const Eigen::Map<const MatrixXd> coeffs(x.data(), q, basis_.coefficients());
+  x_samples_.noalias() = basis_.synthesis() * coeffs.transpose();
+  v_unit_samples_.noalias() = basis_.derivative_synthesis() * coeffs.transpose();
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    ElementSlot& s = slots_[e];
+    for (size_t i = 0; i < s.columns.size(); ++i) {
+      s.x.col(static_cast<Eigen::Index>(i)) = x_samples_.col(s.columns[i]);
+      s.v.col(static_cast<Eigen::Index>(i)) = omega * v_unit_samples_.col(s.columns[i]);
+    }
+  }
+}
+
+VectorXcd HarmonicBalance::harmonic(const VectorXd& x, int j, int dofs) const {
+  if (j == 0) return x.segment(0, dofs).cast<cd>();
+  return x.segment((2 * j - 1) * dofs, dofs).cast<cd>() - cd(0, 1) * x.segment(2 * j * dofs, dofs).cast<cd>();
+}
+
+void HarmonicBalance::add_condensed_linear_part(const VectorXd& x, VectorXd& r, MatrixXd* jacobian, VectorXd* r_omega) {
+  const int q = retained_dofs();
+  const double amplitude = parameters_.value(amplitude_index_);
+  for (int j = 0; j <= options_.harmonics; ++j) {
+    const VectorXcd z = harmonic(x, j, q);
+    const Eigen::MatrixXcd& zr = condenser_->reduced_stiffness(j);
+    const VectorXcd rc = zr * z - amplitude * condenser_->reduced_force(j);
+    // z = a - i b and R_a - i R_b = rc, so R_a = Re(rc), R_b = -Im(rc).
+    const int ia = j == 0 ? 0 : (2 * j - 1) * q;
+    r.segment(ia, q) += rc.real();
+    if (j > 0) r.segment(2 * j * q, q) -= rc.imag();
+    if (jacobian) {
+      jacobian->block(ia, ia, q, q) += zr.real();
+      if (j > 0) {
+        const int ib = 2 * j * q;
+        jacobian->block(ia, ib, q, q) += zr.imag();
+        jacobian->block(ib, ia, q, q) -= zr.imag();
+        jacobian->block(ib, ib, q, q) += zr.real();
+      }
+    }
+    if (r_omega) {
+      const VectorXcd dc = condenser_->omega_derivative(j, z, amplitude);
+      r_omega->segment(ia, q) += dc.real();
+      if (j > 0) r_omega->segment(2 * j * q, q) -= dc.imag();
+    }
+  }
+}
+
+void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, MatrixXd* jacobian, VectorXd* r_omega) {
+  const int q = retained_dofs();
+  const int nc = basis_.coefficients();
+  const int m = unknowns();
+  if (x.size() != m) throw std::invalid_argument("HarmonicBalance::evaluate: x has the wrong size");
+  r.setZero(m);
+  if (jacobian) jacobian->setZero(m, m);
+  if (r_omega) r_omega->setZero(m);
+
+  sample(x, omega);
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    const NonlinearElement& element = *elements_[e];
+    ElementSlot& s = slots_[e];
+    const int k = element.local_dofs();
+    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    const ElementResponse& resp = s.response;
+
+    coeffs_.noalias() = basis_.analysis() * resp.force;  // nc x k
+    for (int i = 0; i < k; ++i)
+      for (int c = 0; c < nc; ++c) r(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
+
+    if (r_omega) {
+      // d f/d omega = (df/dv) v/omega + explicit dependence; v/omega = the unit-frequency velocity.
+      MatrixXd df(resp.force.rows(), k);
+      df.setZero();
+      if (resp.dforce_dv.size() > 0)
+        for (int i = 0; i < k; ++i)
+          for (int jd = 0; jd < k; ++jd)
+            df.col(i).array() += resp.dforce_dv.col(i + k * jd).array() * v_unit_samples_.col(s.columns[static_cast<size_t>(jd)]).array();
+      if (resp.dforce_domega.size() > 0) df += resp.dforce_domega;
+      coeffs_.noalias() = basis_.analysis() * df;
+      for (int i = 0; i < k; ++i)
+        for (int c = 0; c < nc; ++c) (*r_omega)(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
+    }
+
+    if (jacobian) {
+      // Block (i, j): Gamma^-1 diag(df_i/dx_j) Gamma + omega Gamma^-1 diag(df_i/dv_j) Gamma nabla,
+      // built from the order-2H coefficients of the derivative signals (Toeplitz-plus-Hankel).
+      coeffs_.noalias() = basis_.product_analysis() * resp.dforce_dx;
+      const bool with_v = resp.dforce_dv.size() > 0;
+      if (with_v) coeffs_v_.noalias() = basis_.product_analysis() * resp.dforce_dv;
+      block_.resize(nc, nc);
+      block_v_.resize(nc, nc);
+      for (int i = 0; i < k; ++i) {
+        for (int jd = 0; jd < k; ++jd) {
+          const int col = i + k * jd;
+          const bool x_zero = coeffs_.col(col).isZero(0.0);
+          const bool v_zero = !with_v || coeffs_v_.col(col).isZero(0.0);
+          if (x_zero && v_zero) continue;
+          block_.setZero();
+          if (!x_zero) basis_.product_matrix(coeffs_.col(col).data(), block_);
+          if (!v_zero) {
+            basis_.product_matrix(coeffs_v_.col(col).data(), block_v_);
+            basis_.right_multiply_derivative(block_v_);
+            block_ += omega * block_v_;
+          }
+          const int ri = s.columns[static_cast<size_t>(i)], cj = s.columns[static_cast<size_t>(jd)];
+          for (int cc = 0; cc < nc; ++cc)
+            for (int rr = 0; rr < nc; ++rr) (*jacobian)(rr * q + ri, cc * q + cj) += s.sigma(rr) * block_(rr, cc);
+        }
+      }
+    }
+  }
+  condenser_->update(omega);
+  add_condensed_linear_part(x, r, jacobian, r_omega);
+}
+
+VectorXd HarmonicBalance::parameter_derivative(const VectorXd& x, double omega, int parameter) {
+  const int q = retained_dofs();
+  const int nc = basis_.coefficients();
+  VectorXd out = VectorXd::Zero(unknowns());
+  if (parameter < 0 || parameter >= parameters_.size()) throw std::out_of_range("parameter index out of range");
+  if (parameter == amplitude_index_) {
+    condenser_->update(omega);
+    for (int j = 0; j <= options_.harmonics; ++j) {
+      const VectorXcd& f = condenser_->reduced_force(j);
+      const int ia = j == 0 ? 0 : (2 * j - 1) * q;
+      out.segment(ia, q) -= f.real();
+      if (j > 0) out.segment(2 * j * q, q) += f.imag();
+    }
+  }
+  bool sampled = false;
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    const NonlinearElement& element = *elements_[e];
+    bool bound = false;
+    for (const auto& b : element.properties) bound = bound || b.parameter == parameter;
+    if (!bound) continue;
+    if (!sampled) sample(x, omega);
+    sampled = true;
+    ElementSlot& s = slots_[e];
+    const int k = element.local_dofs();
+    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, true);
+    MatrixXd df = MatrixXd::Zero(s.x.rows(), k);
+    for (size_t p = 0; p < element.properties.size(); ++p) {
+      const double scale = element.properties[p].derivative(parameter);
+      if (scale != 0.0) df += scale * s.response.dforce_dproperty.middleCols(static_cast<Eigen::Index>(k * p), k);
+    }
+    const MatrixXd coeffs = basis_.analysis() * df;
+    for (int i = 0; i < k; ++i)
+      for (int c = 0; c < nc; ++c) out(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs(c, i);
+  }
+  return out;
+}
+
+VectorXd HarmonicBalance::expand(const VectorXd& x, double omega) {
+  const int q = retained_dofs();
+  const int n = model_.dofs();
+  const double amplitude = parameters_.value(amplitude_index_);
+  condenser_->update(omega);
+  VectorXd full(n * basis_.coefficients());
+  for (int j = 0; j <= options_.harmonics; ++j) {
+    const VectorXcd xf = condenser_->recover(j, harmonic(x, j, q), amplitude);
+    if (j == 0) {
+      full.segment(0, n) = xf.real();
+    } else {
+      full.segment((2 * j - 1) * n, n) = xf.real();
+      full.segment(2 * j * n, n) = -xf.imag();
+    }
+  }
+  return full;
+}
+
+VectorXd HarmonicBalance::linear_solution(double omega) {
+  const int q = retained_dofs();
+  const double amplitude = parameters_.value(amplitude_index_);
+  condenser_->update(omega);
+  VectorXd x(unknowns());
+  for (int j = 0; j <= options_.harmonics; ++j) {
+    const VectorXcd z = condenser_->reduced_stiffness(j).partialPivLu().solve(amplitude * condenser_->reduced_force(j));
+    if (j == 0) {
+      x.segment(0, q) = z.real();
+    } else {
+      x.segment((2 * j - 1) * q, q) = z.real();
+      x.segment(2 * j * q, q) = -z.imag();
+    }
+  }
+  return x;
+}
+
+VectorXd HarmonicBalance::nonlinear_forces(const VectorXd& x, double omega) {
+  VectorXd r = VectorXd::Zero(unknowns());
+  const int q = retained_dofs();
+  sample(x, omega);
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    const NonlinearElement& element = *elements_[e];
+    ElementSlot& s = slots_[e];
+    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    const MatrixXd coeffs = basis_.analysis() * s.response.force;
+    for (int i = 0; i < element.local_dofs(); ++i)
+      for (int c = 0; c < basis_.coefficients(); ++c) r(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs(c, i);
+  }
+  return r;
+}
+
+}  // namespace hbtrack

@@ -1,0 +1,29 @@
+#include "hbtrack/hbm/recorded_outputs.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace hbtrack {
+
+Eigen::VectorXd dof_signal(const Eigen::VectorXd& full, int dofs, int harmonics, int dof, int samples) {
+  Eigen::VectorXd x(samples);
+  for (int i = 0; i < samples; ++i) {
+    const double tau = 2.0 * std::numbers::pi * i / samples;
+    double v = 0.5 * full(dof);
+    for (int j = 1; j <= harmonics; ++j)
+      v += full((2 * j - 1) * dofs + dof) * std::cos(j * tau) + full(2 * j * dofs + dof) * std::sin(j * tau);
+    x(i) = v;
+  }
+  return x;
+}
+
+OutputValues output_values(const Eigen::VectorXd& full, int dofs, int harmonics, int dof, int samples) {
+  const Eigen::VectorXd x = dof_signal(full, dofs, harmonics, dof, samples);
+  OutputValues out;
+  out.max = x.maxCoeff();
+  out.min = x.minCoeff();
+  out.h1 = harmonics >= 1 ? std::hypot(full(dofs + dof), full(2 * dofs + dof)) : 0.0;
+  return out;
+}
+
+}  // namespace hbtrack

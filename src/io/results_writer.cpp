@@ -1,0 +1,47 @@
+#include "hbtrack/io/results_writer.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace hbtrack {
+
+CsvAppender::CsvAppender(const std::string& path, const std::vector<std::string>& header)
+    : path_(path), out_(path, std::ios::trunc), columns_(header.size()) {
+  if (!out_) throw std::runtime_error(path + ": cannot open for writing");
+  for (size_t i = 0; i < header.size(); ++i) out_ << (i ? "," : "") << header[i];
+  out_ << '\n';
+  out_.flush();
+}
+
+void CsvAppender::append(const std::vector<double>& row) {
+  if (row.size() != columns_) throw std::logic_error(path_ + ": row has the wrong number of columns");
+  char buffer[32];
+  for (size_t i = 0; i < row.size(); ++i) {
+    std::snprintf(buffer, sizeof buffer, "%.17g", row[i]);
+    out_ << (i ? "," : "") << buffer;
+  }
+  out_ << '\n';
+  out_.flush();
+  if (!out_) throw std::runtime_error(path_ + ": write failed (disk full?)");
+}
+
+void write_json_atomically(const std::string& path, const nlohmann::json& document) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) throw std::runtime_error(tmp + ": cannot open for writing");
+    out << document.dump(2) << '\n';
+    if (!out) throw std::runtime_error(tmp + ": write failed (disk full?)");
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+void ensure_directory(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) throw std::runtime_error(dir + ": cannot create output directory");
+}
+
+}  // namespace hbtrack

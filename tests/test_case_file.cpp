@@ -1,0 +1,153 @@
+// Case files: a valid file loads as written; each malformed one fails with a one-line error that
+// names the file, the field and the rule.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "hbtrack/io/case_file.hpp"
+#include "test_support.hpp"
+
+using namespace hbtrack;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kValid = R"(
+[model]
+dofs = ["a", "b"]
+M = [[1.0, 0.0], [0.0, 2.0]]
+K = [[3.0, -1.0], [-1.0, 1.0]]
+[damping]
+rayleigh = [0.0, 0.01]
+[[forcing]]
+dof = "a"
+cos = 0.5
+[parameters]
+amplitude = 2.0
+clearance = 0.1
+mu = 0.2
+[[elements]]
+type = "regularized_contact"
+dofs = ["b"]
+stiffness = 10.0
+gap = "clearance"
+width = 0.1
+lanczos = 1
+[harmonic_balance]
+harmonics = 3
+[continuation]
+omega_start = 0.1
+omega_end = 2.0
+[[outputs]]
+name = "tip"
+dof = "b"
+)";
+
+fs::path write_case(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "hbtrack_case_tests";
+  fs::create_directories(dir);
+  const fs::path p = dir / (name + ".toml");
+  std::ofstream(p) << text;
+  return p;
+}
+
+// kValid with one line replaced (or appended when `from` is empty).
+std::string variant(const std::string& from, const std::string& to) {
+  std::string s = kValid;
+  if (from.empty()) return s + to + "\n";
+  const size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+struct BadCase {
+  const char* name;
+  std::string text;
+  const char* expected;  // substring of the error message
+};
+
+}  // namespace
+
+TEST(CaseFile, ValidCaseLoadsAsWritten) {
+  const CaseDefinition c = load_case(write_case("valid", kValid).string());
+  EXPECT_EQ(c.model.dofs(), 2);
+  EXPECT_DOUBLE_EQ(c.model.mass(1, 1), 2.0);
+  EXPECT_DOUBLE_EQ(c.model.damping(0, 1), -0.01);
+  EXPECT_DOUBLE_EQ(c.parameters.value("amplitude"), 2.0);
+  ASSERT_EQ(c.elements.size(), 1u);
+  EXPECT_EQ(c.elements[0]->type(), "regularized_contact");
+  EXPECT_DOUBLE_EQ(c.elements[0]->property_values(c.parameters)[1], 0.1);
+  EXPECT_DOUBLE_EQ(c.elements[0]->lanczos_exponent, 1.0);
+  EXPECT_EQ(c.harmonic_balance.harmonics, 3);
+  EXPECT_EQ(c.outputs[0].name, "tip");
+  EXPECT_EQ(c.outputs[0].dof, 1);
+}
+
+TEST(CaseFile, OverridesSetParametersAndKeys) {
+  const CaseDefinition c = load_case(write_case("valid", kValid).string(),
+                                     {"clearance=0.3", "harmonic_balance.harmonics=6", "continuation.step=0.01"});
+  EXPECT_DOUBLE_EQ(c.elements[0]->property_values(c.parameters)[1], 0.3);
+  EXPECT_EQ(c.harmonic_balance.harmonics, 6);
+  EXPECT_DOUBLE_EQ(c.nfrc.continuation.step, 0.01);
+  EXPECT_THROW(load_case(write_case("valid", kValid).string(), {"clearence=0.3"}), CaseError);
+  try {
+    load_case(write_case("valid", kValid).string(), {"clearence=0.3"});
+  } catch (const CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'clearance'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CaseFile, MatrixFromMatrixMarketFile) {
+  const fs::path dir = fs::temp_directory_path() / "hbtrack_case_tests";
+  fs::create_directories(dir);
+  std::ofstream(dir / "K2.mtx") << "%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n1 1 3.0\n2 1 -1.0\n2 2 1.0\n";
+  const CaseDefinition c = load_case(write_case("mtx", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"K2.mtx\" }")).string());
+  EXPECT_DOUBLE_EQ(c.model.stiffness(0, 1), -1.0);
+  EXPECT_DOUBLE_EQ(c.model.stiffness(1, 0), -1.0);
+  EXPECT_DOUBLE_EQ(c.model.stiffness(0, 0), 3.0);
+}
+
+TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
+  const std::vector<BadCase> cases = {
+      {"missing_model", "[continuation]\nomega_start = 0.1\nomega_end = 1.0\n", "model: missing"},
+      {"syntax", variant("amplitude = 2.0", "amplitude = = 2.0"), "TOML syntax error"},
+      {"unknown_section", variant("", "[contiuation]\nx = 1"), "did you mean 'continuation'"},
+      {"missing_K", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", ""), "model.K: missing"},
+      {"wrong_size", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0]]"), "model.K: expected 2x2"},
+      {"ragged", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0, -1.0], [-1.0]]"), "row 1 has 1 entries"},
+      {"text_in_matrix", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0, \"x\"], [-1.0, 1.0]]"), "model.K[0][1]: expected a number"},
+      {"nonsymmetric", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0, -1.0], [-2.0, 1.0]]"), "model.K: must be symmetric"},
+      {"indefinite_mass", variant("M = [[1.0, 0.0], [0.0, 2.0]]", "M = [[1.0, 0.0], [0.0, -2.0]]"), "model.M: must be positive definite"},
+      {"unknown_element", variant("type = \"regularized_contact\"", "type = \"regularised_contact\""), "unknown element type 'regularised_contact' (did you mean 'regularized_contact'?)"},
+      {"unknown_dof", variant("dofs = [\"b\"]", "dofs = [\"c\"]"), "elements[0].dofs[0]: unknown dof 'c'"},
+      {"unknown_parameter", variant("gap = \"clearance\"", "gap = \"clearence\""), "elements[0].gap: unknown parameter 'clearence'"},
+      {"missing_property", variant("stiffness = 10.0", ""), "elements[0].stiffness: missing"},
+      {"negative_stiffness", variant("stiffness = 10.0", "stiffness = -10.0"), "elements[0].stiffness: must be > 0"},
+      {"unknown_key", variant("width = 0.1", "widht = 0.1"), "did you mean 'width'"},
+      {"wrong_type_harmonics", variant("harmonics = 3", "harmonics = \"three\""), "harmonic_balance.harmonics: expected an integer"},
+      {"zero_harmonics", variant("harmonics = 3", "harmonics = 0"), "harmonic_balance.harmonics: must be >= 1"},
+      {"few_samples", variant("harmonics = 3", "harmonics = 3\nsamples = 4"), "harmonic_balance.samples: must be >= 2*harmonics+1"},
+      {"no_omega_end", variant("omega_end = 2.0", ""), "continuation.omega_end: missing"},
+      {"equal_range", variant("omega_end = 2.0", "omega_end = 0.1"), "continuation.omega_end: must differ"},
+      {"bad_predictor", variant("omega_end = 2.0", "omega_end = 2.0\npredictor = \"euler\""), "continuation.predictor: must be tangent or secant"},
+      {"two_dampings", variant("rayleigh = [0.0, 0.01]", "rayleigh = [0.0, 0.01]\nmodal_ratios = [0.01]"), "damping: give exactly one"},
+      {"forcing_dof", variant("dof = \"a\"", "dof = \"z\""), "forcing[0].dof: unknown dof 'z'"},
+      {"matrix_file_missing", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"nope.mtx\" }"), "model.K.file: file"},
+      {"output_dof", variant("dof = \"b\"\n", "dof = \"q\"\n"), "outputs[0].dof: unknown dof 'q'"},
+      {"duplicate_dof", variant("dofs = [\"a\", \"b\"]", "dofs = [\"a\", \"a\"]"), "dof name 'a' appears twice"},
+      {"negative_lanczos", variant("lanczos = 1", "lanczos = -1"), "elements[0].lanczos: must be >= 0"},
+  };
+  for (const BadCase& bad : cases) {
+    const fs::path p = write_case(bad.name, bad.text);
+    try {
+      load_case(p.string());
+      ADD_FAILURE() << bad.name << ": no error";
+    } catch (const CaseError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(bad.expected), std::string::npos) << bad.name << ": got '" << msg << "'";
+      EXPECT_EQ(msg.find('\n'), std::string::npos) << bad.name << ": not one line: " << msg;
+      EXPECT_EQ(msg.rfind(p.string(), 0), 0u) << bad.name << ": does not start with the file name: " << msg;
+    }
+  }
+}

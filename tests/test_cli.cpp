@@ -1,0 +1,114 @@
+// The command-line tool end to end: output contracts, exit codes, one-line errors.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "test_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+  int exit_code;
+  std::string err;
+};
+
+CliRun run_cli(const std::string& args) {
+  const fs::path err = fs::temp_directory_path() / "hbtrack_cli_stderr.txt";
+  const std::string cmd = std::string(HBTRACK_CLI) + " " + args + " 2> " + err.string() + " > /dev/null";
+  const int status = std::system(cmd.c_str());
+  std::stringstream ss;
+  ss << std::ifstream(err).rdbuf();
+  return {WEXITSTATUS(status), ss.str()};
+}
+
+std::vector<std::string> csv_header(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line, cell;
+  std::getline(in, line);
+  std::vector<std::string> cells;
+  std::stringstream ss(line);
+  while (std::getline(ss, cell, ',')) cells.push_back(cell);
+  return cells;
+}
+
+}  // namespace
+
+TEST(Cli, FrcOnDuffingWritesTheContractedResults) {
+  const fs::path out = fs::temp_directory_path() / "hbtrack_cli_duffing";
+  fs::remove_all(out);
+  const CliRun r = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") + " -o " + out.string() + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(s["stop_reason"], "reached_end");
+  EXPECT_GT(s["points"].get<int>(), 20);
+  EXPECT_GT(s["newton_iterations"].get<int>(), 0);
+  EXPECT_EQ(s["failed_steps"].get<int>(), 0);
+  EXPECT_GT(s["timings"]["wall_s"].get<double>(), 0.0);
+  ASSERT_EQ(s["special_points"].size(), 2u);
+  int rows = -1;
+  {
+    std::ifstream in(out / "branch.csv");
+    for (std::string line; std::getline(in, line);) ++rows;
+  }
+  for (const auto& sp : s["special_points"]) {
+    EXPECT_EQ(sp["type"], "LP");
+    EXPECT_TRUE(sp.contains("omega"));
+    EXPECT_TRUE(sp.contains("max_x"));
+    EXPECT_TRUE(sp["parameters"].contains("amplitude"));
+    EXPECT_LT(sp["index"].get<int>(), rows);
+  }
+  EXPECT_EQ(rows, s["points"].get<int>());
+  EXPECT_EQ(csv_header(out / "branch.csv"), (std::vector<std::string>{"omega", "max_x", "min_x", "h1_x"}));
+}
+
+TEST(Cli, SolveAndSetOverride) {
+  const fs::path out = fs::temp_directory_path() / "hbtrack_cli_solve";
+  fs::remove_all(out);
+  const CliRun r = run_cli("solve " + hbtrack::test::source_path("examples/duffing.toml") + " --omega 0.5 --set amplitude=0.5 -o " +
+                        out.string() + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_TRUE(s["converged"].get<bool>());
+  EXPECT_DOUBLE_EQ(s["options"]["parameters"]["amplitude"].get<double>(), 0.5);
+  // Far below resonance at half the force the response is nearly linear: 0.09 / |1 - w^2 + i c w|
+  // = 0.1199; the cubic term shifts it by about 3/4 k3 a^2 / (1 - w^2) = 0.14 %, so 0.5 % bounds it.
+  const double linear = 0.09 / std::hypot(1.0 - 0.25, 0.05 * 0.5);
+  EXPECT_NEAR(s["h1_x"].get<double>(), linear, 0.005 * linear);
+}
+
+TEST(Cli, BadInputFailsWithOneLineReason) {
+  const fs::path bad = fs::temp_directory_path() / "hbtrack_cli_bad.toml";
+  std::ofstream(bad) << "[model]\ndofs = [\"x\"]\nM = [[1.0]]\n";
+  const CliRun r = run_cli("frc " + bad.string() + " -o " + (fs::temp_directory_path() / "hbtrack_cli_bad_out").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("model.K: missing"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+
+  const CliRun missing = run_cli("frc /nonexistent/case.toml -o /tmp/x");
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.err.find("/nonexistent/case.toml: file does not exist"), std::string::npos) << missing.err;
+
+  const CliRun unknown_param = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") + " --set mu=0.1 -o /tmp/x");
+  EXPECT_NE(unknown_param.exit_code, 0);
+  EXPECT_NE(unknown_param.err.find("--set mu: unknown parameter"), std::string::npos) << unknown_param.err;
+}
+
+TEST(Cli, FailedContinuationKeepsItsPointsAndExitsNonZero) {
+  const fs::path out = fs::temp_directory_path() / "hbtrack_cli_fail";
+  fs::remove_all(out);
+  // A point budget far below what the range needs is not a failure (max_points), but a
+  // tolerance below machine precision makes every corrector fail after the first point.
+  const CliRun r = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") +
+                        " --set continuation.tolerance=1e-30 -o " + out.string() + " -q");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("continuation stopped"), std::string::npos) << r.err;
+  const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_NE(s["stop_reason"], "reached_end");
+  EXPECT_NE(s["stop_reason"], "running");
+}

@@ -1,0 +1,119 @@
+// The assembled harmonic balance residual: analytic Jacobian, d/d(omega) and d/d(parameter)
+// against finite differences, with and without condensation and Lanczos filtering; condensed and
+// full systems agree.
+#include <gtest/gtest.h>
+
+#include "hbtrack/continuation/continuation.hpp"
+#include "hbtrack/analysis/nfrc.hpp"
+#include "hbtrack/hbm/recorded_outputs.hpp"
+#include "test_support.hpp"
+
+using namespace hbtrack;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+struct Variant {
+  bool general_damping;
+  const char* condensation;
+  double lanczos;
+};
+
+// A state whose tip node enters contact over part of the period (radial amplitude > clearance).
+VectorXd contact_state(HarmonicBalance& hbm) {
+  std::srand(11);
+  VectorXd x = 0.01 * VectorXd::Random(hbm.unknowns());
+  const int q = hbm.retained_dofs();
+  x(1 * q + 0) = 0.08;  // a1 of the radial dof
+  x(2 * q + 1) = 0.05;  // b1 of the circumferential dof
+  return x;
+}
+
+// Finite-difference steps: unknowns are O(0.1), so h = 1e-7 leaves truncation ~1e-14 and
+// round-off ~1e-9 relative; 1e-6 is a safe bound that an error in any term would exceed.
+constexpr double kStep = 1e-7;
+constexpr double kTolerance = 1e-6;
+
+}  // namespace
+
+class HarmonicBalanceDerivatives : public ::testing::TestWithParam<Variant> {};
+
+TEST_P(HarmonicBalanceDerivatives, MatchFiniteDifferences) {
+  const Variant v = GetParam();
+  test::ContactFixture f = test::contact_fixture(v.general_damping, v.lanczos);
+  HarmonicBalanceOptions o;
+  o.harmonics = 4;
+  o.samples = 64;
+  o.condensation = v.condensation;
+  HarmonicBalance hbm(f.model, f.elements, f.parameters, o);
+  const double omega = 1.3;
+  const VectorXd x = contact_state(hbm);
+
+  VectorXd r, r_omega;
+  MatrixXd jac;
+  hbm.evaluate(x, omega, r, &jac, &r_omega);
+  auto residual = [&](const VectorXd& xx) { VectorXd rr; hbm.evaluate(xx, omega, rr); return rr; };
+  EXPECT_LT(test::relative_error(jac, test::fd_jacobian(residual, x, kStep)), kTolerance) << "dR/dx";
+
+  auto at_omega = [&](double w) { VectorXd rr; hbm.evaluate(x, w, rr); return rr; };
+  EXPECT_LT(test::relative_error(r_omega, test::central_difference(at_omega, omega, kStep)), kTolerance) << "dR/domega";
+
+  for (const std::string name : {"amplitude", "mu", "clearance"}) {
+    const int p = hbm.parameters().find(name);
+    const double p0 = hbm.parameters().value(p);
+    const VectorXd analytic = hbm.parameter_derivative(x, omega, p);
+    auto at_p = [&](double value) {
+      hbm.parameters().value(p) = value;
+      VectorXd rr;
+      hbm.evaluate(x, omega, rr);
+      return rr;
+    };
+    const VectorXd fd = test::central_difference(at_p, p0, kStep * std::max(1.0, p0));
+    hbm.parameters().value(p) = p0;
+    EXPECT_GT(fd.cwiseAbs().maxCoeff(), 1e-6) << "the state must make dR/d" << name << " non-trivial";
+    EXPECT_LT(test::relative_error(analytic, fd), kTolerance) << "dR/d" << name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllVariants, HarmonicBalanceDerivatives,
+                         ::testing::Values(Variant{false, "none", 0.0}, Variant{false, "none", 1.0},
+                                           Variant{false, "modal", 0.0}, Variant{false, "modal", 1.0},
+                                           Variant{false, "schur", 1.0}, Variant{true, "schur", 0.0},
+                                           Variant{true, "schur", 1.0}, Variant{true, "none", 2.0}));
+
+TEST(HarmonicBalance, AutoCondensationPicksModalOnlyForProportionalDamping) {
+  test::ContactFixture prop = test::contact_fixture(false, 0);
+  test::ContactFixture gen = test::contact_fixture(true, 0);
+  HarmonicBalanceOptions o;
+  o.harmonics = 2;
+  EXPECT_EQ(HarmonicBalance(prop.model, prop.elements, prop.parameters, o).condensation_method(), "modal");
+  EXPECT_EQ(HarmonicBalance(gen.model, gen.elements, gen.parameters, o).condensation_method(), "schur");
+  o.condensation = "modal";
+  EXPECT_THROW(HarmonicBalance(gen.model, gen.elements, gen.parameters, o), std::invalid_argument);
+}
+
+TEST(HarmonicBalance, CondensedAndFullSystemsGiveTheSameSolution) {
+  for (bool general : {false, true}) {
+    test::ContactFixture f = test::contact_fixture(general, 1.0);
+    const double omega = 1.3, tol = 1e-12;
+    std::vector<VectorXd> full_solutions;
+    for (const char* method : {"none", "schur", "modal"}) {
+      if (general && std::string(method) == "modal") continue;
+      HarmonicBalanceOptions o;
+      o.harmonics = 5;
+      o.samples = 128;
+      o.condensation = method;
+      HarmonicBalance hbm(f.model, f.elements, f.parameters, o);
+      NfrcProblem problem(hbm, 0.1, 1.0, 1.0);
+      VectorXd x = hbm.linear_solution(omega);
+      ASSERT_GE(newton_at_fixed_parameter(problem, x, omega, tol, 50), 0) << method;
+      full_solutions.push_back(hbm.expand(x, omega));
+    }
+    for (size_t i = 1; i < full_solutions.size(); ++i)
+      EXPECT_LT((full_solutions[i] - full_solutions[0]).cwiseAbs().maxCoeff(), 1e-10 * full_solutions[0].cwiseAbs().maxCoeff())
+          << "general damping " << general << ", method " << i;
+    // The solution really is in contact (otherwise this would only test the linear part).
+    EXPECT_GT(dof_signal(full_solutions[0], 9, 5, 0, 512).maxCoeff(), f.parameters.value("clearance"));
+  }
+}

@@ -1,0 +1,577 @@
+#include "hbtrack/io/matrix_readers.hpp"
+
+#include <gtest/gtest.h>
+#include <matio.h>
+
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+Eigen::SparseMatrix<double> sparse_from(const Eigen::MatrixXd& dense) { return dense.sparseView(); }
+
+// Each test gets its own directory so parallel runs (ctest -j) never share files.
+class TempDirTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string test_name = std::string(info->test_suite_name()) + "_" + info->name();
+    for (char& c : test_name)
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    std::random_device entropy;
+    dir_ = fs::temp_directory_path() /
+           ("hbtrack_matrix_readers_" + test_name + "_" + std::to_string(entropy()) + std::to_string(entropy()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  std::string path_for(const std::string& filename) const { return (dir_ / filename).string(); }
+
+  std::string write_text(const std::string& filename, const std::string& content) const {
+    const std::string path = path_for(filename);
+    std::ofstream out(path, std::ios::binary);
+    out << content;
+    return path;
+  }
+
+  fs::path dir_;
+};
+
+// Checks the promised error shape: std::runtime_error, one line, naming the file and the problem.
+template <class Action>
+void expect_error(Action&& action, const std::string& path, const std::string& phrase) {
+  try {
+    std::forward<Action>(action)();
+    ADD_FAILURE() << "expected std::runtime_error containing '" << phrase << "'";
+  } catch (const std::runtime_error& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+    EXPECT_NE(message.find(phrase), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+// Writes variables into a v5 .mat file the way MATLAB users would produce them.
+class MatWriter {
+ public:
+  explicit MatWriter(const std::string& path) : file_(Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5)) {
+    if (file_ == nullptr) throw std::runtime_error("cannot create " + path);
+  }
+  ~MatWriter() { Mat_Close(file_); }
+  MatWriter(const MatWriter&) = delete;
+  MatWriter& operator=(const MatWriter&) = delete;
+
+  void dense(const std::string& name, Eigen::MatrixXd matrix) {
+    size_t dims[2] = {static_cast<size_t>(matrix.rows()), static_cast<size_t>(matrix.cols())};
+    write(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, matrix.data(), MAT_F_DONT_COPY_DATA));
+  }
+
+  template <class T>
+  void typed(const std::string& name, matio_classes class_type, matio_types data_type, std::vector<T> column_major,
+             size_t rows, size_t cols) {
+    size_t dims[2] = {rows, cols};
+    write(Mat_VarCreate(name.c_str(), class_type, data_type, 2, dims, column_major.data(), MAT_F_DONT_COPY_DATA));
+  }
+
+  void sparse(const std::string& name, Eigen::SparseMatrix<double> matrix) {
+    matrix.makeCompressed();
+    const auto nonzeros = static_cast<mat_uint32_t>(matrix.nonZeros());
+    std::vector<mat_uint32_t> row_index(matrix.innerIndexPtr(), matrix.innerIndexPtr() + nonzeros);
+    std::vector<mat_uint32_t> column_start(matrix.outerIndexPtr(), matrix.outerIndexPtr() + matrix.cols() + 1);
+    std::vector<double> values(matrix.valuePtr(), matrix.valuePtr() + nonzeros);
+    mat_sparse_t csc{};
+    csc.nzmax = nonzeros;
+    csc.ir = row_index.data();
+    csc.nir = nonzeros;
+    csc.jc = column_start.data();
+    csc.njc = static_cast<mat_uint32_t>(column_start.size());
+    csc.ndata = nonzeros;
+    csc.data = values.data();
+    size_t dims[2] = {static_cast<size_t>(matrix.rows()), static_cast<size_t>(matrix.cols())};
+    write(Mat_VarCreate(name.c_str(), MAT_C_SPARSE, MAT_T_DOUBLE, 2, dims, &csc, MAT_F_DONT_COPY_DATA));
+  }
+
+  void complex(const std::string& name) {
+    std::vector<double> real_part = {1.0, 2.0, 3.0, 4.0};
+    std::vector<double> imaginary_part = {0.5, 0.0, -0.5, 1.0};
+    mat_complex_split_t split{real_part.data(), imaginary_part.data()};
+    size_t dims[2] = {2, 2};
+    write(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, &split,
+                        MAT_F_COMPLEX | MAT_F_DONT_COPY_DATA));
+  }
+
+  void three_dimensional(const std::string& name) {
+    std::vector<double> values(8, 1.0);
+    size_t dims[3] = {2, 2, 2};
+    write(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 3, dims, values.data(), MAT_F_DONT_COPY_DATA));
+  }
+
+  void text(const std::string& name, std::string value) {
+    size_t dims[2] = {1, value.size()};
+    write(Mat_VarCreate(name.c_str(), MAT_C_CHAR, MAT_T_UINT8, 2, dims, value.data(), MAT_F_DONT_COPY_DATA));
+  }
+
+ private:
+  void write(matvar_t* variable) {
+    ASSERT_NE(variable, nullptr);
+    EXPECT_EQ(Mat_VarWrite(file_, variable, MAT_COMPRESSION_NONE), 0);
+    Mat_VarFree(variable);  // MAT_F_DONT_COPY_DATA: frees only matio's header, not our buffers
+  }
+
+  mat_t* file_;
+};
+
+Eigen::MatrixXd example_matrix() {
+  Eigen::MatrixXd matrix(3, 4);
+  matrix << 4.0, 0.0, -1.5, 0.0,  //
+      0.0, 2.25, 0.0, 1e-12,      //
+      7.0, 0.0, 0.0, -3.0;
+  return matrix;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Matrix Market: valid files
+
+using MatrixMarketTest = TempDirTest;
+
+TEST_F(MatrixMarketTest, ReadsCoordinateGeneral) {
+  const std::string path = write_text("general.mtx",
+                                      "%%MatrixMarket matrix coordinate real general\n"
+                                      "% a comment\n"
+                                      "3 4 6\n"
+                                      "1 1 4.0\n"
+                                      "2 2 2.25\n"
+                                      "3 1 7\n"
+                                      "1 3 -1.5\n"
+                                      "2 4 1e-12\n"
+                                      "3 4 -3.0E0\n");
+  const Eigen::SparseMatrix<double> sparse = hbtrack::read_matrix_market_sparse(path);
+  EXPECT_EQ(sparse.rows(), 3);
+  EXPECT_EQ(sparse.cols(), 4);
+  EXPECT_EQ(sparse.nonZeros(), 6);
+  EXPECT_EQ(Eigen::MatrixXd(sparse), example_matrix());
+  EXPECT_EQ(hbtrack::read_matrix_market(path), example_matrix());
+}
+
+TEST_F(MatrixMarketTest, ExpandsCoordinateSymmetric) {
+  const std::string path = write_text("symmetric.mtx",
+                                      "%%MatrixMarket matrix coordinate real symmetric\n"
+                                      "3 3 4\n"
+                                      "1 1 2\n"
+                                      "2 1 -1\n"
+                                      "3 2 -1\n"
+                                      "3 3 2\n");
+  Eigen::MatrixXd expected(3, 3);
+  expected << 2, -1, 0, -1, 0, -1, 0, -1, 2;
+  EXPECT_EQ(hbtrack::read_matrix_market(path), expected);
+}
+
+TEST_F(MatrixMarketTest, ExpandsSymmetricGivenAsUpperTriangle) {
+  const std::string path = write_text("upper.mtx",
+                                      "%%MatrixMarket matrix coordinate real symmetric\n"
+                                      "2 2 2\n"
+                                      "1 2 5\n"
+                                      "2 2 1\n");
+  Eigen::MatrixXd expected(2, 2);
+  expected << 0, 5, 5, 1;
+  EXPECT_EQ(hbtrack::read_matrix_market(path), expected);
+}
+
+TEST_F(MatrixMarketTest, ExpandsSkewSymmetric) {
+  const std::string path = write_text("skew.mtx",
+                                      "%%MatrixMarket matrix coordinate real skew-symmetric\n"
+                                      "3 3 2\n"
+                                      "2 1 1.5\n"
+                                      "3 1 -2\n");
+  Eigen::MatrixXd expected(3, 3);
+  expected << 0, -1.5, 2, 1.5, 0, 0, -2, 0, 0;
+  EXPECT_EQ(hbtrack::read_matrix_market(path), expected);
+}
+
+TEST_F(MatrixMarketTest, ReadsArrayInColumnMajorOrder) {
+  const std::string path = write_text("array.mtx",
+                                      "%%MatrixMarket matrix array real general\n"
+                                      "% column by column, as the standard says\n"
+                                      "2 3\n"
+                                      "1\n2\n3\n4\n5\n6\n");
+  Eigen::MatrixXd expected(2, 3);
+  expected << 1, 3, 5, 2, 4, 6;
+  EXPECT_EQ(hbtrack::read_matrix_market(path), expected);
+}
+
+TEST_F(MatrixMarketTest, ReadsArraySymmetricLowerTriangle) {
+  const std::string path = write_text("array_symmetric.mtx",
+                                      "%%MatrixMarket matrix array real symmetric\n"
+                                      "3 3\n"
+                                      "1\n2\n3\n4\n5\n6\n");
+  Eigen::MatrixXd expected(3, 3);
+  expected << 1, 2, 3, 2, 4, 5, 3, 5, 6;
+  EXPECT_EQ(hbtrack::read_matrix_market(path), expected);
+}
+
+TEST_F(MatrixMarketTest, ReadsIntegerField) {
+  const std::string path = write_text("integer.mtx",
+                                      "%%MatrixMarket matrix coordinate integer general\n"
+                                      "2 2 3\n"
+                                      "1 1 7\n"
+                                      "2 1 -3\n"
+                                      "2 2 +12\n");
+  Eigen::MatrixXd expected(2, 2);
+  expected << 7, 0, -3, 12;
+  EXPECT_EQ(hbtrack::read_matrix_market(path), expected);
+}
+
+TEST_F(MatrixMarketTest, ReadsPatternFieldAsOnes) {
+  const std::string path = write_text("pattern.mtx",
+                                      "%%MatrixMarket matrix coordinate pattern general\n"
+                                      "2 2 2\n"
+                                      "1 2\n"
+                                      "2 1\n");
+  Eigen::MatrixXd expected(2, 2);
+  expected << 0, 1, 1, 0;
+  EXPECT_EQ(hbtrack::read_matrix_market(path), expected);
+}
+
+TEST_F(MatrixMarketTest, SumsDuplicateEntries) {
+  const std::string path = write_text("duplicates.mtx",
+                                      "%%MatrixMarket matrix coordinate real general\n"
+                                      "2 2 4\n"
+                                      "1 1 1.5\n"
+                                      "2 2 1\n"
+                                      "1 1 2.5\n"
+                                      "1 1 -1\n");
+  const Eigen::SparseMatrix<double> sparse = hbtrack::read_matrix_market_sparse(path);
+  EXPECT_EQ(sparse.nonZeros(), 2);
+  EXPECT_EQ(sparse.coeff(0, 0), 3.0);
+  EXPECT_EQ(sparse.coeff(1, 1), 1.0);
+}
+
+TEST_F(MatrixMarketTest, ToleratesCrlfTabsBlankLinesAndCaseInBanner) {
+  const std::string path = write_text("windows.mtx",
+                                      "%%MatrixMarket MATRIX Coordinate REAL General\r\n"
+                                      "\r\n"
+                                      "  2\t2  1 \r\n"
+                                      "%comment between entries\r\n"
+                                      "\t2 1\t-4.5\r\n"
+                                      "\r\n");
+  Eigen::MatrixXd expected(2, 2);
+  expected << 0, 0, -4.5, 0;
+  EXPECT_EQ(hbtrack::read_matrix_market(path), expected);
+}
+
+TEST_F(MatrixMarketTest, ReadsEmptyMatrix) {
+  const std::string path = write_text("empty.mtx", "%%MatrixMarket matrix coordinate real general\n4 5 0\n");
+  const Eigen::SparseMatrix<double> sparse = hbtrack::read_matrix_market_sparse(path);
+  EXPECT_EQ(sparse.rows(), 4);
+  EXPECT_EQ(sparse.cols(), 5);
+  EXPECT_EQ(sparse.nonZeros(), 0);
+}
+
+TEST_F(MatrixMarketTest, UnderflowingValueReadsAsZero) {
+  const std::string path =
+      write_text("tiny.mtx", "%%MatrixMarket matrix coordinate real general\n1 2 2\n1 1 1e-400\n1 2 4.9e-324\n");
+  const Eigen::MatrixXd matrix = hbtrack::read_matrix_market(path);
+  EXPECT_EQ(matrix(0, 0), 0.0);
+  EXPECT_GT(matrix(0, 1), 0.0);
+}
+
+TEST_F(MatrixMarketTest, RoundTripIsBitExact) {
+  Eigen::MatrixXd dense(3, 3);
+  dense << 1.0 / 3.0, 0.0, -2.0 / 7.0,  //
+      1e-300, 6.02214076e23, 0.0,       //
+      0.0, -0.1, 5e-324;
+  const Eigen::SparseMatrix<double> original = sparse_from(dense);
+  const std::string path = path_for("round_trip.mtx");
+  hbtrack::write_matrix_market(path, original);
+  const Eigen::SparseMatrix<double> read_back = hbtrack::read_matrix_market_sparse(path);
+  EXPECT_EQ(read_back.rows(), original.rows());
+  EXPECT_EQ(read_back.cols(), original.cols());
+  EXPECT_EQ(read_back.nonZeros(), original.nonZeros());
+  EXPECT_EQ(Eigen::MatrixXd(read_back), dense);  // exact: %.17g round-trips every double
+}
+
+TEST_F(MatrixMarketTest, WriteRefusesNonFiniteValue) {
+  Eigen::SparseMatrix<double> matrix(2, 2);
+  matrix.insert(1, 0) = std::numeric_limits<double>::quiet_NaN();
+  const std::string path = path_for("nan.mtx");
+  expect_error([&] { hbtrack::write_matrix_market(path, matrix); }, path, "non-finite");
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST_F(MatrixMarketTest, WriteReportsUnwritablePath) {
+  const std::string path = path_for("no_such_dir/out.mtx");
+  expect_error([&] { hbtrack::write_matrix_market(path, Eigen::SparseMatrix<double>(1, 1)); }, path,
+               "cannot open for writing");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Matrix Market: malformed files
+
+struct MalformedCase {
+  const char* name;
+  const char* content;
+  const char* phrase;
+};
+
+class MalformedMatrixMarketTest : public TempDirTest, public ::testing::WithParamInterface<MalformedCase> {};
+
+TEST_P(MalformedMatrixMarketTest, ThrowsWithPathAndReason) {
+  const std::string path = write_text("bad.mtx", GetParam().content);
+  expect_error([&] { hbtrack::read_matrix_market_sparse(path); }, path, GetParam().phrase);
+  expect_error([&] { hbtrack::read_matrix_market(path); }, path, GetParam().phrase);
+}
+
+constexpr const char* kCoordinateBanner = "%%MatrixMarket matrix coordinate real general\n";
+
+const MalformedCase kMalformedCases[] = {
+    {"EmptyFile", "", "missing '%%MatrixMarket' banner"},
+    {"MissingBanner", "3 3 1\n1 1 1.0\n", "line 1: missing '%%MatrixMarket' banner"},
+    {"BannerTooShort", "%%MatrixMarket matrix coordinate real\n1 1 0\n", "line 1: banner must be"},
+    {"UnknownObject", "%%MatrixMarket vector coordinate real general\n1 1 0\n", "unsupported object 'vector'"},
+    {"UnknownFormat", "%%MatrixMarket matrix dense real general\n1 1 0\n", "unknown format 'dense'"},
+    {"BadField", "%%MatrixMarket matrix coordinate reel general\n1 1 0\n", "unknown field 'reel'"},
+    {"ComplexField", "%%MatrixMarket matrix coordinate complex general\n1 1 0\n", "complex matrices are not supported"},
+    {"Hermitian", "%%MatrixMarket matrix coordinate real hermitian\n1 1 0\n", "hermitian matrices are not supported"},
+    {"UnknownSymmetry", "%%MatrixMarket matrix coordinate real diagonal\n1 1 0\n", "unknown symmetry 'diagonal'"},
+    {"PatternArray", "%%MatrixMarket matrix array pattern general\n1 1\n", "pattern field is only valid"},
+    {"MissingSizeLine", "%%MatrixMarket matrix coordinate real general\n% only comments\n", "missing size line"},
+    {"TruncatedSizeLine", "%%MatrixMarket matrix coordinate real general\n3 3\n1 1 1\n",
+     "line 2: size line must be 'rows columns entries' (3 integers), found 2"},
+    {"ArraySizeLineWithThreeNumbers", "%%MatrixMarket matrix array real general\n2 2 4\n1\n2\n3\n4\n",
+     "line 2: size line must be 'rows columns' (2 integers)"},
+    {"NegativeSize", "%%MatrixMarket matrix coordinate real general\n-3 3 1\n1 1 1\n",
+     "'-3' is not a non-negative integer"},
+    {"NonIntegerSize", "%%MatrixMarket matrix coordinate real general\n3.5 3 1\n1 1 1\n",
+     "'3.5' is not a non-negative integer"},
+    {"DimensionTooLarge", "%%MatrixMarket matrix coordinate real general\n3000000000 3 0\n", "exceeds the limit"},
+    {"TooManyDeclaredEntries", "%%MatrixMarket matrix coordinate real general\n10 10 1000000001\n1 1 1\n",
+     "more than the limit"},
+    {"ArrayTooLarge", "%%MatrixMarket matrix array real general\n100000 100000\n1\n", "exceeds the limit"},
+    {"SymmetricNotSquare", "%%MatrixMarket matrix coordinate real symmetric\n2 3 1\n1 1 1\n", "must be square"},
+    {"RowOutOfRange", "%%MatrixMarket matrix coordinate real general\n3 3 2\n1 1 1\n4 1 2\n",
+     "line 4: row index 4 out of range 1..3"},
+    {"ColumnZero", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 0 1\n",
+     "line 3: column index 0 out of range 1..3"},
+    {"IndexNotInteger", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1.0 1 1\n",
+     "row index '1.0' is not an integer"},
+    {"TooFewEntries", "%%MatrixMarket matrix coordinate real general\n3 3 3\n1 1 1\n2 2 2\n",
+     "file ends after 2 of 3 entries"},
+    {"TooFewArrayEntries", "%%MatrixMarket matrix array real general\n2 2\n1\n2\n3\n", "file ends after 3 of 4"},
+    {"TooManyEntries", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 1\n2 2 2\n",
+     "line 4: more entries than the size line declares"},
+    {"EntryMissingValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1\n",
+     "line 3: expected 3 numbers (row column value), found 2"},
+    {"EntryWithExtraNumber", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 1 1\n",
+     "line 3: expected 3 numbers"},
+    {"NonNumericValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 abc\n",
+     "line 3: value 'abc' is not a number"},
+    {"TrailingGarbageInValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 1.5x\n",
+     "value '1.5x' is not a number"},
+    {"NaNValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 nan\n", "line 3: value 'nan' is not finite"},
+    {"InfValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 -inf\n", "value '-inf' is not finite"},
+    {"OverflowingValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 1e999\n", "out of range"},
+    {"FractionInIntegerField", "%%MatrixMarket matrix coordinate integer general\n3 3 1\n2 2 1.5\n",
+     "value '1.5' is not an integer"},
+    {"BinaryGarbageValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 \x01\x7f\xff\n",
+     "value '?\?\?' is not a number"},
+    {"SymmetricBothTriangles", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n2 1 1\n1 2 1\n",
+     "both triangles"},
+    {"SkewSymmetricDiagonal", "%%MatrixMarket matrix coordinate real skew-symmetric\n2 2 1\n1 1 3\n",
+     "nonzero diagonal"},
+};
+
+INSTANTIATE_TEST_SUITE_P(MatrixMarket, MalformedMatrixMarketTest, ::testing::ValuesIn(kMalformedCases),
+                         [](const ::testing::TestParamInfo<MalformedCase>& case_info) { return case_info.param.name; });
+
+TEST_F(MatrixMarketTest, MissingFileIsReported) {
+  const std::string path = path_for("does_not_exist.mtx");
+  expect_error([&] { hbtrack::read_matrix_market(path); }, path, "cannot open file");
+}
+
+TEST_F(MatrixMarketTest, DirectoryIsReported) {
+  const std::string path = dir_.string();
+  expect_error([&] { hbtrack::read_matrix_market(path); }, path, "is a directory");
+}
+
+// A cheap stand-in for the later fuzzing: every prefix and many single-byte corruptions of a
+// valid file must either parse or throw std::runtime_error (the sanitizers catch the rest).
+TEST_F(MatrixMarketTest, TruncatedOrCorruptedInputNeverCrashes) {
+  const std::string valid = std::string(kCoordinateBanner) + "% c\n3 3 4\n1 1 1.5\n3 2 -2e3\n2 2 7\n3 3 1\n";
+  const std::string path = path_for("fuzz.mtx");
+  const auto parse_or_runtime_error = [&](const std::string& content) {
+    write_text("fuzz.mtx", content);
+    try {
+      hbtrack::read_matrix_market_sparse(path);
+    } catch (const std::runtime_error&) {
+    }
+  };
+  for (std::size_t length = 0; length <= valid.size(); ++length) parse_or_runtime_error(valid.substr(0, length));
+  const std::string replacements("\0 \n%-+.e9x", 11);
+  for (std::size_t position = 0; position < valid.size(); ++position)
+    for (const char replacement : replacements) {
+      std::string corrupted = valid;
+      corrupted[position] = replacement;
+      EXPECT_NO_FATAL_FAILURE(parse_or_runtime_error(corrupted));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// MATLAB .mat files
+
+using MatFileTest = TempDirTest;
+
+TEST_F(MatFileTest, ReadsDenseAndSparseIdenticallyToMatrixMarket) {
+  const Eigen::MatrixXd dense = example_matrix();
+  const std::string mat_path = path_for("model.mat");
+  {
+    MatWriter writer(mat_path);
+    writer.dense("K_dense", dense);
+    writer.sparse("K_sparse", sparse_from(dense));
+  }
+  const std::string mtx_path = path_for("model.mtx");
+  hbtrack::write_matrix_market(mtx_path, sparse_from(dense));
+
+  const Eigen::MatrixXd from_dense = hbtrack::read_mat_variable(mat_path, "K_dense");
+  const Eigen::MatrixXd from_sparse = hbtrack::read_mat_variable(mat_path, "K_sparse");
+  const Eigen::MatrixXd from_mtx = hbtrack::read_matrix_market(mtx_path);
+  EXPECT_EQ(from_dense, dense);
+  EXPECT_EQ(from_sparse, dense);
+  EXPECT_EQ(from_mtx, dense);
+
+  const Eigen::SparseMatrix<double> sparse = hbtrack::read_mat_variable_sparse(mat_path, "K_sparse");
+  EXPECT_EQ(sparse.rows(), 3);
+  EXPECT_EQ(sparse.cols(), 4);
+  EXPECT_EQ(sparse.nonZeros(), 6);
+  EXPECT_EQ(Eigen::MatrixXd(hbtrack::read_mat_variable_sparse(mat_path, "K_dense")), dense);
+}
+
+TEST_F(MatFileTest, VectorsKeepTheirOrientation) {
+  const std::string path = path_for("vectors.mat");
+  {
+    MatWriter writer(path);
+    writer.dense("column", Eigen::VectorXd::LinSpaced(4, 1.0, 4.0));
+    writer.dense("row", Eigen::RowVectorXd::LinSpaced(3, 1.0, 3.0));
+  }
+  const Eigen::MatrixXd column = hbtrack::read_mat_variable(path, "column");
+  const Eigen::MatrixXd row = hbtrack::read_mat_variable(path, "row");
+  EXPECT_EQ(column.rows(), 4);
+  EXPECT_EQ(column.cols(), 1);
+  EXPECT_EQ(row.rows(), 1);
+  EXPECT_EQ(row.cols(), 3);
+  EXPECT_EQ(column(3, 0), 4.0);
+  EXPECT_EQ(row(0, 2), 3.0);
+}
+
+TEST_F(MatFileTest, ConvertsSingleAndIntegerClassesToDouble) {
+  const std::string path = path_for("classes.mat");
+  {
+    MatWriter writer(path);
+    writer.typed<float>("single", MAT_C_SINGLE, MAT_T_SINGLE, {1.5f, -2.0f, 0.0f, 4.25f}, 2, 2);
+    writer.typed<std::int32_t>("int32", MAT_C_INT32, MAT_T_INT32, {1, -2, 0, 40000}, 2, 2);
+    writer.typed<std::uint8_t>("uint8", MAT_C_UINT8, MAT_T_UINT8, {255, 0, 1, 2}, 2, 2);
+  }
+  Eigen::MatrixXd single(2, 2), int32(2, 2), uint8(2, 2);
+  single << 1.5, 0.0, -2.0, 4.25;
+  int32 << 1, 0, -2, 40000;
+  uint8 << 255, 1, 0, 2;
+  EXPECT_EQ(hbtrack::read_mat_variable(path, "single"), single);
+  EXPECT_EQ(hbtrack::read_mat_variable(path, "int32"), int32);
+  EXPECT_EQ(hbtrack::read_mat_variable(path, "uint8"), uint8);
+}
+
+TEST_F(MatFileTest, MissingFileIsReported) {
+  const std::string path = path_for("missing.mat");
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "cannot open file");
+}
+
+TEST_F(MatFileTest, NonMatFileIsReported) {
+  const std::string path = write_text("text.mat", "this is not a MAT file, just text\n");
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "not a readable MAT file");
+}
+
+TEST_F(MatFileTest, MissingVariableListsAvailableNames) {
+  const std::string path = path_for("names.mat");
+  {
+    MatWriter writer(path);
+    writer.dense("M", Eigen::MatrixXd::Identity(2, 2));
+    writer.dense("K2", Eigen::MatrixXd::Identity(2, 2));
+  }
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': not found; available: M, K2");
+  expect_error([&] { hbtrack::read_mat_variable_sparse(path, "K"); }, path, "not found");
+}
+
+TEST_F(MatFileTest, ComplexVariableIsRejected) {
+  const std::string path = path_for("complex.mat");
+  {
+    MatWriter writer(path);
+    writer.complex("Z");
+  }
+  expect_error([&] { hbtrack::read_mat_variable(path, "Z"); }, path, "variable 'Z': is complex");
+}
+
+TEST_F(MatFileTest, ThreeDimensionalVariableIsRejected) {
+  const std::string path = path_for("cube.mat");
+  {
+    MatWriter writer(path);
+    writer.three_dimensional("C");
+  }
+  expect_error([&] { hbtrack::read_mat_variable(path, "C"); }, path, "variable 'C': has 3 dimensions");
+}
+
+TEST_F(MatFileTest, CharVariableIsRejected) {
+  const std::string path = path_for("char.mat");
+  {
+    MatWriter writer(path);
+    writer.text("label", "stiffness");
+  }
+  expect_error([&] { hbtrack::read_mat_variable(path, "label"); }, path, "variable 'label': is a char array");
+}
+
+TEST_F(MatFileTest, NonFiniteValueIsRejected) {
+  const std::string path = path_for("nan.mat");
+  {
+    MatWriter writer(path);
+    Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(2, 2);
+    matrix(1, 0) = std::numeric_limits<double>::infinity();
+    writer.dense("K", matrix);
+  }
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': non-finite value at (2, 1)");
+}
+
+TEST_F(MatFileTest, TruncatedFileNeverCrashes) {
+  const std::string path = path_for("full.mat");
+  {
+    MatWriter writer(path);
+    writer.dense("K", example_matrix());
+    writer.sparse("S", sparse_from(example_matrix()));
+  }
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string truncated_path = path_for("truncated.mat");
+  for (std::size_t length = 0; length < bytes.size(); length += 7) {
+    write_text("truncated.mat", bytes.substr(0, length));
+    for (const char* name : {"K", "S"}) {
+      try {
+        hbtrack::read_mat_variable_sparse(truncated_path, name);
+      } catch (const std::runtime_error& error) {
+        EXPECT_EQ(std::string(error.what()).rfind(truncated_path + ": ", 0), 0u) << error.what();
+      }
+    }
+  }
+}
+
+}  // namespace

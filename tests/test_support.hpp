@@ -1,0 +1,96 @@
+#pragma once
+// Shared fixtures for the numerical tests: small models with every element type, and
+// finite-difference derivatives.
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+
+#include "hbtrack/elements/scalar_elements.hpp"
+#include "hbtrack/elements/tip_contact.hpp"
+#include "hbtrack/hbm/harmonic_balance.hpp"
+
+namespace hbtrack::test {
+
+inline std::string source_path(const std::string& relative) { return std::string(HBTRACK_SOURCE_DIR) + "/" + relative; }
+
+// Central-difference derivative of a vector function along one scalar.
+inline Eigen::VectorXd central_difference(const std::function<Eigen::VectorXd(double)>& f, double at, double h) {
+  return (f(at + h) - f(at - h)) / (2.0 * h);
+}
+
+// Central-difference Jacobian of r(x).
+inline Eigen::MatrixXd fd_jacobian(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& r, const Eigen::VectorXd& x,
+                                   double h) {
+  const Eigen::VectorXd r0 = r(x);
+  Eigen::MatrixXd j(r0.size(), x.size());
+  for (Eigen::Index c = 0; c < x.size(); ++c) {
+    Eigen::VectorXd xp = x, xm = x;
+    xp(c) += h;
+    xm(c) -= h;
+    j.col(c) = (r(xp) - r(xm)) / (2.0 * h);
+  }
+  return j;
+}
+
+// max |a - b| relative to max |b| (or 1 when b is tiny).
+inline double relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return (a - b).cwiseAbs().maxCoeff() / std::max(b.cwiseAbs().maxCoeff(), 1e-300);
+}
+
+// A 9-dof model: a 3-dof tip node [r, t, z] in contact with a casing (polynomial law, Lanczos,
+// friction), a cubic spring between dofs 3 and 4, tanh friction on dof 5, and three linear dofs
+// (6-8) that condensation eliminates.
+// `general_damping` makes C non-proportional (Schur condensation only).
+struct ContactFixture {
+  StructuralModel model;
+  ElementList elements;
+  ParameterSet parameters;
+  int mu = -1, clearance = -1;
+};
+
+inline ContactFixture contact_fixture(bool general_damping, double lanczos) {
+  ContactFixture f;
+  const int n = 9;
+  for (int i = 0; i < n; ++i) f.model.dof_names.push_back("d" + std::to_string(i));
+  Eigen::MatrixXd a = Eigen::MatrixXd::Identity(n, n);
+  for (int i = 0; i + 1 < n; ++i) a(i, i + 1) = a(i + 1, i) = 0.2;
+  f.model.mass = a;
+  Eigen::MatrixXd k = 4.0 * Eigen::MatrixXd::Identity(n, n);
+  for (int i = 0; i + 1 < n; ++i) k(i, i + 1) = k(i + 1, i) = -1.0;
+  k(0, 3) = k(3, 0) = -0.5;
+  k(1, 8) = k(8, 1) = -0.7;
+  f.model.stiffness = k;
+  f.model.damping = 0.01 * k + 0.02 * a;
+  if (general_damping) {
+    f.model.damping(1, 4) = f.model.damping(4, 1) = 0.03;
+    f.model.damping(2, 7) = f.model.damping(7, 2) = 0.02;
+  }
+  HarmonicForce h1{1, Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
+  h1.cos_part << 0.5, 0.1, 0.0, 0.2, 0.0, 0.1, 0.3, 0.0, 0.2;
+  h1.sin_part << 0.0, 0.0, 0.1, 0.0, 0.3, 0.0, 0.0, 0.2, 0.0;
+  HarmonicForce h2{2, Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
+  h2.cos_part(3) = 0.05;
+  f.model.forcing = {h1, h2};
+  f.parameters.set("amplitude", 1.3);
+  f.mu = f.parameters.set("mu", 0.15);
+  f.clearance = f.parameters.set("clearance", 0.02);
+
+  auto tip = std::make_shared<TipContact>(ContactLawKind::polynomial);
+  tip->dofs = {0, 1, 2};
+  tip->properties = {ParameterBinding::constant(50.0), ParameterBinding::linked(f.clearance), ParameterBinding::constant(0.3),
+                     ParameterBinding::linked(f.mu),    ParameterBinding::constant(0.4),       ParameterBinding::constant(1.0),
+                     ParameterBinding::constant(0.2)};
+  tip->lanczos_exponent = lanczos;
+  auto cubic = std::make_shared<CubicSpring>();
+  cubic->dofs = {3, 4};
+  cubic->weights = (Eigen::VectorXd(2) << 1.0, -1.0).finished();
+  cubic->properties = {ParameterBinding::constant(2.0)};
+  auto friction = std::make_shared<TanhFriction>();
+  friction->dofs = {5};
+  friction->weights = Eigen::VectorXd::Ones(1);
+  friction->properties = {ParameterBinding::linked(f.mu, 2.0), ParameterBinding::constant(0.5), ParameterBinding::constant(0.05)};
+  f.elements = {tip, cubic, friction};
+  return f;
+}
+
+}  // namespace hbtrack::test
