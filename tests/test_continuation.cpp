@@ -1,0 +1,115 @@
+// The continuation engine on problems with known answers, independent of harmonic balance, and
+// every predictor/corrector combination on the Duffing example.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hbtrack/analysis/nfrc.hpp"
+#include "hbtrack/continuation/continuation.hpp"
+#include "hbtrack/io/case_file.hpp"
+#include "test_support.hpp"
+
+using namespace hbtrack;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+// R(u, lambda) = u^3 - u + lambda, a cubic fold: lambda = u - u^3 has limit points
+// at u = +-1/sqrt(3), lambda = +-2/(3 sqrt(3)).
+class CubicFold final : public ContinuationProblem {
+ public:
+  int size() const override { return 1; }
+  void evaluate(const VectorXd& u, double lambda, VectorXd& r, MatrixXd* jac, VectorXd* r_lambda) override {
+    r.resize(1);
+    r(0) = u(0) * u(0) * u(0) - u(0) + lambda;
+    if (jac) {
+      jac->resize(1, 1);
+      (*jac)(0, 0) = 3 * u(0) * u(0) - 1;
+      r_lambda->resize(1);
+      (*r_lambda)(0) = 1.0;
+    }
+  }
+  VectorXd unknown_scale(const VectorXd&) const override { return VectorXd::Ones(1); }
+  double parameter_scale() const override { return 1.0; }
+  double residual_scale() const override { return 1.0; }
+};
+
+}  // namespace
+
+TEST(Continuation, FollowsAFoldAndFlagsBothLimitPoints) {
+  for (const char* predictor : {"tangent", "secant"}) {
+    for (const char* corrector : {"pseudo_arclength", "hypersphere"}) {
+      CubicFold problem;
+      ContinuationOptions o;
+      o.predictor = predictor;
+      o.corrector = corrector;
+      o.step = 0.02;
+      o.step_max = 0.05;
+      // Start on the lower branch at lambda = 1 (u ~ -1.32), go towards lambda = -1.
+      const ContinuationResult r = continue_branch(problem, VectorXd::Constant(1, -1.3), 1.0, -1.0, o);
+      ASSERT_EQ(r.summary.stop_reason, "reached_end") << predictor << "/" << corrector;
+      // Every point is on the curve.
+      for (const BranchPoint& p : r.points) EXPECT_NEAR(p.u(0) * p.u(0) * p.u(0) - p.u(0) + p.lambda, 0.0, 1e-9);
+      EXPECT_DOUBLE_EQ(r.points.back().lambda, -1.0);
+      ASSERT_EQ(r.special_points.size(), 2u) << predictor << "/" << corrector;
+      // Flagged at a branch point next to the fold: within one step (0.05) of the exact value.
+      const double lp = 2.0 / (3.0 * std::sqrt(3.0));
+      EXPECT_NEAR(r.special_points[0].lambda, -lp, 0.05);
+      EXPECT_NEAR(r.special_points[1].lambda, lp, 0.05);
+    }
+  }
+}
+
+TEST(Continuation, ObserverCanInterrupt) {
+  CubicFold problem;
+  ContinuationOptions o;
+  const ContinuationResult r =
+      continue_branch(problem, VectorXd::Constant(1, -1.3), 1.0, -1.0, o, [](const BranchPoint&, int index) { return index < 4; });
+  EXPECT_EQ(r.summary.stop_reason, "interrupted");
+  EXPECT_EQ(r.points.size(), 5u);
+}
+
+TEST(Continuation, FailsCleanlyWhenNewtonCannotStart) {
+  CubicFold problem;
+  ContinuationOptions o;
+  o.max_iterations = 1;
+  o.tolerance = 1e-300;  // unreachable in floating point
+  const ContinuationResult r = continue_branch(problem, VectorXd::Constant(1, 5.0), 1.0, -1.0, o);
+  EXPECT_EQ(r.summary.stop_reason, "no_convergence_at_start");
+  EXPECT_FALSE(r.success());
+}
+
+TEST(Continuation, OptionsAreValidatedWithTheFieldName) {
+  ContinuationOptions o;
+  o.step = -1;
+  try {
+    o.validate();
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("continuation.step"), std::string::npos);
+  }
+}
+
+TEST(Continuation, AllPredictorCorrectorVariantsGiveTheSameDuffingLimitPoints) {
+  std::vector<std::vector<double>> lps;
+  for (const char* predictor : {"tangent", "secant"}) {
+    for (const char* corrector : {"pseudo_arclength", "hypersphere"}) {
+      CaseDefinition c = load_case(test::source_path("examples/duffing.toml"),
+                                   {std::string("continuation.predictor=\"") + predictor + "\"",
+                                    std::string("continuation.corrector=\"") + corrector + "\"", "continuation.step=0.005",
+                                    "continuation.step_max=0.005"});
+      HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+      const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs);
+      ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end") << predictor << "/" << corrector;
+      ASSERT_EQ(r.continuation.special_points.size(), 2u) << predictor << "/" << corrector;
+      lps.push_back({r.continuation.special_points[0].lambda, r.continuation.special_points[1].lambda});
+    }
+  }
+  // Unlocated limit points sit on a branch point next to the fold: they agree to the omega
+  // spacing of points near the fold, which a step of 0.005 keeps below 2e-3.
+  for (size_t i = 1; i < lps.size(); ++i) {
+    EXPECT_NEAR(lps[i][0], lps[0][0], 2e-3);
+    EXPECT_NEAR(lps[i][1], lps[0][1], 2e-3);
+  }
+}
