@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/model/damping.hpp"
 #include "test_support.hpp"
 
 using namespace hbtrack;
@@ -96,6 +97,18 @@ TEST(CaseFile, OverridesSetParametersAndKeys) {
   } catch (const CaseError& e) {
     EXPECT_NE(std::string(e.what()).find("did you mean 'clearance'"), std::string::npos) << e.what();
   }
+}
+
+TEST(CaseFile, MassModeForcingExcitesOnlyThatMode) {
+  const CaseDefinition c = load_case(
+      write_case("mass_mode", variant("dof = \"a\"\ncos = 0.5", "shape = \"mass_mode\"\nmode = 1\nscale = 2.0")).string());
+  ASSERT_EQ(c.model.forcing.size(), 1u);
+  const NormalModes modes = normal_modes(c.model.mass, c.model.stiffness);
+  const Eigen::VectorXd& f = c.model.forcing[0].cos_part;
+  // phi_1^T (2 M phi_1) = 2 for a mass-normalised mode; M-orthogonality leaves mode 2 unforced.
+  EXPECT_NEAR(std::abs(modes.shapes.col(0).dot(f)), 2.0, 1e-12);
+  EXPECT_NEAR(modes.shapes.col(1).dot(f), 0.0, 1e-12);
+  EXPECT_TRUE(c.model.forcing[0].sin_part.isZero());
 }
 
 TEST(CaseFile, MatrixFromMatrixMarketFile) {

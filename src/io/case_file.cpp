@@ -272,12 +272,28 @@ void read_forcing(const Reader& in, const toml::value& root, CaseDefinition& c) 
   for (size_t i = 0; i < forcing->as_array().size(); ++i) {
     const std::string field = "forcing[" + std::to_string(i) + "]";
     const toml::value& f = in.table(forcing->as_array()[i], field);
-    in.check_keys(f, field, {"harmonic", "dof", "cos", "sin"});
+    in.check_keys(f, field, {"harmonic", "dof", "cos", "sin", "shape", "mode", "scale"});
     HarmonicForce h;
     h.order = in.integer_or(f, "harmonic", field + ".harmonic", 1);
     if (h.order < 0) in.fail(&f.at("harmonic"), field + ".harmonic", "must be >= 0");
     h.cos_part = VectorXd::Zero(n);
     h.sin_part = VectorXd::Zero(n);
+    if (const toml::value* shape = in.find(f, "shape")) {
+      // scale * M phi_mode cos(h w t), phi mass-normalised with its largest entry positive.
+      if (in.string(*shape, field + ".shape") != "mass_mode") in.fail(shape, field + ".shape", "must be \"mass_mode\"");
+      if (in.find(f, "dof") || in.find(f, "cos") || in.find(f, "sin")) in.fail(shape, field + ".shape", "cannot be combined with dof, cos or sin");
+      const int mode = in.integer(in.require(f, "mode", field + ".mode"), field + ".mode");
+      if (mode < 1 || mode > n) in.fail(&f.at("mode"), field + ".mode", "must be in [1, " + std::to_string(n) + "] (1 is the lowest mode)");
+      const NormalModes modes = normal_modes(m.mass, m.stiffness);
+      VectorXd phi = modes.shapes.col(mode - 1);
+      Eigen::Index largest;
+      phi.cwiseAbs().maxCoeff(&largest);
+      if (phi(largest) < 0) phi = -phi;
+      h.cos_part = in.number_or(f, "scale", field + ".scale", 1.0) * (m.mass * phi);
+      m.forcing.push_back(std::move(h));
+      continue;
+    }
+    if (in.find(f, "mode") || in.find(f, "scale")) in.fail(&f, field, "mode and scale go with shape = \"mass_mode\"");
     if (const toml::value* dof = in.find(f, "dof")) {
       const int d = dof_index(in, m, *dof, field + ".dof");
       h.cos_part(d) = in.number_or(f, "cos", field + ".cos", 0.0);

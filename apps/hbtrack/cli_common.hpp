@@ -1,0 +1,68 @@
+#pragma once
+// What every hbtrack verb shares: registration, the uniform failure types, result-folder rows
+// and the progress line.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "hbtrack/analysis/nfrc.hpp"
+#include "hbtrack/io/case_file.hpp"
+
+namespace hbtrack::cli {
+
+// A verb: its CLI11 sub-command and what runs when it was chosen (returns the exit code).
+struct Verb {
+  CLI::App* command;
+  std::function<int()> run;
+};
+using VerbList = std::vector<Verb>;
+
+// Failures of the run itself (results written, reason on stderr): exit code 1. Bad input is
+// reported by throwing hbtrack::CaseError: exit code 2.
+struct RunFailed {
+  std::string reason;
+};
+
+// Options every analysis verb takes: CASE, -o DIR, --set NAME=VALUE..., -q.
+struct CommonOptions {
+  std::string case_path;
+  std::string out_dir;
+  std::vector<std::string> sets;
+  bool quiet = false;
+};
+void add_common_options(CLI::App* command, CommonOptions& options);
+
+// Set by SIGINT/SIGTERM: long runs stop cleanly with stop_reason "interrupted".
+bool interrupted();
+
+HarmonicBalance make_system(const CaseDefinition& c);
+nlohmann::json options_json(const CaseDefinition& c, const HarmonicBalance& hbm);
+std::vector<std::string> branch_header(const CaseDefinition& c);
+std::vector<double> branch_row(const RecordedPoint& p);
+std::vector<std::string> state_header(int unknowns);
+std::vector<double> state_row(double omega, const Eigen::VectorXd& x);
+// Adds max_NAME, min_NAME, h1_NAME of a recorded point to a JSON object.
+void add_outputs(nlohmann::json& j, const CaseDefinition& c, const RecordedPoint& p);
+
+// A one-line progress report on a terminal (stderr), silent otherwise or when quiet.
+class Progress {
+ public:
+  explicit Progress(bool quiet);
+  ~Progress();
+  void update(int index, double omega, const RecordedPoint& p, const std::vector<OutputDof>& outputs);
+
+ private:
+  bool enabled_;
+};
+
+// Verbs register themselves, one file each: `const VerbRegistrar registrar(add_my_verbs);`
+// at namespace scope in the verb's file adds its sub-commands to the tool.
+using VerbFactory = void (*)(CLI::App& app, VerbList& verbs);
+std::vector<VerbFactory>& verb_factories();
+struct VerbRegistrar {
+  explicit VerbRegistrar(VerbFactory factory) { verb_factories().push_back(factory); }
+};
+
+}  // namespace hbtrack::cli
