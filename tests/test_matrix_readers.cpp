@@ -68,7 +68,9 @@ void expect_error(Action&& action, const std::string& path, const std::string& p
 // Writes variables into a v5 .mat file the way MATLAB users would produce them.
 class MatWriter {
  public:
-  explicit MatWriter(const std::string& path) : file_(Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5)) {
+  explicit MatWriter(const std::string& path, mat_ft version = MAT_FT_MAT5,
+                     matio_compression compression = MAT_COMPRESSION_NONE)
+      : file_(Mat_CreateVer(path.c_str(), nullptr, version)), compression_(compression) {
     if (file_ == nullptr) throw std::runtime_error("cannot create " + path);
   }
   ~MatWriter() { Mat_Close(file_); }
@@ -128,11 +130,12 @@ class MatWriter {
  private:
   void write(matvar_t* variable) {
     ASSERT_NE(variable, nullptr);
-    EXPECT_EQ(Mat_VarWrite(file_, variable, MAT_COMPRESSION_NONE), 0);
+    EXPECT_EQ(Mat_VarWrite(file_, variable, compression_), 0);
     Mat_VarFree(variable);  // MAT_F_DONT_COPY_DATA: frees only matio's header, not our buffers
   }
 
   mat_t* file_;
+  matio_compression compression_;
 };
 
 Eigen::MatrixXd example_matrix() {
@@ -281,6 +284,13 @@ TEST_F(MatrixMarketTest, ReadsEmptyMatrix) {
   EXPECT_EQ(sparse.nonZeros(), 0);
 }
 
+TEST_F(MatrixMarketTest, DenseReaderRefusesHugeMatrix) {
+  const std::string path =
+      write_text("huge.mtx", "%%MatrixMarket matrix coordinate real general\n100000 100000 1\n5 7 1.0\n");
+  EXPECT_EQ(hbtrack::read_matrix_market_sparse(path).nonZeros(), 1);
+  expect_error([&] { hbtrack::read_matrix_market(path); }, path, "too large to read as a dense matrix");
+}
+
 TEST_F(MatrixMarketTest, UnderflowingValueReadsAsZero) {
   const std::string path =
       write_text("tiny.mtx", "%%MatrixMarket matrix coordinate real general\n1 2 2\n1 1 1e-400\n1 2 4.9e-324\n");
@@ -359,7 +369,7 @@ const MalformedCase kMalformedCases[] = {
      "'3.5' is not a non-negative integer"},
     {"DimensionTooLarge", "%%MatrixMarket matrix coordinate real general\n3000000000 3 0\n", "exceeds the limit"},
     {"TooManyDeclaredEntries", "%%MatrixMarket matrix coordinate real general\n10 10 1000000001\n1 1 1\n",
-     "more than the limit"},
+     "entries 1000000001 exceeds the limit of 1000000000"},
     {"ArrayTooLarge", "%%MatrixMarket matrix array real general\n100000 100000\n1\n", "exceeds the limit"},
     {"SymmetricNotSquare", "%%MatrixMarket matrix coordinate real symmetric\n2 3 1\n1 1 1\n", "must be square"},
     {"RowOutOfRange", "%%MatrixMarket matrix coordinate real general\n3 3 2\n1 1 1\n4 1 2\n",
@@ -459,6 +469,31 @@ TEST_F(MatFileTest, ReadsDenseAndSparseIdenticallyToMatrixMarket) {
   EXPECT_EQ(Eigen::MatrixXd(hbtrack::read_mat_variable_sparse(mat_path, "K_dense")), dense);
 }
 
+TEST_F(MatFileTest, ReadsV4CompressedV7AndV73Files) {
+  const Eigen::MatrixXd dense = example_matrix();
+  struct Format {
+    const char* filename;
+    mat_ft version;
+    matio_compression compression;
+  };
+  for (const Format& format : {Format{"v4.mat", MAT_FT_MAT4, MAT_COMPRESSION_NONE},
+                               Format{"v7.mat", MAT_FT_MAT5, MAT_COMPRESSION_ZLIB},
+                               Format{"v73.mat", MAT_FT_MAT73, MAT_COMPRESSION_NONE}}) {
+    SCOPED_TRACE(format.filename);
+    const std::string path = path_for(format.filename);
+    mat_t* probe = Mat_CreateVer(path.c_str(), nullptr, format.version);
+    if (probe == nullptr) continue;  // v7.3 needs libmatio built with HDF5
+    Mat_Close(probe);
+    {
+      MatWriter writer(path, format.version, format.compression);
+      writer.dense("D", dense);
+      writer.sparse("S", sparse_from(dense));
+    }
+    EXPECT_EQ(hbtrack::read_mat_variable(path, "D"), dense);
+    EXPECT_EQ(hbtrack::read_mat_variable(path, "S"), dense);
+  }
+}
+
 TEST_F(MatFileTest, VectorsKeepTheirOrientation) {
   const std::string path = path_for("vectors.mat");
   {
@@ -550,6 +585,26 @@ TEST_F(MatFileTest, NonFiniteValueIsRejected) {
     writer.dense("K", matrix);
   }
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': non-finite value at (2, 1)");
+}
+
+// A corrupt dimension must be caught from the header, before libmatio allocates what it claims.
+TEST_F(MatFileTest, ImplausibleSizeInHeaderIsRejected) {
+  const std::string path = path_for("corrupt_dims.mat");
+  {
+    MatWriter writer(path);
+    writer.dense("K", Eigen::MatrixXd::Ones(2, 3));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  // v5 dimensions sub-element: tag (miINT32 = 5, 8 bytes) followed by int32 rows = 2, cols = 3.
+  const std::string dims_element("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x03\0\0\0", 16);
+  const std::size_t at = bytes.find(dims_element);
+  ASSERT_NE(at, std::string::npos);
+  const std::string fifty_million("\x80\xf0\xfa\x02", 4);  // 50'000'000 little-endian
+  bytes.replace(at + 12, 4, fifty_million);
+  write_text("corrupt_dims.mat", bytes);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': header claims 2 x 50000000");
 }
 
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {

@@ -2,6 +2,7 @@
 
 #include <matio.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -25,8 +26,11 @@ namespace {
 
 using Triplet = Eigen::Triplet<double>;
 
-// Eigen's default sparse storage index is int, so every dimension must fit in one.
-constexpr std::int64_t kMaxDimension = std::numeric_limits<int>::max();
+// Building an Eigen sparse matrix allocates (and zeroes) an index per row and per column, so a
+// corrupt size field could demand gigabytes without a single entry behind it. 1e8 is far above
+// any model hbtrack solves and keeps dimensions well inside Eigen's int storage index.
+constexpr std::int64_t kMaxDimension = 100'000'000;
+static_assert(kMaxDimension < std::numeric_limits<int>::max());
 // A corrupt or hostile header must not be able to request an absurd allocation.
 constexpr std::int64_t kMaxEntries = 1'000'000'000;
 // Reserve at most this up front; the vector grows only as real entries arrive.
@@ -50,7 +54,13 @@ std::string printable(std::string_view text) {
   return shown;
 }
 
-std::string single_quoted(std::string_view text) { return "'" + printable(text) + "'"; }
+// Appending instead of "'" + ... sidesteps a GCC 12 -Wrestrict false positive (PR 105329).
+std::string single_quoted(std::string_view text) {
+  std::string quoted(1, '\'');
+  quoted += printable(text);
+  quoted += '\'';
+  return quoted;
+}
 
 // A missing file or a directory would otherwise surface as a confusing parse error.
 void require_readable_file(const std::string& path) {
@@ -157,19 +167,16 @@ class MatrixMarketParser {
       if (size.count != 3)
         fail_line("size line must be 'rows columns entries' (3 integers), found " + std::to_string(size.count) +
                   " fields");
-      rows = parse_size_field(size.token[0], "rows");
-      cols = parse_size_field(size.token[1], "columns");
-      declared_entries = parse_size_field(size.token[2], "entries");
-      if (declared_entries > kMaxEntries)
-        fail_line("size line declares " + std::to_string(declared_entries) + " entries, more than the limit of " +
-                  std::to_string(kMaxEntries));
+      rows = parse_size_field(size.token[0], "rows", kMaxDimension);
+      cols = parse_size_field(size.token[1], "columns", kMaxDimension);
+      declared_entries = parse_size_field(size.token[2], "entries", kMaxEntries);
     } else {
       if (size.count != 2)
         fail_line("size line must be 'rows columns' (2 integers) for array format, found " +
                   std::to_string(size.count) + " fields");
-      rows = parse_size_field(size.token[0], "rows");
-      cols = parse_size_field(size.token[1], "columns");
-      // Both are at most 2^31 - 1, so the product cannot overflow 64 bits.
+      rows = parse_size_field(size.token[0], "rows", kMaxDimension);
+      cols = parse_size_field(size.token[1], "columns", kMaxDimension);
+      // Both are at most kMaxDimension, so the product cannot overflow 64 bits.
       if (rows * cols > kMaxEntries)
         fail_line("array of " + std::to_string(rows) + " x " + std::to_string(cols) +
                   " entries exceeds the limit of " + std::to_string(kMaxEntries));
@@ -239,7 +246,7 @@ class MatrixMarketParser {
       fail_line("unknown format " + single_quoted(format) + " (expected coordinate or array)");
 
     const std::string_view field = banner.token[3];
-    if (equals_ignoring_case(field, "real") || equals_ignoring_case(field, "double"))
+    if (equals_ignoring_case(field, "real"))
       header.field = MmField::real;
     else if (equals_ignoring_case(field, "integer"))
       header.field = MmField::integer;
@@ -271,20 +278,21 @@ class MatrixMarketParser {
     return header;
   }
 
-  std::int64_t parse_size_field(std::string_view token, const char* what) const {
+  std::int64_t parse_size_field(std::string_view token, const char* what, std::int64_t limit) const {
     std::int64_t value = 0;
     if (!parse_integer(token, value) || value < 0)
       fail_line(std::string("size line: ") + what + " " + single_quoted(token) + " is not a non-negative integer");
-    if (value > kMaxDimension && std::string_view(what) != "entries")
+    if (value > limit)
       fail_line(std::string("size line: ") + what + " " + std::to_string(value) + " exceeds the limit of " +
-                std::to_string(kMaxDimension));
+                std::to_string(limit));
     return value;
   }
 
   // Returns the 0-based index.
   Eigen::Index parse_index(std::string_view token, std::int64_t extent, const char* what) const {
     std::int64_t index = 0;
-    if (!parse_integer(token, index)) fail_line(std::string(what) + " index " + single_quoted(token) + " is not an integer");
+    if (!parse_integer(token, index))
+      fail_line(std::string(what) + " index " + single_quoted(token) + " is not an integer");
     if (index < 1 || index > extent)
       fail_line(std::string(what) + " index " + std::to_string(index) + " out of range 1.." + std::to_string(extent));
     return static_cast<Eigen::Index>(index - 1);
@@ -354,24 +362,28 @@ class MatrixMarketParser {
 
   // Column-major, and only the lower triangle (strictly lower when skew) for the symmetric kinds.
   void read_array_entries() {
-    const std::int64_t n = rows_;
-    std::int64_t expected = rows_ * cols_;
-    if (header_.symmetry == MmSymmetry::symmetric) expected = n * (n + 1) / 2;
-    if (header_.symmetry == MmSymmetry::skew_symmetric) expected = n * (n - 1) / 2;
+    const auto first_stored_row = [this](std::int64_t col) -> std::int64_t {
+      switch (header_.symmetry) {
+        case MmSymmetry::general: return 0;
+        case MmSymmetry::symmetric: return col;
+        case MmSymmetry::skew_symmetric: return col + 1;
+      }
+      return 0;
+    };
+    std::int64_t expected = 0;
+    for (std::int64_t col = 0; col < cols_; ++col) expected += std::max<std::int64_t>(rows_ - first_stored_row(col), 0);
     reserve(expected);
-    const std::int64_t first_row_offset = header_.symmetry == MmSymmetry::general     ? -1
-                                          : header_.symmetry == MmSymmetry::symmetric ? 0
-                                                                                      : 1;
+
     std::int64_t read = 0;
     std::string_view line;
     for (std::int64_t col = 0; col < cols_; ++col) {
-      const std::int64_t first_row = first_row_offset < 0 ? 0 : col + first_row_offset;
-      for (std::int64_t row = first_row; row < rows_; ++row) {
+      for (std::int64_t row = first_stored_row(col); row < rows_; ++row) {
         if (!next_data_line(line))
           fail(path_, "file ends after " + std::to_string(read) + " of " + std::to_string(expected) +
                           " array entries");
         const Fields entry = split_fields(line);
-        if (entry.count != 1) fail_line("expected 1 number per line in array format, found " + std::to_string(entry.count));
+        if (entry.count != 1)
+          fail_line("expected 1 number per line in array format, found " + std::to_string(entry.count));
         const double value = parse_value(entry.token[0]);
         ++read;
         if (value != 0.0) add_entry(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(col), value);
@@ -513,7 +525,7 @@ class MatVariableReader {
 
   void check_plausible_size(const matvar_t& info, mat_ft version) const {
     if (info.class_type == MAT_C_SPARSE) return;  // its size depends on nnz, which the header lacks
-    const std::size_t elements = info.dims[0] * info.dims[1];  // both below 2^31
+    const std::size_t elements = info.dims[0] * info.dims[1];  // both at most kMaxDimension
     if (elements > static_cast<std::size_t>(kMaxEntries))
       fail_variable("has " + std::to_string(elements) + " elements, more than the limit of " +
                     std::to_string(kMaxEntries));
@@ -553,7 +565,7 @@ class MatVariableReader {
   std::vector<Triplet> dense_triplets(const matvar_t& variable, std::size_t rows, std::size_t cols) const {
     const ElementLoader loader = loader_for(variable.data_type);
     if (loader.load == nullptr) fail_variable("has an unsupported element type");
-    const std::size_t count = rows * cols;  // both fit in 31 bits
+    const std::size_t count = rows * cols;  // both at most kMaxDimension
     if (count == 0) return {};
     if (variable.data == nullptr || variable.nbytes / loader.width < count)
       fail_variable("holds fewer elements than its size " + std::to_string(rows) + " x " + std::to_string(cols));
@@ -592,7 +604,8 @@ class MatVariableReader {
       if (end < begin || end > nonzeros) fail_variable("corrupt sparse column pointers (not ascending)");
       for (std::size_t k = begin; k < end; ++k) {
         const std::size_t row = sparse->ir[k];
-        if (row >= rows) fail_variable("corrupt sparse row index " + std::to_string(row) + " in column " + std::to_string(col + 1));
+        if (row >= rows)
+          fail_variable("corrupt sparse row index " + std::to_string(row) + " in column " + std::to_string(col + 1));
         const double value = loader.load(sparse->data, k);
         if (!std::isfinite(value)) fail_variable("non-finite value at " + position(row, col));
         triplets.emplace_back(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(col), value);
@@ -603,12 +616,28 @@ class MatVariableReader {
 
   // 1-based, as the user would index it in MATLAB.
   static std::string position(std::size_t row, std::size_t col) {
-    return "(" + std::to_string(row + 1) + ", " + std::to_string(col + 1) + ")";
+    std::string text(1, '(');
+    text += std::to_string(row + 1);
+    text += ", ";
+    text += std::to_string(col + 1);
+    text += ')';
+    return text;
   }
 
   const std::string& path_;
   const std::string& name_;
 };
+
+// A handful of entries can describe a matrix far too big to hold densely; refuse rather than
+// let the dense copy exhaust memory. `where` is the message prefix (path, plus variable for .mat).
+Eigen::MatrixXd to_dense(const std::string& where, const Eigen::SparseMatrix<double>& sparse) {
+  const std::int64_t entries = static_cast<std::int64_t>(sparse.rows()) * static_cast<std::int64_t>(sparse.cols());
+  if (entries > kMaxEntries)
+    fail(where, std::to_string(sparse.rows()) + " x " + std::to_string(sparse.cols()) +
+                    " is too large to read as a dense matrix (limit " + std::to_string(kMaxEntries) +
+                    " entries); use the sparse reader");
+  return Eigen::MatrixXd(sparse);
+}
 
 }  // namespace
 
@@ -620,7 +649,7 @@ Eigen::SparseMatrix<double> read_matrix_market_sparse(const std::string& path) {
 }
 
 Eigen::MatrixXd read_matrix_market(const std::string& path) {
-  return Eigen::MatrixXd(read_matrix_market_sparse(path));
+  return to_dense(path, read_matrix_market_sparse(path));
 }
 
 void write_matrix_market(const std::string& path, const Eigen::SparseMatrix<double>& matrix) {
@@ -659,7 +688,7 @@ Eigen::SparseMatrix<double> read_mat_variable_sparse(const std::string& path, co
 }
 
 Eigen::MatrixXd read_mat_variable(const std::string& path, const std::string& name) {
-  return Eigen::MatrixXd(read_mat_variable_sparse(path, name));
+  return to_dense(path + ": variable " + single_quoted(name), read_mat_variable_sparse(path, name));
 }
 
 }  // namespace hbtrack
