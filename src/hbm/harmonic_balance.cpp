@@ -127,6 +127,47 @@ void HarmonicBalance::add_condensed_linear_part(const VectorXd& x, VectorXd& r, 
   }
 }
 
+void HarmonicBalance::add_element_blocks(ElementSlot& s, double omega, int stride, const std::vector<int>& positions,
+                                          MatrixXd* jacobian, MatrixXd* velocity_jacobian) {
+  // Block (i, j): Gamma^-1 diag(df_i/dx_j) Gamma + omega Gamma^-1 diag(df_i/dv_j) Gamma nabla,
+  // built from the order-2H coefficients of the derivative signals (Toeplitz-plus-Hankel).
+  // With velocity_jacobian, the velocity part Gamma^-1 diag(df_i/dv_j) Gamma goes there instead
+  // (Hill's method keeps it apart). Row harmonic r of element forces is scaled by sigma_r.
+  const ElementResponse& resp = s.response;
+  const int k = static_cast<int>(positions.size());
+  const int nc = basis_.coefficients();
+  coeffs_.noalias() = basis_.product_analysis() * resp.dforce_dx;
+  const bool with_v = resp.dforce_dv.size() > 0;
+  if (with_v) coeffs_v_.noalias() = basis_.product_analysis() * resp.dforce_dv;
+  block_.resize(nc, nc);
+  block_v_.resize(nc, nc);
+  auto scatter = [&](MatrixXd& target, const MatrixXd& block, int row_dof, int col_dof) {
+    for (int cc = 0; cc < nc; ++cc)
+      for (int rr = 0; rr < nc; ++rr) target(rr * stride + row_dof, cc * stride + col_dof) += s.sigma(rr) * block(rr, cc);
+  };
+  for (int i = 0; i < k; ++i) {
+    for (int jd = 0; jd < k; ++jd) {
+      const int col = i + k * jd;
+      const bool x_zero = coeffs_.col(col).isZero(0.0);
+      const bool v_zero = !with_v || coeffs_v_.col(col).isZero(0.0);
+      if (x_zero && v_zero) continue;
+      const int ri = positions[static_cast<size_t>(i)], cj = positions[static_cast<size_t>(jd)];
+      block_.setZero();
+      if (!x_zero) basis_.product_matrix(coeffs_.col(col).data(), block_);
+      if (!v_zero) {
+        basis_.product_matrix(coeffs_v_.col(col).data(), block_v_);
+        if (velocity_jacobian) {
+          scatter(*velocity_jacobian, block_v_, ri, cj);
+        } else {
+          basis_.right_multiply_derivative(block_v_);
+          block_ += omega * block_v_;
+        }
+      }
+      if (jacobian) scatter(*jacobian, block_, ri, cj);
+    }
+  }
+}
+
 void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, MatrixXd* jacobian, VectorXd* r_omega) {
   const int q = retained_dofs();
   const int nc = basis_.coefficients();
@@ -162,33 +203,7 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
         for (int c = 0; c < nc; ++c) (*r_omega)(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
     }
 
-    if (jacobian) {
-      // Block (i, j): Gamma^-1 diag(df_i/dx_j) Gamma + omega Gamma^-1 diag(df_i/dv_j) Gamma nabla,
-      // built from the order-2H coefficients of the derivative signals (Toeplitz-plus-Hankel).
-      coeffs_.noalias() = basis_.product_analysis() * resp.dforce_dx;
-      const bool with_v = resp.dforce_dv.size() > 0;
-      if (with_v) coeffs_v_.noalias() = basis_.product_analysis() * resp.dforce_dv;
-      block_.resize(nc, nc);
-      block_v_.resize(nc, nc);
-      for (int i = 0; i < k; ++i) {
-        for (int jd = 0; jd < k; ++jd) {
-          const int col = i + k * jd;
-          const bool x_zero = coeffs_.col(col).isZero(0.0);
-          const bool v_zero = !with_v || coeffs_v_.col(col).isZero(0.0);
-          if (x_zero && v_zero) continue;
-          block_.setZero();
-          if (!x_zero) basis_.product_matrix(coeffs_.col(col).data(), block_);
-          if (!v_zero) {
-            basis_.product_matrix(coeffs_v_.col(col).data(), block_v_);
-            basis_.right_multiply_derivative(block_v_);
-            block_ += omega * block_v_;
-          }
-          const int ri = s.columns[static_cast<size_t>(i)], cj = s.columns[static_cast<size_t>(jd)];
-          for (int cc = 0; cc < nc; ++cc)
-            for (int rr = 0; rr < nc; ++rr) (*jacobian)(rr * q + ri, cc * q + cj) += s.sigma(rr) * block_(rr, cc);
-        }
-      }
-    }
+    if (jacobian) add_element_blocks(s, omega, q, s.columns, jacobian, nullptr);
   }
   condenser_->update(omega);
   add_condensed_linear_part(x, r, jacobian, r_omega);
@@ -279,6 +294,46 @@ VectorXd HarmonicBalance::nonlinear_forces(const VectorXd& x, double omega) {
       for (int c = 0; c < basis_.coefficients(); ++c) r(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs(c, i);
   }
   return r;
+}
+
+}  // namespace hbtrack
+
+namespace hbtrack {
+
+void HarmonicBalance::hill_matrices(const VectorXd& x, double omega, MatrixXd& jacobian, MatrixXd& damping) {
+  const int n = model_.dofs();
+  const int nc = basis_.coefficients();
+  const int size = n * nc;
+  jacobian.setZero(size, size);
+  damping.setZero(size, size);
+  // Linear part per harmonic: [[K - (jw)^2 M, jw C], [-jw C, K - (jw)^2 M]] in the full
+  // Jacobian; 2w (nabla x M) + I x C in the velocity matrix.
+  for (int j = 0; j <= options_.harmonics; ++j) {
+    const MatrixXd kd = model_.stiffness - (j * omega) * (j * omega) * model_.mass;
+    if (j == 0) {
+      jacobian.block(0, 0, n, n) = kd;
+      damping.block(0, 0, n, n) = model_.damping;
+      continue;
+    }
+    const int a = (2 * j - 1) * n, b = 2 * j * n;
+    jacobian.block(a, a, n, n) = kd;
+    jacobian.block(b, b, n, n) = kd;
+    jacobian.block(a, b, n, n) = j * omega * model_.damping;
+    jacobian.block(b, a, n, n) = -j * omega * model_.damping;
+    damping.block(a, a, n, n) = model_.damping;
+    damping.block(b, b, n, n) = model_.damping;
+    damping.block(a, b, n, n) = 2.0 * omega * j * model_.mass;
+    damping.block(b, a, n, n) = -2.0 * omega * j * model_.mass;
+  }
+  sample(x, omega);
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    const NonlinearElement& element = *elements_[e];
+    ElementSlot& s = slots_[e];
+    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    // The velocity part enters the Jacobian as omega (F_v nabla) and D1 as F_v.
+    add_element_blocks(s, omega, n, element.dofs, &jacobian, nullptr);
+    add_element_blocks(s, omega, n, element.dofs, nullptr, &damping);
+  }
 }
 
 }  // namespace hbtrack

@@ -56,6 +56,11 @@ class HarmonicBalance {
   Eigen::VectorXd linear_solution(double omega);
   // Nonlinear force harmonics on the retained dofs (unknown layout), Lanczos filter included.
   Eigen::VectorXd nonlinear_forces(const Eigen::VectorXd& x, double omega);
+  // Matrices of Hill's quadratic eigenproblem (l^2 D2 + l D1 + J) p = 0 on the full,
+  // uncondensed system (every dof, n(2H+1), harmonic-major), at the solution x (unknown layout):
+  //   jacobian = dR_full/dx_full,  damping = D1 = 2 w (nabla x M) + I x C + Gamma^-1 (df/dv) Gamma.
+  // D2 = I x M is not formed.
+  void hill_matrices(const Eigen::VectorXd& x, double omega, Eigen::MatrixXd& jacobian, Eigen::MatrixXd& damping);
 
  private:
   struct ElementSlot {
@@ -65,6 +70,10 @@ class HarmonicBalance {
     ElementResponse response;
   };
   void sample(const Eigen::VectorXd& x, double omega);
+  // Adds an element's Jacobian blocks; `positions` place its dofs within a harmonic block of
+  // `stride` rows (retained-dof columns for the condensed system, model dofs for the full one).
+  void add_element_blocks(ElementSlot& slot, double omega, int stride, const std::vector<int>& positions,
+                          Eigen::MatrixXd* jacobian, Eigen::MatrixXd* velocity_jacobian);
   void add_condensed_linear_part(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
                                  Eigen::VectorXd* r_omega);
   Eigen::VectorXcd harmonic(const Eigen::VectorXd& x, int j, int dofs) const;
