@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/model/damping.hpp"
@@ -45,8 +46,11 @@ name = "tip"
 dof = "b"
 )";
 
+// Per-process folder: ctest runs the tests of this file in parallel processes.
+fs::path test_dir() { return fs::temp_directory_path() / ("hbtrack_case_tests_" + std::to_string(getpid())); }
+
 fs::path write_case(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "hbtrack_case_tests";
+  const fs::path dir = test_dir();
   fs::create_directories(dir);
   const fs::path p = dir / (name + ".toml");
   std::ofstream(p) << text;
@@ -112,7 +116,7 @@ TEST(CaseFile, MassModeForcingExcitesOnlyThatMode) {
 }
 
 TEST(CaseFile, MatrixFromMatrixMarketFile) {
-  const fs::path dir = fs::temp_directory_path() / "hbtrack_case_tests";
+  const fs::path dir = test_dir();
   fs::create_directories(dir);
   std::ofstream(dir / "K2.mtx") << "%%MatrixMarket matrix coordinate real symmetric\n2 2 3\n1 1 3.0\n2 1 -1.0\n2 2 1.0\n";
   const CaseDefinition c = load_case(write_case("mtx", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"K2.mtx\" }")).string());

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <unistd.h>
 
 #include "test_support.hpp"
 
@@ -19,7 +20,10 @@ struct CliRun {
 };
 
 CliRun run_cli(const std::string& args) {
-  const fs::path err = fs::temp_directory_path() / "hbtrack_cli_stderr.txt";
+  // One file per call: ctest runs tests in parallel processes.
+  static int calls = 0;
+  const fs::path err = fs::temp_directory_path() /
+                       ("hbtrack_cli_stderr_" + std::to_string(getpid()) + "_" + std::to_string(calls++) + ".txt");
   const std::string cmd = std::string(HBTRACK_CLI) + " " + args + " 2> " + err.string() + " > /dev/null";
   const int status = std::system(cmd.c_str());
   std::stringstream ss;
@@ -64,7 +68,7 @@ TEST(Cli, FrcOnDuffingWritesTheContractedResults) {
     EXPECT_LT(sp["index"].get<int>(), rows);
   }
   EXPECT_EQ(rows, s["points"].get<int>());
-  EXPECT_EQ(csv_header(out / "branch.csv"), (std::vector<std::string>{"omega", "max_x", "min_x", "h1_x"}));
+  EXPECT_EQ(csv_header(out / "branch.csv"), (std::vector<std::string>{"omega", "stable", "max_x", "min_x", "h1_x"}));
 }
 
 TEST(Cli, SolveAndSetOverride) {

@@ -59,11 +59,14 @@ nlohmann::json options_json(const CaseDefinition& c, const HarmonicBalance& hbm)
             {"max_angle", co.max_angle},
             {"predictor", co.predictor},
             {"corrector", co.corrector},
-            {"wall_time_limit", co.wall_time_limit}}}};
+            {"wall_time_limit", co.wall_time_limit},
+            {"locate", co.locate}}},
+          {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}}}};
 }
 
 std::vector<std::string> branch_header(const CaseDefinition& c) {
   std::vector<std::string> h{"omega"};
+  if (c.nfrc.stability.enabled()) h.push_back("stable");
   for (const auto& o : c.outputs) {
     h.push_back("max_" + o.name);
     h.push_back("min_" + o.name);
@@ -74,6 +77,7 @@ std::vector<std::string> branch_header(const CaseDefinition& c) {
 
 std::vector<double> branch_row(const RecordedPoint& p) {
   std::vector<double> row{p.omega};
+  if (p.stable >= 0) row.push_back(p.stable);
   for (const auto& v : p.outputs) {
     row.push_back(v.max);
     row.push_back(v.min);

@@ -77,8 +77,18 @@ int run_solve(const CommonOptions& o, double omega) {
                   {"failed_steps", s.converged ? 0 : 1},
                   {"special_points", json::array()}};
   if (s.converged) {
+    RecordedPoint rec = s.recorded;
+    if (c.nfrc.stability.enabled()) {
+      const FloquetResult f = floquet(hbm, s.x, omega, c.nfrc.stability);
+      rec.stable = f.stable ? 1 : 0;
+      summary["stable"] = f.stable;
+      summary["max_floquet_real"] = f.max_real;
+      json multipliers = json::array();
+      for (Eigen::Index i = 0; i < f.multipliers.size(); ++i) multipliers.push_back({f.multipliers(i).real(), f.multipliers(i).imag()});
+      summary["floquet_multipliers"] = multipliers;
+    }
     CsvAppender branch(o.out_dir + "/branch.csv", branch_header(c));
-    branch.append(branch_row(s.recorded));
+    branch.append(branch_row(rec));
     CsvAppender states(o.out_dir + "/states.csv", state_header(hbm.unknowns()));
     states.append(state_row(omega, s.x));
     add_outputs(summary, c, s.recorded);

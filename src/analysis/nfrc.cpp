@@ -12,6 +12,7 @@ void NfrcOptions::validate() const {
   if (omega_end == omega_start) throw std::invalid_argument("continuation.omega_end: must differ from omega_start");
   if (!std::isfinite(length_scale) || length_scale < 0) throw std::invalid_argument("continuation.length_scale: must be >= 0");
   continuation.validate();
+  stability.validate();
 }
 
 RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,
@@ -58,14 +59,20 @@ NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const 
   NfrcProblem problem(hbm, result.length_scale, std::abs(options.omega_end - options.omega_start),
                       force_scale(hbm, reference), adaptive);
   const Eigen::VectorXd x0 = hbm.linear_solution(options.omega_start);
+  FloquetMonitor monitor(hbm, options.stability);
   result.continuation = continue_branch(
       problem, x0, options.omega_start, options.omega_end, options.continuation,
       [&](const BranchPoint& p, int index) {
-        // The last point may replace a point beyond the range end: keep recorded in step.
-        result.recorded.resize(static_cast<size_t>(index));
-        result.recorded.push_back(record_point(hbm, p.u, p.lambda, outputs));
+        RecordedPoint rec = record_point(hbm, p.u, p.lambda, outputs);
+        if (options.stability.enabled()) {
+          const FloquetResult& f = monitor.result_for(p);
+          rec.stable = f.stable ? 1 : 0;
+          rec.max_floquet_real = f.max_real;
+        }
+        result.recorded.push_back(std::move(rec));
         return !observer || observer(p, result.recorded.back(), index);
-      });
+      },
+      options.stability.enabled() ? &monitor : nullptr);
   return result;
 }
 

@@ -28,7 +28,7 @@ void ContinuationOptions::validate() const {
     throw std::invalid_argument("continuation.predictor: must be tangent or secant, got '" + predictor + "'");
   if (corrector != "pseudo_arclength" && corrector != "hypersphere")
     throw std::invalid_argument("continuation.corrector: must be pseudo_arclength or hypersphere, got '" + corrector + "'");
-  if (wall_time_limit < 0) throw std::invalid_argument("continuation.wall_time_limit: must be >= 0");
+  if (!(wall_time_limit >= 0)) throw std::invalid_argument("continuation.wall_time_limit: must be >= 0");
 }
 
 bool ContinuationResult::success() const {
@@ -38,6 +38,13 @@ bool ContinuationResult::success() const {
 namespace {
 
 double inf_norm(const VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+
+// Tangent of the branch and the determinant of the bordered Jacobian used to compute it.
+struct Tangent {
+  VectorXd t;
+  double log_det = 0;  // log |det [J R_lambda; b^T]| (scaled coordinates)
+  int det_sign = 1;
+};
 
 // Scaled-coordinate view of the problem: X = [u ./ su; lambda / sl].
 struct Scaled {
@@ -49,6 +56,7 @@ struct Scaled {
   VectorXd r, r_lambda;
   MatrixXd jac;
   int jacobian_evaluations = 0;
+  int newton_iterations = 0;
 
   // Re-scales scaled vectors after the unknown scale changed to that of the point u.
   void rescale(const VectorXd& u, std::initializer_list<VectorXd*> points, VectorXd& tangent_vec) {
@@ -82,15 +90,115 @@ struct Scaled {
     a.row(m) = row.transpose();
     return a;
   }
-  // Unit tangent of the branch at the last evaluated point, oriented along `reference`.
-  VectorXd tangent(const VectorXd& reference) const {
+  // Unit tangent at the last evaluated point, oriented along `reference` (also the border).
+  Tangent tangent(const VectorXd& reference) const {
     Eigen::PartialPivLU<MatrixXd> lu(bordered(reference));
     VectorXd rhs = VectorXd::Zero(m + 1);
     rhs(m) = 1.0;
-    VectorXd t = lu.solve(rhs);
-    t.normalize();
-    if (t.dot(reference) < 0) t = -t;
-    return t;
+    Tangent out;
+    out.t = lu.solve(rhs);
+    out.t.normalize();
+    if (out.t.dot(reference) < 0) out.t = -out.t;
+    const VectorXd diag = lu.matrixLU().diagonal();
+    out.det_sign = static_cast<int>(lu.permutationP().determinant());
+    for (Eigen::Index i = 0; i < diag.size(); ++i) {
+      out.log_det += std::log(std::abs(diag(i)));
+      if (diag(i) < 0) out.det_sign = -out.det_sign;
+    }
+    return out;
+  }
+
+  // Newton on [R(y); P(y)] = 0 from y, with P the pseudo-arclength plane direction.(y - x) = ds
+  // or the hypersphere |y - x|^2 = ds^2. On success the Jacobian at y is the last evaluated.
+  bool correct(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere,
+               const ContinuationOptions& options, int& iterations) {
+    for (int it = 0; it <= options.max_iterations; ++it) {
+      const double residual = evaluate(y);
+      const VectorXd d = y - x;
+      double p;
+      VectorXd p_row;
+      if (hypersphere) {
+        p = d.squaredNorm() - ds * ds;
+        p_row = 2.0 * d;
+        if (p_row.norm() == 0.0) p_row = direction;
+      } else {
+        p = direction.dot(d) - ds;
+        p_row = direction;
+      }
+      if (!std::isfinite(residual)) return false;
+      if (residual <= options.tolerance && std::abs(p) <= 1e-8 * ds * std::max(1.0, ds)) {
+        iterations = it;
+        return true;
+      }
+      if (it == options.max_iterations) return false;
+      VectorXd rhs(m + 1);
+      rhs.head(m) = -r;
+      rhs(m) = -p;
+      const VectorXd dy = bordered(p_row).partialPivLu().solve(rhs);
+      if (!dy.allFinite()) return false;
+      y += dy;
+      ++newton_iterations;
+    }
+    return false;
+  }
+};
+
+// Test-function values at a point: engine's LP and BP first, then the monitor's.
+struct TestValues {
+  std::vector<double> values;
+  double bp_log_det = 0;  // BP is stored relative to this, so values stay in range
+};
+
+// Zero of one test function between two accepted points, by the Illinois variant of the secant
+// method on the pseudo-arclength coordinate s along the tangent `t0` at the first point.
+struct Locator {
+  Scaled& s;
+  const ContinuationOptions& options;
+  BranchMonitor* monitor;
+
+  // Corrected point at plane coordinate `arc` from x0; fills its tangent. False if Newton fails.
+  bool point_at(const VectorXd& x0, const VectorXd& t0, double arc, VectorXd& y, Tangent& tan) {
+    y = x0 + arc * t0;
+    int iterations = 0;
+    if (!s.correct(y, x0, t0, arc, false, options, iterations)) return false;
+    tan = s.tangent(t0);
+    return true;
+  }
+
+  double value(size_t which, const VectorXd& y, const Tangent& tan, double reference_log_det) {
+    if (which == 0) return tan.t(s.m);
+    if (which == 1) return tan.det_sign * std::exp(std::min(tan.log_det - reference_log_det, 600.0));
+    BranchPoint p{s.unknowns(y), s.parameter(y), tan.t, 0, 0};
+    return monitor->test_functions(p)[which - 2];
+  }
+
+  // Returns true and the located point when the iteration converged.
+  bool locate(size_t which, const VectorXd& x0, const VectorXd& t0, double f0, const VectorXd& x1, double f1,
+              double reference_log_det, VectorXd& y_out, Tangent& tan_out) {
+    double a = 0, fa = f0, b = t0.dot(x1 - x0), fb = f1;
+    const double span = b;
+    int side = 0;
+    for (int it = 0; it < 60; ++it) {
+      const double c = b - fb * (b - a) / (fb - fa);
+      VectorXd y;
+      Tangent tan;
+      if (!(c > a && c < b) || !point_at(x0, t0, c, y, tan)) return false;
+      const double fc = value(which, y, tan, reference_log_det);
+      y_out = y;
+      tan_out = tan;
+      if (fc == 0.0 || std::abs(b - a) <= 1e-12 * span) return true;
+      if ((fc > 0) == (fb > 0)) {
+        b = c, fb = fc;
+        if (side == -1) fa *= 0.5;  // Illinois: halve the stale end so it cannot stall
+        side = -1;
+      } else {
+        a = c, fa = fc;
+        if (side == 1) fb *= 0.5;
+        side = 1;
+      }
+      if (std::abs(b - a) <= 1e-12 * span) return true;
+    }
+    return false;
   }
 };
 
@@ -114,7 +222,8 @@ int newton_at_fixed_parameter(ContinuationProblem& problem, VectorXd& u, double 
 }
 
 ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
-                                   double lambda_end, const ContinuationOptions& options, const PointObserver& observer) {
+                                   double lambda_end, const ContinuationOptions& options, const PointObserver& observer,
+                                   BranchMonitor* monitor) {
   options.validate();
   const auto clock_start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
@@ -123,13 +232,27 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
   Scaled s{problem, problem.unknown_scale(u0), problem.parameter_scale(), problem.residual_scale(), problem.size(), {}, {}, {}};
   const int m = s.m;
   const double direction = lambda_end >= lambda_start ? 1.0 : -1.0;
+  const bool hypersphere = options.corrector == "hypersphere";
+  std::vector<std::string> types{"LP", "BP"};
+  if (monitor)
+    for (const auto& t : monitor->types()) types.push_back(t);
+  Locator locator{s, options, monitor};
 
   auto finish = [&](const std::string& reason) {
     summary.stop_reason = reason;
     summary.points = static_cast<int>(result.points.size());
     summary.jacobian_evaluations = s.jacobian_evaluations;
+    summary.newton_iterations += s.newton_iterations;
     summary.wall_s = elapsed();
     return result;
+  };
+  auto test_values = [&](const BranchPoint& p, const Tangent& tan) {
+    TestValues v;
+    v.bp_log_det = tan.log_det;
+    v.values = {tan.t(m), static_cast<double>(tan.det_sign)};
+    if (monitor)
+      for (double f : monitor->test_functions(p)) v.values.push_back(f);
+    return v;
   };
   auto accept = [&](BranchPoint p) {
     result.points.push_back(std::move(p));
@@ -147,9 +270,12 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
   s.evaluate(x);
   VectorXd lambda_axis = VectorXd::Zero(m + 1);
   lambda_axis(m) = direction;
-  VectorXd t = s.tangent(lambda_axis);
-  if (t(m) * direction < 0) t = -t;
-  if (!accept({u, lambda_start, t, first_iterations, 0.0})) return finish("interrupted");
+  Tangent tan = s.tangent(lambda_axis);
+  if (tan.t(m) * direction < 0) tan.t = -tan.t;
+  VectorXd t = tan.t;
+  BranchPoint first{u, lambda_start, t, first_iterations, 0.0};
+  TestValues previous = test_values(first, tan);
+  if (!accept(first)) return finish("interrupted");
 
   double ds = options.step;
   VectorXd x_prev_prev;  // for the secant predictor
@@ -157,7 +283,6 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
     if (static_cast<int>(result.points.size()) >= options.max_points) return finish("max_points");
     if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return finish("wall_time_limit");
 
-    // Predictor.
     VectorXd direction_vec = t;
     if (options.predictor == "secant" && x_prev_prev.size() == m + 1) {
       direction_vec = x - x_prev_prev;
@@ -165,47 +290,18 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
     }
     const VectorXd prediction = x + ds * direction_vec;
     VectorXd y = prediction;
-
-    // Corrector: Newton on [R; P] = 0.
-    bool converged = false;
     int iterations = 0;
-    for (int it = 0; it <= options.max_iterations; ++it) {
-      const double residual = s.evaluate(y);
-      const VectorXd d = y - x;
-      double p;
-      VectorXd p_row;
-      if (options.corrector == "hypersphere") {
-        p = d.squaredNorm() - ds * ds;
-        p_row = 2.0 * d;
-        if (it == 0 && p_row.norm() == 0.0) p_row = direction_vec;
-      } else {
-        p = direction_vec.dot(d) - ds;
-        p_row = direction_vec;
-      }
-      if (!std::isfinite(residual)) break;
-      if (residual <= options.tolerance && std::abs(p) <= 1e-8 * ds * std::max(1.0, ds)) {
-        converged = true;
-        iterations = it;
-        break;
-      }
-      if (it == options.max_iterations) break;
-      VectorXd rhs(m + 1);
-      rhs.head(m) = -s.r;
-      rhs(m) = -p;
-      const VectorXd dy = s.bordered(p_row).partialPivLu().solve(rhs);
-      if (!dy.allFinite()) break;
-      y += dy;
-      ++summary.newton_iterations;
-    }
+    const bool converged = s.correct(y, x, direction_vec, ds, hypersphere, options, iterations);
+
     // Reject a corrector that did not converge, went back along the branch, jumped away from
-    // the prediction or turned too sharply; the Jacobian at y is the one just evaluated.
-    // At the smallest step a corner is real (a nonsmooth law kinks the branch): go through it.
+    // the prediction or turned too sharply; at the smallest step a corner is real (a
+    // nonsmooth law kinks the branch): go through it.
     const bool smallest_step = ds <= 2 * options.step_min;
-    VectorXd t_new;
     bool accepted = converged && (y - x).dot(t) > 0 && (smallest_step || (y - prediction).norm() <= ds);
+    Tangent tan_new;
     if (accepted) {
-      t_new = s.tangent(t);
-      accepted = smallest_step || std::acos(std::clamp(t.dot(t_new), -1.0, 1.0)) <= options.max_angle;
+      tan_new = s.tangent(t);
+      accepted = smallest_step || std::acos(std::clamp(t.dot(tan_new.t), -1.0, 1.0)) <= options.max_angle;
     }
     if (!accepted) {
       if (!converged) ++summary.failed_steps;
@@ -216,19 +312,35 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
     }
 
     const double arc = (y - x).norm();
-    if (t(m) * t_new(m) < 0) {
-      // The lambda component of the tangent changed sign: a limit point between the two points.
-      // Record it at the point where lambda is extreme (located precisely in a later step).
-      const bool was_rising = t(m) > 0;
-      const bool new_is_extreme = was_rising ? s.parameter(y) >= s.parameter(x) : s.parameter(y) <= s.parameter(x);
-      const int index = static_cast<int>(result.points.size()) - (new_is_extreme ? 0 : 1);
-      result.special_points.push_back({"LP", index, false, new_is_extreme ? s.parameter(y) : s.parameter(x),
-                                       new_is_extreme ? s.unknowns(y) : s.unknowns(x)});
+    BranchPoint point{s.unknowns(y), s.parameter(y), tan_new.t, iterations, arc};
+    const TestValues current = test_values(point, tan_new);
+    // Bracket and locate special points between x and y.
+    const int index_new = static_cast<int>(result.points.size());
+    for (size_t k = 0; k < types.size(); ++k) {
+      const double f0 = k == 1 ? previous.values[1] : previous.values[k];
+      const double f1 = k == 1 ? current.values[1] * std::exp(std::min(current.bp_log_det - previous.bp_log_det, 600.0))
+                               : current.values[k];
+      if (!(f0 * f1 < 0)) continue;
+      SpecialPoint sp{types[k], index_new, false, point.lambda, point.u, point.tangent};
+      VectorXd located;
+      Tangent located_tan;
+      if (options.locate && locator.locate(k, x, t, f0, y, f1, previous.bp_log_det, located, located_tan)) {
+        const double along = t.dot(located - x) / std::max(t.dot(y - x), 1e-300);
+        sp = {types[k], along < 0.5 ? index_new - 1 : index_new, true, s.parameter(located), s.unknowns(located), located_tan.t};
+      } else if (types[k] == "LP") {
+        // Unlocated: the point where lambda is extreme.
+        const bool was_rising = t(m) > 0;
+        if (was_rising ? s.parameter(x) > s.parameter(y) : s.parameter(x) < s.parameter(y))
+          sp = {types[k], index_new - 1, false, s.parameter(x), s.unknowns(x), t};
+      }
+      if (k >= 2 && !monitor->confirm(sp.type, BranchPoint{sp.u, sp.lambda, sp.tangent, 0, 0}, sp.located)) continue;
+      result.special_points.push_back(sp);
     }
+    previous = current;
     x_prev_prev = x;
     x = y;
-    t = t_new;
-    const double lambda = s.parameter(x);
+    t = tan_new.t;
+    const double lambda = point.lambda;
     const bool beyond_end = (lambda - lambda_end) * direction >= 0;
     if (beyond_end) {
       // Land exactly on lambda_end, interpolating the last step.
@@ -242,7 +354,7 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
         return finish("reached_end");
       }
     }
-    if (!accept({s.unknowns(x), lambda, t, iterations, arc})) return finish("interrupted");
+    if (!accept(point)) return finish("interrupted");
     if (beyond_end) return finish("reached_end");
     // The branch turned back and passed below the start of the range.
     if ((lambda - lambda_start) * direction < 0) return finish("left_range");

@@ -460,7 +460,7 @@ void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c)
   const toml::value& cont = in.table(in.require(root, "continuation", "continuation"), "continuation");
   in.check_keys(cont, "continuation",
                 {"omega_start", "omega_end", "length_scale", "step", "step_min", "step_max", "max_points", "max_iterations",
-                 "target_iterations", "tolerance", "max_angle", "predictor", "corrector", "wall_time_limit"});
+                 "target_iterations", "tolerance", "max_angle", "predictor", "corrector", "wall_time_limit", "locate"});
   NfrcOptions& o = c.nfrc;
   ContinuationOptions& co = o.continuation;
   o.omega_start = in.number(in.require(cont, "omega_start", "continuation.omega_start"), "continuation.omega_start");
@@ -477,6 +477,16 @@ void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c)
   co.predictor = in.string_or(cont, "predictor", "continuation.predictor", co.predictor);
   co.corrector = in.string_or(cont, "corrector", "continuation.corrector", co.corrector);
   co.wall_time_limit = in.number_or(cont, "wall_time_limit", "continuation.wall_time_limit", co.wall_time_limit);
+  if (const toml::value* locate = in.find(cont, "locate")) {
+    if (!locate->is_boolean()) in.fail(locate, "continuation.locate", "expected true or false");
+    co.locate = locate->as_boolean();
+  }
+  if (const toml::value* st = in.find(root, "stability")) {
+    in.table(*st, "stability");
+    in.check_keys(*st, "stability", {"method", "monodromy_steps"});
+    o.stability.method = in.string_or(*st, "method", "stability.method", o.stability.method);
+    o.stability.monodromy_steps = in.integer_or(*st, "monodromy_steps", "stability.monodromy_steps", o.stability.monodromy_steps);
+  }
   try {
     o.validate();
   } catch (const std::invalid_argument& e) {
@@ -531,23 +541,47 @@ void apply_overrides(const Reader& in, toml::value& root, const std::vector<std:
       params[name] = value;
       continue;
     }
+    // A path like harmonic_balance.harmonics or elements[0].stiffness (as errors print it).
     toml::value* node = &root;
     std::string path;
     size_t start = 0;
     while (true) {
       const size_t dot = name.find('.', start);
-      const std::string key = name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+      std::string key = name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+      int index = -1;
+      if (const size_t open = key.find('['); open != std::string::npos) {
+        const size_t close = key.find(']', open);
+        if (close != key.size() - 1 || close == open + 1 ||
+            key.find_first_not_of("0123456789", open + 1) != close)
+          throw CaseError("--set " + name + ": expected KEY or KEY[INDEX] in the path, got '" + key + "'");
+        index = std::stoi(key.substr(open + 1, close - open - 1));
+        key = key.substr(0, open);
+      }
       path += (path.empty() ? "" : ".") + key;
-      if (dot == std::string::npos) {
+      const bool last = dot == std::string::npos;
+      if (last && index < 0) {
         (*node)[key] = value;
         break;
       }
       toml::value& next = (*node)[key];
-      if (!next.is_table()) {
-        if (!next.is_uninitialized()) throw CaseError("--set " + name + ": '" + path + "' is not a table");
-        next = toml::table{};
+      if (index >= 0) {
+        if (!next.is_array()) throw CaseError("--set " + name + ": '" + path + "' is not an array");
+        if (index >= static_cast<int>(next.as_array().size()))
+          throw CaseError("--set " + name + ": '" + path + "' has " + std::to_string(next.as_array().size()) + " entries");
+        toml::value& entry = next.as_array()[static_cast<size_t>(index)];
+        if (last) {
+          entry = value;
+          break;
+        }
+        if (!entry.is_table()) throw CaseError("--set " + name + ": '" + path + "[" + std::to_string(index) + "]' is not a table");
+        node = &entry;
+      } else {
+        if (!next.is_table()) {
+          if (!next.is_uninitialized()) throw CaseError("--set " + name + ": '" + path + "' is not a table");
+          next = toml::table{};
+        }
+        node = &next;
       }
-      node = &next;
       start = dot + 1;
     }
   }
@@ -575,7 +609,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   Reader in(path);
   if (!root.is_table()) throw CaseError(path + ": expected a TOML table at the top level");
   apply_overrides(in, root, overrides);
-  in.check_keys(root, "", {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "outputs"});
+  in.check_keys(root, "", {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs"});
   CaseDefinition c;
   c.path = path;
   read_model(in, root, c);

@@ -13,25 +13,44 @@ void finish_floquet(FloquetResult& r, double omega, double tolerance) {
   r.stable = r.max_real <= tolerance;
 }
 
+namespace {
+// Hill's truncation splits a real pair by ~1e-4 in its imaginary part.
+bool is_real(std::complex<double> mu) { return std::abs(mu.imag()) <= 1e-3 * std::abs(mu); }
+
+// (-1)^(crossings outside the circle) * (distance of the nearest candidate to the circle): its
+// sign flips exactly when a candidate crosses the circle, and multipliers deep inside (which a
+// partial eigensolver may or may not return) do not change it.
+template <class Candidate>
+double signed_circle_distance(const Eigen::VectorXcd& mu, Candidate candidate, int per_crossing) {
+  int outside = 0;
+  double nearest = 1.0;
+  for (Eigen::Index i = 0; i < mu.size(); ++i) {
+    if (!candidate(mu(i))) continue;
+    const double modulus = std::abs(mu(i));
+    if (modulus > 1.0) ++outside;
+    nearest = std::min(nearest, std::abs(modulus - 1.0));
+  }
+  return ((outside / per_crossing) % 2 ? -1.0 : 1.0) * nearest;
+}
+}  // namespace
+
 double period_doubling_test(const Eigen::VectorXcd& mu) {
-  std::complex<double> p = 1.0;
-  for (Eigen::Index i = 0; i < mu.size(); ++i) p *= 1.0 + mu(i);
-  return p.real();  // conjugate pairs make the product real
+  return signed_circle_distance(mu, [](std::complex<double> m) { return is_real(m) && m.real() < 0; }, 1);
 }
 
 double neimark_sacker_test(const Eigen::VectorXcd& mu) {
-  // Only complex multipliers: a real pair with mu_i mu_j = 1 is a neutral saddle, not a
-  // bifurcation. Scaled factors keep the product within range for many multipliers.
-  std::complex<double> p = 1.0;
+  // Complex multipliers cross in conjugate pairs. A collision of two real multipliers outside
+  // the circle into a complex pair also flips it: a located NS point is confirmed below.
+  return signed_circle_distance(mu, [](std::complex<double> m) { return !is_real(m); }, 2);
+}
+
+bool has_multiplier_on_unit_circle(const Eigen::VectorXcd& mu, const std::string& type, double tolerance) {
   for (Eigen::Index i = 0; i < mu.size(); ++i) {
-    if (std::abs(mu(i).imag()) <= 1e-9 * std::abs(mu(i))) continue;
-    for (Eigen::Index j = i + 1; j < mu.size(); ++j) {
-      if (std::abs(mu(j).imag()) <= 1e-9 * std::abs(mu(j))) continue;
-      const std::complex<double> f = mu(i) * mu(j) - 1.0;
-      p *= f / std::max(1.0, std::abs(f));
-    }
+    if (type == "PD" && std::abs(mu(i) + 1.0) <= tolerance) return true;
+    if (type == "LP" && std::abs(mu(i) - 1.0) <= tolerance) return true;
+    if (type == "NS" && !is_real(mu(i)) && std::abs(std::abs(mu(i)) - 1.0) <= tolerance) return true;
   }
-  return p.real();
+  return false;
 }
 
 }  // namespace hbtrack

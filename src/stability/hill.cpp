@@ -3,6 +3,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
+#include <complex>
 #include <numeric>
 
 namespace hbtrack {
@@ -27,10 +29,25 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
                    [&](Eigen::Index i, Eigen::Index j) { return std::abs(all(i).imag()) < std::abs(all(j).imag()); });
+  // Keep the 2n of smallest |Im l|, skipping copies l + i k w (k != 0) of one already kept: at a
+  // period doubling the exponents sit on the strip edge, where s + i w/2 and s - i w/2 are the
+  // same family, and keeping both would lose the other exponent crossing there.
   FloquetResult r;
   r.method = "hill";
   r.exponents.resize(2 * n);
-  for (int i = 0; i < 2 * n; ++i) r.exponents(i) = all(order[static_cast<size_t>(i)]);
+  int kept = 0;
+  const double tolerance = 1e-4 * omega;
+  for (size_t i = 0; i < order.size() && kept < 2 * n; ++i) {
+    const std::complex<double> l = all(order[i]);
+    bool copy = false;
+    for (int j = 0; j < kept && !copy; ++j) {
+      const std::complex<double> d = l - r.exponents(j);
+      const double shift = std::round(d.imag() / omega);
+      copy = shift != 0.0 && std::abs(d.real()) <= tolerance && std::abs(d.imag() - shift * omega) <= tolerance;
+    }
+    if (!copy) r.exponents(kept++) = l;
+  }
+  r.exponents.conservativeResize(kept);
   finish_floquet(r, omega, 1e-9 * omega);
   return r;
 }

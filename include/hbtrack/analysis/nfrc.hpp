@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/analysis/stability_monitor.hpp"
 #include "hbtrack/continuation/continuation.hpp"
 #include "hbtrack/hbm/harmonic_balance.hpp"
 #include "hbtrack/hbm/recorded_outputs.hpp"
@@ -18,6 +19,7 @@ struct NfrcOptions {
   // max|x| floored at 1 % of the peak linear response over the range; > 0: this fixed value.
   double length_scale = 0;
   ContinuationOptions continuation;
+  StabilityOptions stability;
   void validate() const;
 };
 
@@ -50,6 +52,8 @@ class NfrcProblem final : public ContinuationProblem {
 struct RecordedPoint {
   double omega = 0;
   std::vector<OutputValues> outputs;  // one per OutputDof
+  int stable = -1;                    // 1 stable, 0 unstable, -1 not computed
+  double max_floquet_real = 0;        // largest real part of the Floquet exponents (1/s)
 };
 
 RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,

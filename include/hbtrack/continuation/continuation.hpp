@@ -40,6 +40,9 @@ struct ContinuationOptions {
   std::string predictor = "tangent";           // tangent | secant (paper eq 12)
   std::string corrector = "pseudo_arclength";  // pseudo_arclength | hypersphere (paper eq 14)
   double wall_time_limit = 0;  // seconds, 0 for none
+  // Refine each bracketed special point onto the zero of its test function (secant along the
+  // branch); false leaves it at the bracketing point.
+  bool locate = true;
   void validate() const;       // throws std::invalid_argument naming the field and the rule
 };
 
@@ -53,10 +56,11 @@ struct BranchPoint {
 
 struct SpecialPoint {
   std::string type;      // LP, BP, PD, NS, ...
-  int index = 0;         // branch point index
-  bool located = false;  // true when refined onto the exact singular point
+  int index = 0;         // the branch point nearest to it
+  bool located = false;  // true when refined onto the zero of its test function
   double lambda = 0;
   Eigen::VectorXd u;
+  Eigen::VectorXd tangent;  // scaled, as BranchPoint::tangent
 };
 
 struct ContinuationSummary {
@@ -79,6 +83,20 @@ struct ContinuationResult {
 // Called for each accepted point (index from 0); return false to stop ("interrupted").
 using PointObserver = std::function<bool(const BranchPoint&, int)>;
 
+// Test functions beyond the engine's own (LP: the lambda component of the tangent; BP: the
+// determinant of the bordered Jacobian [R_u R_lambda; t^T]). A sign change between consecutive
+// points brackets a special point of that type, then located like the built-in ones.
+class BranchMonitor {
+ public:
+  virtual ~BranchMonitor() = default;
+  virtual std::vector<std::string> types() const = 0;  // e.g. {"PD", "NS"}
+  // Called at every accepted point (before the observer) and at trial points while locating.
+  virtual std::vector<double> test_functions(const BranchPoint& p) = 0;
+  // Whether a sign change of one of these test functions is a real special point: called at
+  // the located point (located = true) or, when location failed, at the bracketing point.
+  virtual bool confirm(const std::string& /*type*/, const BranchPoint& /*p*/, bool /*located*/) { return true; }
+};
+
 // Solve R(u, lambda) = 0 at fixed lambda by Newton from u. Returns iterations used, -1 on failure.
 int newton_at_fixed_parameter(ContinuationProblem& problem, Eigen::VectorXd& u, double lambda, double tolerance,
                               int max_iterations);
@@ -86,6 +104,6 @@ int newton_at_fixed_parameter(ContinuationProblem& problem, Eigen::VectorXd& u, 
 // Follows the branch from an approximate solution u0 at lambda_start towards lambda_end.
 ContinuationResult continue_branch(ContinuationProblem& problem, const Eigen::VectorXd& u0, double lambda_start,
                                    double lambda_end, const ContinuationOptions& options,
-                                   const PointObserver& observer = {});
+                                   const PointObserver& observer = {}, BranchMonitor* monitor = nullptr);
 
 }  // namespace hbtrack

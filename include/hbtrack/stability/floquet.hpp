@@ -19,11 +19,15 @@ struct FloquetResult {
 // a multiplier on the unit circle to round-off counts as stable.
 void finish_floquet(FloquetResult& r, double omega, double tolerance);
 
-// Test functions of the multipliers whose sign changes bracket bifurcations:
-//   period doubling: prod (1 + mu_i)   (a real multiplier crosses -1)
-//   Neimark-Sacker:  prod_{i<j} (mu_i mu_j - 1) over multipliers that are not real
-//                    (a complex pair crosses the unit circle)
+// Test functions of the multipliers whose sign changes bracket bifurcations, built from the
+// multipliers near the unit circle only: (-1)^(number outside) times the distance of the
+// nearest one to the circle, over real negative multipliers (period doubling: one crosses -1)
+// or complex ones (Neimark-Sacker: a pair crosses; a real pair colliding outside the circle
+// also flips it, hence the confirmation below).
 double period_doubling_test(const Eigen::VectorXcd& multipliers);
 double neimark_sacker_test(const Eigen::VectorXcd& multipliers);
+// Whether a multiplier sits where a bifurcation of `type` puts it: PD a real one at -1, NS a
+// complex one on the unit circle, LP a real one at +1, within `tolerance`.
+bool has_multiplier_on_unit_circle(const Eigen::VectorXcd& multipliers, const std::string& type, double tolerance);
 
 }  // namespace hbtrack

@@ -1,0 +1,46 @@
+#pragma once
+// Stability of every branch point (Floquet exponents by Hill's method or the monodromy matrix)
+// and the period-doubling / Neimark-Sacker test functions handed to the continuation engine.
+#include <memory>
+#include <string>
+
+#include "hbtrack/continuation/continuation.hpp"
+#include "hbtrack/hbm/harmonic_balance.hpp"
+#include "hbtrack/stability/floquet.hpp"
+
+namespace hbtrack {
+
+struct StabilityOptions {
+  std::string method = "hill";  // hill | monodromy | none
+  int monodromy_steps = 2000;   // RK4 steps per period for the monodromy matrix
+  void validate() const;        // throws std::invalid_argument naming the field
+  bool enabled() const { return method != "none"; }
+};
+
+FloquetResult floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const StabilityOptions& options);
+
+class FloquetMonitor final : public BranchMonitor {
+ public:
+  FloquetMonitor(HarmonicBalance& hbm, StabilityOptions options) : hbm_(hbm), options_(std::move(options)) {}
+  std::vector<std::string> types() const override { return {"PD", "NS"}; }
+  std::vector<double> test_functions(const BranchPoint& p) override;
+  // A located PD/NS point must have its multiplier on the unit circle (to 1e-3, what Hill's
+  // truncation leaves on a nonsmooth law); a bracketed one within 0.05 (the multipliers move by
+  // about that between accepted points).
+  bool confirm(const std::string& type, const BranchPoint& p, bool located) override;
+  // Floquet result at p: reused when p is one of the last points evaluated (the engine
+  // evaluates each accepted point before the observer sees it), computed otherwise.
+  const FloquetResult& result_for(const BranchPoint& p);
+
+ private:
+  struct Entry {
+    double lambda;
+    Eigen::VectorXd u;
+    FloquetResult result;
+  };
+  HarmonicBalance& hbm_;
+  StabilityOptions options_;
+  std::vector<Entry> recent_;  // a few, newest last
+};
+
+}  // namespace hbtrack
