@@ -52,3 +52,154 @@ TEST(Stability, HillAgreesWithMonodromyOnDuffing) {
   }
   EXPECT_GT(checked, 5);
 }
+
+TEST(Stability, DuffingIsUnstableExactlyBetweenItsLimitPoints) {
+  CaseDefinition c;
+  std::unique_ptr<HarmonicBalance> hbm;
+  const NfrcResult r = nfrc_of("examples/duffing.toml", {}, c, hbm);
+  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.special_points.size(), 2u);
+  // On this branch (followed with increasing omega) the middle segment between the folds is
+  // the one travelled backwards: unstable exactly where d omega / ds < 0.
+  int unstable = 0;
+  for (size_t i = 0; i < r.recorded.size(); ++i) {
+    const bool backwards = r.continuation.points[i].tangent(hbm->unknowns()) < 0;
+    ASSERT_GE(r.recorded[i].stable, 0);
+    EXPECT_EQ(r.recorded[i].stable == 0, backwards) << "point " << i << " omega " << r.recorded[i].omega;
+    unstable += r.recorded[i].stable == 0;
+  }
+  EXPECT_GT(unstable, 5);
+}
+
+TEST(Stability, LimitPointsAreLocatedOnTheAnalyticFold) {
+  // With one harmonic the HBM is the one-term balance G(A, w) = ((1 - w^2 + b A)^2 + (c w)^2) A
+  // - F^2 = 0 (A = a^2, b = 3/4 k3), whose folds also satisfy dG/dA = 0.
+  const double c = 0.05, b = 0.075, f = 0.18;
+  auto fold = [&](double w, double a2) {
+    for (int it = 0; it < 50; ++it) {
+      const double d = 1 - w * w + b * a2;
+      const double g = (d * d + c * c * w * w) * a2 - f * f, ga = d * d + c * c * w * w + 2 * b * a2 * d;
+      const double gw = (2 * d * (-2 * w) + 2 * c * c * w) * a2, gaa = 4 * b * d + 2 * b * b * a2;
+      const double gaw = 2 * d * (-2 * w) + 2 * c * c * w + 2 * b * a2 * (-2 * w);
+      Eigen::Matrix2d jac;
+      jac << gw, ga, gaw, gaa;
+      const Eigen::Vector2d step = jac.partialPivLu().solve(Eigen::Vector2d(-g, -ga));
+      w += step(0);
+      a2 += step(1);
+    }
+    return w;
+  };
+  CaseDefinition cd;
+  std::unique_ptr<HarmonicBalance> hbm;
+  const NfrcResult r = nfrc_of("examples/duffing.toml", {"harmonic_balance.harmonics=1", "harmonic_balance.samples=16"}, cd, hbm);
+  ASSERT_EQ(r.continuation.special_points.size(), 2u);
+  for (const SpecialPoint& sp : r.continuation.special_points) {
+    ASSERT_TRUE(sp.located);
+    const double a2 = sp.u(1) * sp.u(1) + sp.u(2) * sp.u(2);
+    EXPECT_NEAR(sp.lambda, fold(sp.lambda, a2), 1e-8 * sp.lambda);
+  }
+}
+
+TEST(Stability, LocatedLimitPointsDoNotDependOnTheSteps) {
+  std::vector<double> reference;
+  for (const char* step : {"0.02", "0.005"}) {
+    CaseDefinition c;
+    std::unique_ptr<HarmonicBalance> hbm;
+    const NfrcResult r = nfrc_of("examples/duffing.toml", {std::string("continuation.step=") + step, std::string("continuation.step_max=") + step}, c, hbm);
+    ASSERT_EQ(r.continuation.special_points.size(), 2u);
+    for (size_t k = 0; k < 2; ++k) {
+      if (reference.size() < 2) reference.push_back(r.continuation.special_points[k].lambda);
+      else EXPECT_NEAR(r.continuation.special_points[k].lambda, reference[k], 1e-8 * reference[k]);
+    }
+  }
+}
+
+namespace {
+// The two-dof contact example with a smooth (sqrt) contact law, so that the harmonic balance
+// converges spectrally and Hill's method can be compared with the monodromy matrix.
+std::vector<std::string> smooth_two_dof(double width, int harmonics) {
+  return {"elements[0].type=\"regularized_contact\"", "elements[0].law=\"sqrt\"",
+          "elements[0].width=" + std::to_string(width), "elements[0].stiffness=10",
+          "harmonic_balance.harmonics=" + std::to_string(harmonics), "harmonic_balance.samples=512"};
+}
+}  // namespace
+
+TEST(Stability, HillAgreesWithMonodromyOnTheTwoDofContactExample) {
+  CaseDefinition c;
+  std::unique_ptr<HarmonicBalance> hbm;
+  // A wide regularisation (2.0) keeps even the in-contact points resolved to 1e-8 at H = 30.
+  std::vector<std::string> sets = smooth_two_dof(2.0, 30);
+  sets.push_back("stability.method=\"none\"");
+  const NfrcResult r = nfrc_of("examples/two_dof_contact.toml", sets, c, hbm);
+  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  int checked = 0, in_contact = 0;
+  const int n = 2, h = 30;
+  for (size_t i = 0; i < r.continuation.points.size(); i += 5) {
+    const BranchPoint& p = r.continuation.points[i];
+    // Well resolved: the last harmonic of the contact dof is below 1e-8 of the first.
+    const VectorXd full = hbm->expand(p.u, p.lambda);
+    const double last = std::hypot(full((2 * h - 1) * n + 1), full(2 * h * n + 1));
+    const double first = std::hypot(full(n + 1), full(2 * n + 1));
+    if (last > 1e-8 * first) continue;
+    const auto mh = sorted_moduli(hill_floquet(*hbm, p.u, p.lambda).multipliers);
+    const auto mm = sorted_moduli(monodromy_floquet(*hbm, p.u, p.lambda, 8000).multipliers);
+    for (size_t k = 0; k < mh.size(); ++k) EXPECT_NEAR(mh[k], mm[k], 1e-6 * mm[k]) << "omega " << p.lambda;
+    ++checked;
+    in_contact += r.recorded[i].outputs[1].max > 0.5;  // beyond the gap
+  }
+  EXPECT_GT(checked, 10);
+  EXPECT_GT(in_contact, 2);
+}
+
+TEST(Stability, PeriodDoublingFoundWhereTheMonodromyMultipliersShowIt) {
+  CaseDefinition c;
+  std::unique_ptr<HarmonicBalance> hbm;
+  const NfrcResult r = nfrc_of("examples/two_dof_contact.toml", smooth_two_dof(0.05, 20), c, hbm);
+  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  // Brackets where a monodromy multiplier crosses -1 between consecutive points.
+  std::vector<size_t> monodromy_pd;
+  double previous = 0;
+  for (size_t i = 0; i < r.continuation.points.size(); ++i) {
+    const BranchPoint& p = r.continuation.points[i];
+    const double test = period_doubling_test(monodromy_floquet(*hbm, p.u, p.lambda, 2000).multipliers);
+    if (i > 0 && test * previous < 0) monodromy_pd.push_back(i);
+    previous = test;
+  }
+  std::vector<const SpecialPoint*> detected;
+  for (const SpecialPoint& sp : r.continuation.special_points)
+    if (sp.type == "PD") detected.push_back(&sp);
+  ASSERT_GE(monodromy_pd.size(), 2u);
+  ASSERT_EQ(detected.size(), monodromy_pd.size());
+  for (size_t k = 0; k < detected.size(); ++k) {
+    // The located point lies between the two points that bracket the monodromy crossing.
+    EXPECT_TRUE(detected[k]->located);
+    EXPECT_GE(detected[k]->index, static_cast<int>(monodromy_pd[k]) - 1);
+    EXPECT_LE(detected[k]->index, static_cast<int>(monodromy_pd[k]));
+  }
+}
+
+TEST(Stability, SymmetryBreakingBranchPointsOfCoupledOscillators) {
+  CaseDefinition c;
+  std::unique_ptr<HarmonicBalance> hbm;
+  const NfrcResult r = nfrc_of("examples/coupled_duffing.toml", {}, c, hbm);
+  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  int branch_points = 0;
+  for (const SpecialPoint& sp : r.continuation.special_points) {
+    if (sp.type != "BP") continue;
+    ++branch_points;
+    ASSERT_TRUE(sp.located);
+    // The response is symmetric (x1 = x2) and the Jacobian's null vector antisymmetric. The
+    // Newton tolerance (1e-9) is amplified in the antisymmetric direction, where the Jacobian is
+    // singular: symmetry holds to 1e-6, not to round-off.
+    VectorXd res, r_omega;
+    Eigen::MatrixXd jac;
+    hbm->evaluate(sp.u, sp.lambda, res, &jac, &r_omega);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(jac, Eigen::ComputeFullV);
+    const VectorXd null = svd.matrixV().col(jac.cols() - 1);
+    const Eigen::Map<const Eigen::MatrixXd> u(sp.u.data(), 2, sp.u.size() / 2), v(null.data(), 2, null.size() / 2);
+    EXPECT_LT((u.row(0) - u.row(1)).norm(), 1e-6 * u.norm());
+    EXPECT_LT((v.row(0) + v.row(1)).norm(), 1e-6);
+    EXPECT_LT(svd.singularValues().tail(1)(0), 1e-7 * svd.singularValues()(0));
+  }
+  EXPECT_EQ(branch_points, 2);
+}
