@@ -203,3 +203,26 @@ TEST(Stability, SymmetryBreakingBranchPointsOfCoupledOscillators) {
   }
   EXPECT_EQ(branch_points, 2);
 }
+
+TEST(Stability, ArnoldiFindsTheRightmostHillExponents) {
+  // The chain example (8 dofs, H = 10: a first-order Hill matrix of 336) at points of its NFRC:
+  // shift-invert Arnoldi must return the exponents that decide stability, equal to the dense
+  // solver's. Exponents of one family share their real part, so compare the largest real
+  // parts (to the eigensolvers' accuracy, 1e-8 of omega) and the stable flags.
+  CaseDefinition c;
+  std::unique_ptr<HarmonicBalance> hbm;
+  const NfrcResult r = nfrc_of("examples/chain_contact.toml",
+                               {"harmonic_balance.harmonics=10", "harmonic_balance.samples=128", "stability.method=\"none\""}, c, hbm);
+  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  int unstable = 0;
+  for (size_t i = 0; i < r.continuation.points.size(); i += 9) {
+    const BranchPoint& p = r.continuation.points[i];
+    const FloquetResult dense = hill_floquet(*hbm, p.u, p.lambda, "dense");
+    const FloquetResult arnoldi = hill_floquet(*hbm, p.u, p.lambda, "arnoldi");
+    ASSERT_GT(arnoldi.exponents.size(), 0);
+    EXPECT_NEAR(arnoldi.max_real, dense.max_real, 1e-8 * p.lambda) << "omega " << p.lambda;
+    EXPECT_EQ(arnoldi.stable, dense.stable) << "omega " << p.lambda;
+    unstable += !dense.stable;
+  }
+  EXPECT_GT(unstable, 0) << "the comparison should include unstable points";
+}

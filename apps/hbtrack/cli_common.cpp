@@ -61,7 +61,7 @@ nlohmann::json options_json(const CaseDefinition& c, const HarmonicBalance& hbm)
             {"corrector", co.corrector},
             {"wall_time_limit", co.wall_time_limit},
             {"locate", co.locate}}},
-          {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}}}};
+          {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", c.nfrc.stability.hill_solver}}}};
 }
 
 std::vector<std::string> branch_header(const CaseDefinition& c) {

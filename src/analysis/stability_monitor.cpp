@@ -10,13 +10,15 @@ namespace hbtrack {
 void StabilityOptions::validate() const {
   if (method != "hill" && method != "monodromy" && method != "none")
     throw std::invalid_argument("stability.method: must be hill, monodromy or none, got '" + method + "'");
+  if (hill_solver != "auto" && hill_solver != "dense" && hill_solver != "arnoldi")
+    throw std::invalid_argument("stability.hill_solver: must be auto, dense or arnoldi, got '" + hill_solver + "'");
   if (monodromy_steps < 10 || monodromy_steps > 10000000)
     throw std::invalid_argument("stability.monodromy_steps: must be in [10, 10000000]");
 }
 
 FloquetResult floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const StabilityOptions& options) {
   if (options.method == "monodromy") return monodromy_floquet(hbm, x, omega, options.monodromy_steps);
-  return hill_floquet(hbm, x, omega);
+  return hill_floquet(hbm, x, omega, options.hill_solver);
 }
 
 const FloquetResult& FloquetMonitor::result_for(const BranchPoint& p) {

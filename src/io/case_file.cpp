@@ -483,7 +483,8 @@ void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c)
   }
   if (const toml::value* st = in.find(root, "stability")) {
     in.table(*st, "stability");
-    in.check_keys(*st, "stability", {"method", "monodromy_steps"});
+    in.check_keys(*st, "stability", {"method", "monodromy_steps", "hill_solver"});
+    o.stability.hill_solver = in.string_or(*st, "hill_solver", "stability.hill_solver", o.stability.hill_solver);
     o.stability.method = in.string_or(*st, "method", "stability.method", o.stability.method);
     o.stability.monodromy_steps = in.integer_or(*st, "monodromy_steps", "stability.monodromy_steps", o.stability.monodromy_steps);
   }

@@ -2,6 +2,8 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <Spectra/GenEigsRealShiftSolver.h>
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -9,22 +11,94 @@
 
 namespace hbtrack {
 
-FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega) {
-  const int n = hbm.model().dofs();
-  Eigen::MatrixXd jacobian, damping;
-  hbm.hill_matrices(x, omega, jacobian, damping);
-  const Eigen::Index size = jacobian.rows();
-  const int blocks = hbm.basis().coefficients();
-  // First-order form [p; l p]: A = [[0, I], [-D2^-1 J, -D2^-1 D1]] with D2 = I x M.
-  const Eigen::LLT<Eigen::MatrixXd> mass(hbm.model().mass);
+namespace {
+
+// y = (A - sigma I)^-1 x for the first-order Hill matrix A = [[0, I], [-D2^-1 J, -D2^-1 D1]]
+// without forming A: y1 = -L(sigma)^-1 (D2 x2 + (D1 + sigma D2) x1), y2 = x1 + sigma y1, with
+// the quadratic pencil L(sigma) = J + sigma D1 + sigma^2 D2 factorised once.
+class HillShiftInvert {
+ public:
+  using Scalar = double;
+  HillShiftInvert(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping, const Eigen::MatrixXd& mass, int blocks)
+      : j_(jacobian), d1_(damping), m_(mass), blocks_(blocks), size_(jacobian.rows()) {}
+  Eigen::Index rows() const { return 2 * size_; }
+  Eigen::Index cols() const { return 2 * size_; }
+  void set_shift(double sigma) {
+    sigma_ = sigma;
+    Eigen::MatrixXd pencil = j_ + sigma * d1_;
+    const Eigen::Index n = m_.rows();
+    for (int b = 0; b < blocks_; ++b) pencil.block(b * n, b * n, n, n) += sigma * sigma * m_;
+    lu_.compute(pencil);
+  }
+  void perform_op(const double* x_in, double* y_out) const {
+    const Eigen::Map<const Eigen::VectorXd> x1(x_in, size_), x2(x_in + size_, size_);
+    Eigen::Map<Eigen::VectorXd> y1(y_out, size_), y2(y_out + size_, size_);
+    Eigen::VectorXd rhs = d1_ * x1 + mass_times(x2 + sigma_ * x1);
+    y1 = -lu_.solve(rhs);
+    y2 = x1 + sigma_ * y1;
+  }
+
+ private:
+  Eigen::VectorXd mass_times(const Eigen::VectorXd& v) const {  // (I x M) v
+    const Eigen::Index n = m_.rows();
+    Eigen::VectorXd out(v.size());
+    for (int b = 0; b < blocks_; ++b) out.segment(b * n, n).noalias() = m_ * v.segment(b * n, n);
+    return out;
+  }
+  const Eigen::MatrixXd& j_;
+  const Eigen::MatrixXd& d1_;
+  const Eigen::MatrixXd& m_;
+  int blocks_;
+  Eigen::Index size_;
+  double sigma_ = 0;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+};
+
+// Hill's eigenvalues nearest a small real shift (eigenvalue families l + i k w share their real
+// part, so the ones near the imaginary axis with small |Im l| decide stability). Empty when
+// the Arnoldi iteration did not converge.
+Eigen::VectorXcd eigenvalues_near_axis(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping,
+                                       const Eigen::MatrixXd& mass, int blocks, int count, double omega) {
+  HillShiftInvert op(jacobian, damping, mass, blocks);
+  const Eigen::Index dimension = 2 * jacobian.rows();
+  const Eigen::Index ncv = std::min<Eigen::Index>(dimension, std::max<Eigen::Index>(2 * count + 1, 20));
+  // A shift a little off zero keeps the pencil regular at a limit point, where J is singular.
+  Spectra::GenEigsRealShiftSolver<HillShiftInvert> solver(op, count, ncv, 1e-3 * omega);
+  solver.init();
+  solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
+  if (solver.info() != Spectra::CompInfo::Successful) return {};
+  return solver.eigenvalues();
+}
+
+// Every eigenvalue of the first-order form [p; l p]: A = [[0, I], [-D2^-1 J, -D2^-1 D1]].
+Eigen::VectorXcd all_eigenvalues(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping,
+                                 const Eigen::MatrixXd& mass_matrix, int blocks) {
+  const Eigen::Index size = jacobian.rows(), n = mass_matrix.rows();
+  const Eigen::LLT<Eigen::MatrixXd> mass(mass_matrix);
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * size, 2 * size);
   a.topRightCorner(size, size).setIdentity();
   for (int b = 0; b < blocks; ++b) {
     a.block(size + b * n, 0, n, size) = -mass.solve(jacobian.middleRows(b * n, n));
     a.block(size + b * n, size, n, size) = -mass.solve(damping.middleRows(b * n, n));
   }
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, false);
-  const Eigen::VectorXcd all = solver.eigenvalues();
+  return Eigen::EigenSolver<Eigen::MatrixXd>(a, false).eigenvalues();
+}
+
+}  // namespace
+
+FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const std::string& solver) {
+  const int n = hbm.model().dofs();
+  Eigen::MatrixXd jacobian, damping;
+  hbm.hill_matrices(x, omega, jacobian, damping);
+  const Eigen::Index size = jacobian.rows();
+  const int blocks = hbm.basis().coefficients();
+  // Dense QR on the whole spectrum while it is cheap; beyond, the 2n eigenvalues nearest the
+  // axis by shift-invert Arnoldi (one LU of the n(2H+1) pencil instead of a 2n(2H+1) QR).
+  constexpr Eigen::Index kDenseLimit = 300;
+  Eigen::VectorXcd all;
+  const bool arnoldi = solver == "arnoldi" || (solver == "auto" && 2 * size > kDenseLimit);
+  if (arnoldi) all = eigenvalues_near_axis(jacobian, damping, hbm.model().mass, blocks, std::min<int>(2 * n, static_cast<int>(size) - 2), omega);
+  if (all.size() == 0) all = all_eigenvalues(jacobian, damping, hbm.model().mass, blocks);
   std::vector<Eigen::Index> order(static_cast<size_t>(all.size()));
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),

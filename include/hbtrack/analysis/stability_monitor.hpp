@@ -13,6 +13,7 @@ namespace hbtrack {
 struct StabilityOptions {
   std::string method = "hill";  // hill | monodromy | none
   int monodromy_steps = 2000;   // RK4 steps per period for the monodromy matrix
+  std::string hill_solver = "auto";  // auto | dense | arnoldi (see stability/hill.hpp)
   void validate() const;        // throws std::invalid_argument naming the field
   bool enabled() const { return method != "none"; }
 };
