@@ -10,6 +10,8 @@ packages=(
   nlohmann-json3-dev     # summary.json
   libtoml11-dev          # case files
   libmatio-dev           # MATLAB .mat matrices
+  libspectra-dev         # sparse/shift-invert eigensolvers (Hill, Craig-Bampton)
+  libboost-dev           # Boost.odeint (header-only): the Dormand-Prince time integrator
   libgtest-dev           # tests
   libbenchmark-dev       # bench/
   python3-numpy python3-matplotlib  # plots of the main job
