@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build build -j "$(nproc)"
 mkdir -p results
-for example in duffing two_dof_contact chain_contact; do
+for example in duffing two_dof_contact coupled_duffing chain_contact; do
   ./build/hbtrack frc "examples/$example.toml" -o "results/$example"
   /usr/bin/python3 python/plot_branch.py "results/$example"
 done

@@ -46,7 +46,8 @@ int run_frc(const CommonOptions& o) {
   for (const auto& sp : r.continuation.special_points) {
     json j = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
     j["parameters"] = summary["options"]["parameters"];
-    if (sp.index >= 0 && static_cast<size_t>(sp.index) < r.recorded.size()) add_outputs(j, c, r.recorded[static_cast<size_t>(sp.index)]);
+    // Outputs of the special point itself (a located one lies between two rows of branch.csv).
+    add_outputs(j, c, record_point(hbm, sp.u, sp.lambda, c.outputs));
     special.push_back(j);
   }
   summary["special_points"] = special;
