@@ -17,6 +17,7 @@
 
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/stability/hill.hpp"
 
 namespace {
 
@@ -59,7 +60,8 @@ std::string chain_case(int n, int harmonics, const std::string& condensation) {
                 "[parameters]\namplitude = 1.0\nclearance = 0.05\n"
                 "[[elements]]\ntype = \"unilateral_spring\"\ndofs = [\"x%d\"]\nstiffness = 2.0\ngap = \"clearance\"\n"
                 "[harmonic_balance]\nharmonics = %d\nsamples = %d\ncondensation = \"%s\"\n"
-                "[continuation]\nomega_start = %.17g\nomega_end = %.17g\nstep = 0.02\n",
+                "[continuation]\nomega_start = %.17g\nomega_end = %.17g\nstep = 0.02\n"
+                "[stability]\nmethod = \"none\"\n",
                 n, n, n, harmonics, samples, condensation.c_str(), 0.6 * omega1, 1.6 * omega1);
   return text;
 }
@@ -67,7 +69,7 @@ std::string chain_case(int n, int harmonics, const std::string& condensation) {
 struct Row {
   int n, harmonics, unknowns, points, newton, evaluations;
   std::string condensation, stop;
-  double wall, lu, per_evaluation;
+  double wall, lu, per_evaluation, stability;
 };
 
 Row measure(int n, int harmonics, const std::string& condensation) {
@@ -84,8 +86,21 @@ Row measure(int n, int harmonics, const std::string& condensation) {
   const hbtrack::NfrcResult r = hbtrack::compute_nfrc(hbm, c.nfrc, {});
   const double wall = seconds_since(t0);
   const auto& s = r.continuation.summary;
+  // Stability by Hill's method (auto: dense QR or shift-invert Arnoldi) on ten points spread
+  // along the branch, timed apart: its cost per point is set against the continuation's.
+  // Hill works on the full system: beyond a first-order size of 3000 (n = 128, H = 20) one
+  // point takes seconds and it is not timed here (NaN in the table).
+  double stability = std::nan("");
+  if (2 * n * (2 * harmonics + 1) <= 3000) {
+    const size_t stride = std::max<size_t>(1, r.continuation.points.size() / 10);
+    int timed = 0;
+    const auto t1 = Clock::now();
+    for (size_t i = 0; i < r.continuation.points.size(); i += stride, ++timed)
+      hbtrack::hill_floquet(hbm, r.continuation.points[i].u, r.continuation.points[i].lambda);
+    stability = seconds_since(t1) / timed * std::max(1, s.points);  // per point x points
+  }
   Row row{n, harmonics, hbm.unknowns(), s.points, s.newton_iterations, s.jacobian_evaluations, hbm.condensation_method(), s.stop_reason,
-          wall, dense_lu_seconds(hbm.unknowns() + 1), 0};
+          wall, dense_lu_seconds(hbm.unknowns() + 1), 0, stability};
   row.per_evaluation = wall / std::max(1, s.jacobian_evaluations);
   return row;
 }
@@ -103,11 +118,11 @@ int main(int argc, char** argv) {
   if (!quick)
     for (const char* method : {"schur", "none"}) rows.push_back(measure(32, 10, method));
 
-  std::printf("| n | H | condensation | unknowns | points | Newton it. | Jacobians | NFRC wall [s] | per Jacobian [ms] | dense LU [ms] | per Jacobian / LU | stop |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| n | H | condensation | unknowns | points | Newton it. | Jacobians | NFRC wall [s] | per Jacobian [ms] | dense LU [ms] | per Jacobian / LU | Hill per point [ms] | stability / continuation | stop |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows)
-    std::printf("| %d | %d | %s | %d | %d | %d | %d | %.4f | %.4f | %.4f | %.1f | %s |\n", r.n, r.harmonics, r.condensation.c_str(),
-                r.unknowns, r.points, r.newton, r.evaluations, r.wall, 1e3 * r.per_evaluation, 1e3 * r.lu, r.per_evaluation / r.lu,
-                r.stop.c_str());
+    std::printf("| %d | %d | %s | %d | %d | %d | %d | %.4f | %.4f | %.4f | %.1f | %.3f | %.1f | %s |\n", r.n, r.harmonics,
+                r.condensation.c_str(), r.unknowns, r.points, r.newton, r.evaluations, r.wall, 1e3 * r.per_evaluation, 1e3 * r.lu,
+                r.per_evaluation / r.lu, 1e3 * r.stability / std::max(1, r.points), r.stability / r.wall, r.stop.c_str());
   return 0;
 }
