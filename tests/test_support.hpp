@@ -51,7 +51,7 @@ struct ContactFixture {
 inline ContactFixture contact_fixture(bool general_damping, double lanczos) {
   ContactFixture f;
   const int n = 9;
-  for (int i = 0; i < n; ++i) f.model.dof_names.push_back("d" + std::to_string(i));
+  for (int i = 0; i < n; ++i) f.model.dof_names.push_back(std::string(1, 'd') += std::to_string(i));  // not "d" + ...: GCC 12 -Wrestrict false positive
   Eigen::MatrixXd a = Eigen::MatrixXd::Identity(n, n);
   for (int i = 0; i + 1 < n; ++i) a(i, i + 1) = a(i + 1, i) = 0.2;
   f.model.mass = a;

@@ -1,5 +1,6 @@
 // `hbtrack frc`: the NFRC by arc-length continuation; `hbtrack solve`: one periodic solution.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "cli_common.hpp"
