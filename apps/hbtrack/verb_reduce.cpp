@@ -1,0 +1,208 @@
+// `hbtrack reduce`: Craig-Bampton reduction of a full model (Matrix Market, .mat or CalculiX
+// matrices) onto the translations of boundary nodes in their local cylindrical frames, plus
+// fixed-interface modes. Formats and outputs: docs/reduction.md.
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+#include "cli_common.hpp"
+#include "hbtrack/io/calculix_reader.hpp"
+#include "hbtrack/io/matrix_readers.hpp"
+#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/model/craig_bampton.hpp"
+#include "hbtrack/model/sparse_modes.hpp"
+#include "node_table.hpp"
+
+namespace hbtrack::cli {
+
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+struct ReduceOptions {
+  std::string mass, stiffness, calculix, nodes, boundary_file, out_dir;
+  std::vector<int> boundary;
+  int modes = 12;
+  int compare = 6;
+  bool quiet = false;
+};
+
+// The full model: matrices and, per row, the node and direction (0 x, 1 y, 2 z) it moves.
+struct FullModel {
+  SparseMatrix mass, stiffness;
+  std::map<std::pair<int, int>, int> row_of;  // (node id, direction) -> row
+};
+
+// "file.mtx", or "file.mat:VARIABLE" for a variable of a MATLAB file.
+SparseMatrix read_matrix_argument(const std::string& spec, const char* option) {
+  const auto colon = spec.rfind(':');
+  const bool mat_variable = colon != std::string::npos && colon > 4 && spec.compare(colon - 4, 4, ".mat") == 0;
+  if (!mat_variable && spec.size() > 4 && spec.compare(spec.size() - 4, 4, ".mat") == 0)
+    throw CaseError(std::string(option) + ": " + spec + ": name the variable, e.g. " + spec + ":K");
+  try {
+    if (mat_variable) return read_mat_variable_sparse(spec.substr(0, colon), spec.substr(colon + 1));
+    return read_matrix_market_sparse(spec);
+  } catch (const std::runtime_error& e) {
+    throw CaseError(std::string(option) + ": " + e.what());
+  }
+}
+
+FullModel read_full_model(const ReduceOptions& o, const std::vector<NodeRecord>& nodes) {
+  FullModel model;
+  if (!o.calculix.empty()) {
+    CalculixMatrices c;
+    try {
+      c = read_calculix_matrices(o.calculix);
+    } catch (const std::runtime_error& e) {
+      throw CaseError(std::string("--calculix: ") + e.what());
+    }
+    model.mass = std::move(c.mass);
+    model.stiffness = std::move(c.stiffness);
+    for (size_t row = 0; row < c.dofs.size(); ++row)
+      if (c.dofs[row].direction >= 1 && c.dofs[row].direction <= 3)
+        model.row_of[{c.dofs[row].node, c.dofs[row].direction - 1}] = static_cast<int>(row);
+    return model;
+  }
+  model.mass = read_matrix_argument(o.mass, "--mass");
+  model.stiffness = read_matrix_argument(o.stiffness, "--stiffness");
+  // Matrix files carry no dof names: rows follow nodes.csv, three translations per node.
+  if (model.stiffness.rows() != 3 * static_cast<Eigen::Index>(nodes.size()))
+    throw CaseError(o.nodes + ": lists " + std::to_string(nodes.size()) + " nodes, the matrices have " +
+                    std::to_string(model.stiffness.rows()) + " rows (expected 3 per node, in the table's order)");
+  for (size_t k = 0; k < nodes.size(); ++k)
+    for (int d = 0; d < 3; ++d) model.row_of[{nodes[k].id, d}] = static_cast<int>(3 * k) + d;
+  return model;
+}
+
+void check_square_pair(const FullModel& m) {
+  const Eigen::Index n = m.stiffness.rows();
+  if (m.stiffness.cols() != n || m.mass.rows() != n || m.mass.cols() != n)
+    throw CaseError("reduce: M (" + std::to_string(m.mass.rows()) + "x" + std::to_string(m.mass.cols()) + ") and K (" +
+                    std::to_string(n) + "x" + std::to_string(m.stiffness.cols()) + ") must be square and of the same size");
+}
+
+json to_json(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
+
+int run_reduce(const ReduceOptions& o) {
+  const auto t0 = Clock::now();
+  if (o.calculix.empty() == (o.mass.empty() && o.stiffness.empty()))
+    throw CaseError("reduce: give either --mass and --stiffness, or --calculix JOBNAME");
+  if (o.calculix.empty() && (o.mass.empty() || o.stiffness.empty())) throw CaseError("reduce: --mass and --stiffness go together");
+  if (o.boundary.empty() == o.boundary_file.empty()) throw CaseError("reduce: give exactly one of --boundary and --boundary-file");
+  if (o.modes < 0) throw CaseError("--modes: must be >= 0");
+
+  const std::vector<NodeRecord> nodes = read_node_table(o.nodes);
+  const std::vector<int> boundary_ids = o.boundary.empty() ? read_node_list(o.boundary_file) : o.boundary;
+  const FullModel full = read_full_model(o, nodes);
+  check_square_pair(full);
+  const double read_s = seconds_since(t0);
+
+  std::map<int, const NodeRecord*> node_by_id;
+  for (const NodeRecord& n : nodes) node_by_id[n.id] = &n;
+  std::vector<CraigBamptonBoundaryNode> boundary;
+  std::vector<NodeRecord> boundary_records;
+  std::vector<CylindricalFrame> frames;
+  for (int id : boundary_ids) {
+    const auto found = node_by_id.find(id);
+    if (found == node_by_id.end()) throw CaseError(o.nodes + ": boundary node " + std::to_string(id) + " is not in the node table");
+    CraigBamptonBoundaryNode b;
+    for (int d = 0; d < 3; ++d) {
+      const auto row = full.row_of.find({id, d});
+      if (row == full.row_of.end())
+        throw CaseError("reduce: boundary node " + std::to_string(id) + " has no free " + "xyz"[d] + " translation in the matrices");
+      b.dofs[static_cast<size_t>(d)] = row->second;
+    }
+    try {
+      frames.push_back(cylindrical_frame_about_x(found->second->position));
+    } catch (const std::invalid_argument& e) {
+      throw CaseError("reduce: boundary node " + std::to_string(id) + ": " + e.what());
+    }
+    b.frame = frames.back().directions;
+    boundary.push_back(b);
+    boundary_records.push_back(*found->second);
+  }
+
+  const auto t_reduce = Clock::now();
+  CraigBamptonModel rom;
+  try {
+    rom = craig_bampton(full.mass, full.stiffness, boundary, o.modes);
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(std::string("reduce: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    throw RunFailed{std::string("reduce: ") + e.what()};
+  }
+  const double reduce_s = seconds_since(t_reduce);
+
+  const NormalModes reduced_modes = normal_modes(rom.mass, rom.stiffness);
+  const auto t_full = Clock::now();
+  const int compare = static_cast<int>(std::min<Eigen::Index>({Eigen::Index{o.compare}, reduced_modes.frequencies.size(), full.stiffness.rows()}));
+  Eigen::VectorXd full_frequencies;
+  if (compare > 0) {
+    try {
+      full_frequencies = lowest_sparse_modes(full.stiffness, full.mass, compare).frequencies;
+    } catch (const std::runtime_error& e) {
+      throw RunFailed{std::string("reduce: full-model modes: ") + e.what()};
+    }
+  }
+  const double full_modes_s = seconds_since(t_full);
+
+  ensure_directory(o.out_dir);
+  write_matrix_market(o.out_dir + "/M.mtx", rom.mass.sparseView());
+  write_matrix_market(o.out_dir + "/K.mtx", rom.stiffness.sparseView());
+  write_matrix_market(o.out_dir + "/T.mtx", rom.transformation.sparseView());
+  write_boundary_nodes(o.out_dir + "/boundary_nodes.csv", boundary_records, frames);
+
+  json errors = json::array();
+  for (int r = 0; r < compare; ++r) errors.push_back(reduced_modes.frequencies(r) / full_frequencies(r) - 1.0);
+  json summary = {
+      {"verb", "reduce"},
+      {"inputs", o.calculix.empty() ? json{{"mass", o.mass}, {"stiffness", o.stiffness}, {"nodes", o.nodes}}
+                                    : json{{"calculix", o.calculix}, {"nodes", o.nodes}}},
+      {"sizes",
+       {{"full_dofs", full.stiffness.rows()},
+        {"boundary_nodes", boundary.size()},
+        {"boundary_dofs", 3 * boundary.size()},
+        {"fixed_interface_modes", o.modes},
+        {"reduced_dofs", rom.mass.rows()}}},
+      {"boundary_node_ids", boundary_ids},
+      {"dof_names", rom.dof_names},
+      {"natural_frequencies", to_json(reduced_modes.frequencies)},
+      {"fixed_interface_frequencies", to_json(rom.fixed_interface_frequencies)},
+      {"full_model", {{"natural_frequencies", to_json(full_frequencies)}, {"relative_difference_of_reduced", errors}}},
+      {"timings", {{"wall_s", seconds_since(t0)}, {"read_s", read_s}, {"reduction_s", reduce_s}, {"full_modes_s", full_modes_s}}}};
+  write_json_atomically(o.out_dir + "/summary.json", summary);
+  if (!o.quiet) {
+    std::fprintf(stderr, "reduce: %lld -> %lld dofs (%zu boundary nodes, %d modes) in %.2f s -> %s\n", static_cast<long long>(full.stiffness.rows()),
+                 static_cast<long long>(rom.mass.rows()), boundary.size(), o.modes, seconds_since(t0), o.out_dir.c_str());
+    for (int r = 0; r < compare; ++r)
+      std::fprintf(stderr, "  mode %d: full %.2f rad/s, reduced %.2f rad/s (%+.3f %%)\n", r + 1, full_frequencies(r), reduced_modes.frequencies(r),
+                   100.0 * errors[static_cast<size_t>(r)].get<double>());
+  }
+  return 0;
+}
+
+void add_reduce_verbs(CLI::App& app, VerbList& verbs) {
+  static ReduceOptions options;
+  CLI::App* reduce = app.add_subcommand("reduce", "Craig-Bampton reduction onto boundary nodes (local r, t, z) and fixed-interface modes");
+  reduce->add_option("--mass", options.mass, "mass matrix: M.mtx (Matrix Market) or model.mat:M (MATLAB variable)");
+  reduce->add_option("--stiffness", options.stiffness, "stiffness matrix: K.mtx or model.mat:K");
+  reduce->add_option("--calculix", options.calculix, "CalculiX matrix storage: reads JOBNAME.sti, JOBNAME.mas, JOBNAME.dof");
+  reduce->add_option("--nodes", options.nodes, "node table node,x,y,z (for matrix files: rows 3k..3k+2 are node k's x, y, z)")->required();
+  reduce->add_option("--boundary", options.boundary, "boundary node ids, in order (n1, n2, ...)")->delimiter(',');
+  reduce->add_option("--boundary-file", options.boundary_file, "file of boundary node ids, in order");
+  reduce->add_option("--modes", options.modes, "fixed-interface modes kept (default 12)");
+  reduce->add_option("--compare", options.compare, "full-model modes computed to check the reduced model (default 6)");
+  reduce->add_option("-o,--output", options.out_dir, "output folder (created if missing)")->required();
+  reduce->add_flag("-q,--quiet", options.quiet, "no closing report");
+  verbs.push_back({reduce, [] { return run_reduce(options); }});
+}
+
+const VerbRegistrar registrar(add_reduce_verbs);
+
+}  // namespace
+
+}  // namespace hbtrack::cli

@@ -1,0 +1,17 @@
+#pragma once
+// The lowest undamped modes of a large sparse model, K phi = w^2 M phi, by a shift-invert Lanczos
+// iteration (Spectra) on one sparse LDL^T factorisation of K - sigma M.
+#include <Eigen/Sparse>
+
+#include "hbtrack/model/damping.hpp"
+
+namespace hbtrack {
+
+// The `count` lowest modes (frequencies in rad/s, increasing; shapes n x count, mass-normalised).
+// `shift` (in rad^2/s^2) must lie below the lowest eigenvalue for K - shift M to be positive
+// definite; 0 suits any model whose constraints remove the rigid-body motion. Small models are
+// solved densely. Throws std::runtime_error when the factorisation or the iteration fails.
+NormalModes lowest_sparse_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass, int count,
+                                double shift = 0.0);
+
+}  // namespace hbtrack
