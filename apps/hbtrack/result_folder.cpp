@@ -1,0 +1,150 @@
+#include "result_folder.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace hbtrack::cli {
+
+namespace {
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream ss(line);
+  for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+  return cells;
+}
+
+double parse_cell(const std::string& where, const std::string& cell) {
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(cell, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != cell.size()) throw CaseError(where + ": '" + cell + "' is not a number");
+  return value;
+}
+
+}  // namespace
+
+int CsvTable::column(const std::string& name) const {
+  for (size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return static_cast<int>(i);
+  throw CaseError(path + ":1: no column '" + name + "'");
+}
+
+CsvTable read_csv_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw CaseError(path + ": cannot read (is it a result folder of hbtrack?)");
+  CsvTable t;
+  t.path = path;
+  std::string line;
+  if (!std::getline(in, line)) throw CaseError(path + ":1: empty file, expected a header");
+  t.header = split_csv(line);
+  long number = 1;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = split_csv(line);
+    const std::string where = path + ":" + std::to_string(number);
+    if (cells.size() != t.header.size())
+      throw CaseError(where + ": expected " + std::to_string(t.header.size()) + " values, got " + std::to_string(cells.size()));
+    std::vector<double> row;
+    row.reserve(cells.size());
+    for (const std::string& cell : cells) row.push_back(parse_cell(where, cell));
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+nlohmann::json read_summary(const std::string& dir) {
+  const std::string path = dir + "/summary.json";
+  std::ifstream in(path);
+  if (!in) throw CaseError(path + ": cannot read (is " + dir + " a result folder of hbtrack?)");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const std::exception&) {
+    throw CaseError(path + ": not valid JSON");
+  }
+}
+
+HbmState read_hbm_state(const std::string& path, long point) {
+  const CsvTable t = read_csv_table(path);
+  if (t.header.size() < 2 || t.header[0] != "omega") throw CaseError(path + ":1: expected the header omega,x0,x1,...");
+  if (point < 0 || point >= static_cast<long>(t.rows.size()))
+    throw CaseError("--point: " + std::to_string(point) + " is beyond the last point of " + path + " (" + std::to_string(t.rows.size()) +
+                    " points, from 0)");
+  const std::vector<double>& row = t.rows[static_cast<size_t>(point)];
+  HbmState s;
+  s.omega = row[0];
+  s.x = Eigen::Map<const Eigen::VectorXd>(row.data() + 1, static_cast<Eigen::Index>(row.size() - 1));
+  return s;
+}
+
+std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinition& plain) {
+  const std::string path = dir + "/summary.json";
+  const nlohmann::json summary = read_summary(dir);
+  const nlohmann::json* options = summary.contains("options") ? &summary["options"] : nullptr;
+  if (!options || !options->contains("parameters") || !options->contains("harmonic_balance"))
+    throw CaseError(path + ": options.parameters or options.harmonic_balance missing");
+  std::vector<std::string> overrides;
+  char value[40];
+  for (const auto& [name, v] : (*options)["parameters"].items()) {
+    if (!v.is_number()) throw CaseError(path + ": options.parameters." + name + ": expected a number");
+    if (name != "amplitude" && plain.parameters.find(name) < 0)
+      throw CaseError(path + ": parameter '" + name + "' is not in " + plain.path + " (results of another case?)");
+    std::snprintf(value, sizeof value, "%.17g", v.get<double>());
+    overrides.push_back(name + "=" + value);
+  }
+  const nlohmann::json& hb = (*options)["harmonic_balance"];
+  try {
+    overrides.push_back("harmonic_balance.harmonics=" + std::to_string(hb.at("harmonics").get<int>()));
+    overrides.push_back("harmonic_balance.samples=" + std::to_string(hb.at("samples").get<int>()));
+    overrides.push_back("harmonic_balance.condensation=" + hb.at("condensation").get<std::string>());
+  } catch (const std::exception&) {
+    throw CaseError(path + ": options.harmonic_balance needs harmonics, samples and condensation");
+  }
+  return overrides;
+}
+
+long parse_integer(const std::string& flag, const std::string& text, long min) {
+  size_t used = 0;
+  long value = 0;
+  try {
+    value = std::stol(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || value < min)
+    throw CaseError(flag + ": must be an integer >= " + std::to_string(min) + ", got '" + text + "'");
+  return value;
+}
+
+double parse_number(const std::string& flag, const std::string& text) {
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value)) throw CaseError(flag + ": must be a finite number, got '" + text + "'");
+  return value;
+}
+
+double parse_positive(const std::string& flag, const std::string& text) {
+  const std::string rule = flag + ": must be a number > 0, got '" + text + "'";
+  double value = 0;
+  try {
+    value = parse_number(flag, text);
+  } catch (const CaseError&) {
+    throw CaseError(rule);
+  }
+  if (!(value > 0)) throw CaseError(rule);
+  return value;
+}
+
+}  // namespace hbtrack::cli

@@ -1,0 +1,41 @@
+#pragma once
+// Reading back what the verbs wrote: a result folder's summary.json and its CSV tables, so that
+// one verb can start from another's result (simulate from a frc point, track from an LP, isolas
+// from a tracking curve). Every problem is a CaseError naming the file and the rule (exit 2).
+#include <Eigen/Dense>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "hbtrack/io/case_file.hpp"
+
+namespace hbtrack::cli {
+
+// A numeric CSV file: its header and rows.
+struct CsvTable {
+  std::string path;
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  int column(const std::string& name) const;  // throws CaseError when absent
+};
+CsvTable read_csv_table(const std::string& path);
+
+nlohmann::json read_summary(const std::string& dir);
+
+// Row `point` (0-based, as in branch.csv) of a table whose columns are omega, x0, x1, ...
+struct HbmState {
+  double omega = 0;
+  Eigen::VectorXd x;
+};
+HbmState read_hbm_state(const std::string& path, long point);
+
+// The settings DIR/summary.json records (parameters, harmonic balance), as case overrides: the
+// case then rebuilds the harmonic balance system whose unknowns the folder's states hold.
+std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinition& plain);
+
+// Flag values that arrive as text, checked so that a bad one gives a one-line CaseError naming it.
+long parse_integer(const std::string& flag, const std::string& text, long min);
+double parse_number(const std::string& flag, const std::string& text);
+double parse_positive(const std::string& flag, const std::string& text);
+
+}  // namespace hbtrack::cli

@@ -1,0 +1,58 @@
+#pragma once
+// The full (uncondensed) equation of motion in the time domain, for time integration:
+//   M x'' + C x' + K x + f_nl(x, x', omega) = f_ext(t),
+//   f_ext(t) = amplitude * sum over the model's forcing of (cos_part cos(h w t) + sin_part sin(h w t))
+// (order 0: cos_part is the constant load). f_nl is the sum of the case's elements evaluated one
+// instant at a time (N = 1 sample of their local dofs); Lanczos filtering acts on harmonics and
+// has no meaning here. Elements see omega only through tip_contact's rotation speed
+// W = engine_order * omega + rotation_speed, so they get the forcing frequency.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "hbtrack/elements/nonlinear_element.hpp"
+#include "hbtrack/model/parameters.hpp"
+#include "hbtrack/model/structural_model.hpp"
+
+namespace hbtrack {
+
+class EquationOfMotion {
+ public:
+  // Parameters are read once: element property values and `amplitude` (1 when absent) stay
+  // fixed during a simulation. Throws std::invalid_argument on a bad model, element or omega.
+  EquationOfMotion(const StructuralModel& model, const ElementList& elements, const ParameterSet& parameters,
+                   double omega);
+
+  int dofs() const { return static_cast<int>(mass_.rows()); }
+  double omega() const { return omega_; }
+  double period() const;
+  const Eigen::MatrixXd& mass() const { return mass_; }
+  const Eigen::MatrixXd& damping() const { return damping_; }
+  const Eigen::MatrixXd& stiffness() const { return stiffness_; }
+  bool has_nonlinear_elements() const { return !elements_.empty(); }
+
+  // f = f_ext(t).
+  void external_force(double t, Eigen::VectorXd& f) const;
+  // f = f_nl(x, v); when given, also the n x n tangents df/dx and df/dv (overwritten).
+  // Not const: reuses per-element buffers (one instance per thread).
+  void nonlinear_force(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& f,
+                       Eigen::MatrixXd* df_dx = nullptr, Eigen::MatrixXd* df_dv = nullptr);
+
+ private:
+  struct ElementSlot {
+    std::shared_ptr<NonlinearElement> element;
+    std::vector<double> property_values;
+    Eigen::MatrixXd x, v;  // 1 x k: one time sample of the local dofs
+    ElementResponse response;
+  };
+  struct ScaledForce {
+    int order = 1;
+    Eigen::VectorXd cos_part, sin_part;  // already multiplied by amplitude
+  };
+
+  Eigen::MatrixXd mass_, damping_, stiffness_;
+  std::vector<ScaledForce> forcing_;
+  std::vector<ElementSlot> elements_;
+  double omega_;
+};
+
+}  // namespace hbtrack
