@@ -154,6 +154,7 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"output_dof", variant("dof = \"b\"\n", "dof = \"q\"\n"), "outputs[0].dof: unknown dof 'q'"},
       {"duplicate_dof", variant("dofs = [\"a\", \"b\"]", "dofs = [\"a\", \"a\"]"), "dof name 'a' appears twice"},
       {"negative_lanczos", variant("lanczos = 1", "lanczos = -1"), "elements[0].lanczos: must be >= 0"},
+      {"forcing_above_truncation", variant("cos = 0.5", "cos = 0.5\nharmonic = 4"), "forcing[0].harmonic: must be <= harmonic_balance.harmonics = 3"},
   };
   for (const BadCase& bad : cases) {
     const fs::path p = write_case(bad.name, bad.text);

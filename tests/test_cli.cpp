@@ -8,38 +8,16 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
 
+using hbtrack::test::CliRun;
+using hbtrack::test::csv_header;
+using hbtrack::test::run_cli;
+
 namespace {
-
-struct CliRun {
-  int exit_code;
-  std::string err;
-};
-
-CliRun run_cli(const std::string& args) {
-  // One file per call: ctest runs tests in parallel processes.
-  static int calls = 0;
-  const fs::path err = fs::temp_directory_path() /
-                       ("hbtrack_cli_stderr_" + std::to_string(getpid()) + "_" + std::to_string(calls++) + ".txt");
-  const std::string cmd = std::string(HBTRACK_CLI) + " " + args + " 2> " + err.string() + " > /dev/null";
-  const int status = std::system(cmd.c_str());
-  std::stringstream ss;
-  ss << std::ifstream(err).rdbuf();
-  return {WEXITSTATUS(status), ss.str()};
-}
-
-std::vector<std::string> csv_header(const fs::path& p) {
-  std::ifstream in(p);
-  std::string line, cell;
-  std::getline(in, line);
-  std::vector<std::string> cells;
-  std::stringstream ss(line);
-  while (std::getline(ss, cell, ',')) cells.push_back(cell);
-  return cells;
-}
 
 }  // namespace
 
@@ -101,6 +79,15 @@ TEST(Cli, BadInputFailsWithOneLineReason) {
   const CliRun unknown_param = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") + " --set mu=0.1 -o /tmp/x");
   EXPECT_NE(unknown_param.exit_code, 0);
   EXPECT_NE(unknown_param.err.find("--set mu: unknown parameter"), std::string::npos) << unknown_param.err;
+
+  // Command-line parse errors follow the same contract: one line naming the flag, exit 2.
+  const CliRun unknown_flag = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") + " --omega-end 3 -o /tmp/x");
+  EXPECT_EQ(unknown_flag.exit_code, 2);
+  EXPECT_NE(unknown_flag.err.find("--omega-end"), std::string::npos) << unknown_flag.err;
+  EXPECT_EQ(std::count(unknown_flag.err.begin(), unknown_flag.err.end(), '\n'), 1) << unknown_flag.err;
+  const CliRun no_output = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml"));
+  EXPECT_EQ(no_output.exit_code, 2);
+  EXPECT_NE(no_output.err.find("--output is required"), std::string::npos) << no_output.err;
 }
 
 TEST(Cli, FailedContinuationKeepsItsPointsAndExitsNonZero) {

@@ -1,6 +1,7 @@
 // hbtrack: command-line front end. Each analysis verb reads a case file, writes its results into
-// the folder given with -o (design.md contracts) and exits non-zero with a one-line reason on
+// the folder given with -o (contracts of the project's design notes) and exits non-zero with a one-line reason on
 // stderr when it fails: 1 when the run failed (results kept), 2 for bad input, 3 otherwise.
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 
@@ -19,7 +20,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    // Bad flags are bad input: one line and exit 2, like every other input error.
+    std::string reason = e.what();
+    std::replace(reason.begin(), reason.end(), '\n', ' ');
+    std::fprintf(stderr, "hbtrack: %s (see hbtrack --help)\n", reason.c_str());
+    return 2;
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);

@@ -40,6 +40,10 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
       options_(std::move(options)),
       basis_((options_.validate(), options_.harmonics), options_.effective_samples()) {
   model_.validate();
+  for (const HarmonicForce& h : model_.forcing)
+    if (h.order > options_.harmonics)
+      throw std::invalid_argument("forcing harmonic " + std::to_string(h.order) + " exceeds the " + std::to_string(options_.harmonics) +
+                                  " harmonics balanced (it would be dropped)");
   amplitude_index_ = parameters_.find("amplitude");
   if (amplitude_index_ < 0) amplitude_index_ = parameters_.set("amplitude", 1.0);
 
@@ -59,7 +63,14 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
   } else {
     retained_.assign(nonlinear.begin(), nonlinear.end());
   }
-  if (method == "auto") method = modes_diagonalise_damping(model_) ? "modal" : "schur";
+  // Modal condensation inverts the retained dofs' receptance, a sum over every mode: with many
+  // retained dofs (the blade's 27 tip dofs of 39) it is ill-conditioned (1e7 near a resonance)
+  // and Newton stalls, while the Schur complement of a small linear block is cheap anyway. So
+  // `auto` takes modal only when the retained dofs are a small part of the model.
+  if (method == "auto") {
+    const bool few_retained = 4 * retained_.size() <= static_cast<size_t>(model_.dofs());
+    method = few_retained && modes_diagonalise_damping(model_) ? "modal" : "schur";
+  }
   if (method == "modal") {
     if (!modes_diagonalise_damping(model_))
       throw std::invalid_argument("harmonic_balance.condensation: 'modal' needs damping diagonalised by the normal modes and K > 0; use 'schur'");

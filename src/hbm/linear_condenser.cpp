@@ -15,7 +15,7 @@ using Eigen::VectorXcd;
 std::vector<VectorXcd> complex_forcing(const StructuralModel& model, int harmonics) {
   std::vector<VectorXcd> f(static_cast<size_t>(harmonics + 1), VectorXcd::Zero(model.dofs()));
   for (const HarmonicForce& h : model.forcing) {
-    if (h.order < 0 || h.order > harmonics) continue;  // beyond the truncation: not represented
+    if (h.order < 0 || h.order > harmonics) continue;  // HarmonicBalance rejects these
     auto& fj = f[static_cast<size_t>(h.order)];
     if (h.order == 0) {
       fj += 2.0 * h.cos_part.cast<cd>();

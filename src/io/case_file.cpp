@@ -496,6 +496,18 @@ void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c)
   }
 }
 
+// A forcing harmonic above the truncation would silently vanish from the balance.
+void check_forcing_within_harmonics(const Reader& in, const toml::value& root, const CaseDefinition& c) {
+  const toml::value* forcing = in.find(root, "forcing");
+  const int harmonics = c.harmonic_balance.harmonics;
+  for (size_t i = 0; forcing && i < forcing->as_array().size(); ++i) {
+    const toml::value& f = forcing->as_array()[i];
+    const std::string field = "forcing[" + std::to_string(i) + "].harmonic";
+    if (in.integer_or(f, "harmonic", field, 1) > harmonics)
+      in.fail(&f.at("harmonic"), field, "must be <= harmonic_balance.harmonics = " + std::to_string(harmonics) + " (a higher harmonic is not represented)");
+  }
+}
+
 void read_outputs(const Reader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value* outputs = in.find(root, "outputs");
   if (!outputs) return;
@@ -624,6 +636,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   read_parameters(in, root, c);
   read_elements(in, root, c);
   read_settings(in, root, c);
+  check_forcing_within_harmonics(in, root, c);
   read_outputs(in, root, c);
   return c;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // What a branch records per point for each named output dof: the extremes of its displacement
-// over one period and the magnitude of its first harmonic (contract of design.md).
+// over one period and the magnitude of its first harmonic (the result-folder contract in README "Using it").
 #include <Eigen/Dense>
 #include <string>
 #include <vector>

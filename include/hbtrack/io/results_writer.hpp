@@ -1,5 +1,5 @@
 #pragma once
-// Result folders (design.md contracts): a branch CSV appended and flushed point by point, so a
+// Result folders (the contract in README "Using it"): a branch CSV appended and flushed point by point, so a
 // killed run keeps what it computed, and summary.json replaced atomically.
 #include <Eigen/Dense>
 #include <fstream>
