@@ -44,7 +44,10 @@ int run_frc(const CommonOptions& o) {
   summary["outputs"] = json::array();
   for (const auto& out : c.outputs) summary["outputs"].push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
   json special = json::array();
+  // The state of each special point, in summary order: `track` starts from a limit point's.
+  CsvAppender special_states(o.out_dir + "/special_states.csv", state_header(hbm.unknowns()));
   for (const auto& sp : r.continuation.special_points) {
+    special_states.append(state_row(sp.lambda, sp.u));
     json j = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
     j["parameters"] = summary["options"]["parameters"];
     // Outputs of the special point itself (a located one lies between two rows of branch.csv).

@@ -1,5 +1,6 @@
 #include "hbtrack/analysis/nfrc.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -51,6 +52,14 @@ double force_scale(HarmonicBalance& hbm, double length_scale) {
 
 NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
                         const RecordedObserver& observer) {
+  const ParameterWindow window{std::min(options.omega_start, options.omega_end), std::max(options.omega_start, options.omega_end),
+                               options.omega_end >= options.omega_start ? 1 : -1, false};
+  return compute_branch(hbm, options, outputs, hbm.linear_solution(options.omega_start), options.omega_start, window, observer);
+}
+
+NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
+                          const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window,
+                          const RecordedObserver& observer) {
   options.validate();
   NfrcResult result;
   const bool adaptive = options.length_scale == 0;
@@ -58,10 +67,9 @@ NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const 
   result.length_scale = adaptive ? 0.01 * reference : reference;
   NfrcProblem problem(hbm, result.length_scale, std::abs(options.omega_end - options.omega_start),
                       force_scale(hbm, reference), adaptive);
-  const Eigen::VectorXd x0 = hbm.linear_solution(options.omega_start);
   FloquetMonitor monitor(hbm, options.stability);
-  result.continuation = continue_branch(
-      problem, x0, options.omega_start, options.omega_end, options.continuation,
+  result.continuation = continue_within(
+      problem, x0, omega0, window, options.continuation,
       [&](const BranchPoint& p, int index) {
         RecordedPoint rec = record_point(hbm, p.u, p.lambda, outputs);
         if (options.stability.enabled()) {

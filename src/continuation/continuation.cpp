@@ -32,7 +32,7 @@ void ContinuationOptions::validate() const {
 }
 
 bool ContinuationResult::success() const {
-  return summary.stop_reason == "reached_end" || summary.stop_reason == "max_points";
+  return summary.stop_reason == "reached_end" || summary.stop_reason == "max_points" || summary.stop_reason == "closed";
 }
 
 namespace {
@@ -224,14 +224,27 @@ int newton_at_fixed_parameter(ContinuationProblem& problem, VectorXd& u, double 
 ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
                                    double lambda_end, const ContinuationOptions& options, const PointObserver& observer,
                                    BranchMonitor* monitor) {
+  const ParameterWindow window{std::min(lambda_start, lambda_end), std::max(lambda_start, lambda_end),
+                               lambda_end >= lambda_start ? 1 : -1, false};
+  return continue_within(problem, u0, lambda_start, window, options, observer, monitor);
+}
+
+ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
+                                   const ParameterWindow& window, const ContinuationOptions& options,
+                                   const PointObserver& observer, BranchMonitor* monitor) {
   options.validate();
+  if (!(window.lambda_min <= lambda_start && lambda_start <= window.lambda_max))
+    throw std::invalid_argument("continuation: the start " + std::to_string(lambda_start) + " lies outside the parameter window");
   const auto clock_start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
   ContinuationResult result;
   ContinuationSummary& summary = result.summary;
   Scaled s{problem, problem.unknown_scale(u0), problem.parameter_scale(), problem.residual_scale(), problem.size(), {}, {}, {}};
   const int m = s.m;
-  const double direction = lambda_end >= lambda_start ? 1.0 : -1.0;
+  const double direction = window.direction >= 0 ? 1.0 : -1.0;
+  // The bound the branch heads for first ("reached_end") and the other one ("left_range").
+  const double lambda_end = direction > 0 ? window.lambda_max : window.lambda_min;
+  const double lambda_back = direction > 0 ? window.lambda_min : window.lambda_max;
   const bool hypersphere = options.corrector == "hypersphere";
   std::vector<std::string> types{"LP", "BP"};
   if (monitor)
@@ -278,6 +291,7 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
   if (!accept(first)) return finish("interrupted");
 
   double ds = options.step;
+  double farthest = 0;   // scaled distance from the first point, for closure
   VectorXd x_prev_prev;  // for the secant predictor
   while (true) {
     if (static_cast<int>(result.points.size()) >= options.max_points) return finish("max_points");
@@ -341,23 +355,42 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
     x = y;
     t = tan_new.t;
     const double lambda = point.lambda;
+    // Crossing a bound of the window: land exactly on it, interpolating the last step.
     const bool beyond_end = (lambda - lambda_end) * direction >= 0;
-    if (beyond_end) {
-      // Land exactly on lambda_end, interpolating the last step.
+    const bool beyond_back = (lambda - lambda_back) * direction < 0;
+    if (beyond_end || beyond_back) {
+      const double bound = beyond_end ? lambda_end : lambda_back;
+      const std::string reason = beyond_end ? "reached_end" : "left_range";
       const double lam_prev = s.parameter(x_prev_prev);
-      const double f = (lambda_end - lam_prev) / (lambda - lam_prev);
+      const double f = (bound - lam_prev) / (lambda - lam_prev);
       VectorXd u_end = s.unknowns(x_prev_prev + f * (x - x_prev_prev));
-      const int it = newton_at_fixed_parameter(problem, u_end, lambda_end, options.tolerance, options.max_iterations);
+      const int it = newton_at_fixed_parameter(problem, u_end, bound, options.tolerance, options.max_iterations);
       if (it >= 0) {
         summary.newton_iterations += it;
-        if (!accept({u_end, lambda_end, t, it, arc * f})) return finish("interrupted");
-        return finish("reached_end");
+        if (!accept({u_end, bound, t, it, arc * f})) return finish("interrupted");
+        return finish(reason);
+      }
+      if (!accept(point)) return finish("interrupted");
+      return finish(reason);
+    }
+    // Back at the first point (an isolated branch, a closed tracking curve): the step's chord
+    // passes within a quarter step of it after the branch went well away from it. A closed
+    // curve ends on a copy of its first point.
+    if (window.stop_when_closed) {
+      const VectorXd first_x = s.pack(result.points.front().u, result.points.front().lambda);
+      const VectorXd chord = y - x_prev_prev;
+      const double length = chord.norm();
+      farthest = std::max(farthest, (y - first_x).norm());
+      const double along = length > 0 ? (first_x - x_prev_prev).dot(chord) / length : -1.0;
+      const double off = (first_x - x_prev_prev - along * chord / std::max(length, 1e-300)).norm();
+      if (farthest > 4 * length && along >= 0 && along <= length && off <= 0.25 * length) {
+        BranchPoint closing = result.points.front();
+        closing.step = (first_x - x_prev_prev).norm();
+        if (!accept(closing)) return finish("interrupted");
+        return finish("closed");
       }
     }
     if (!accept(point)) return finish("interrupted");
-    if (beyond_end) return finish("reached_end");
-    // The branch turned back and passed below the start of the range.
-    if ((lambda - lambda_start) * direction < 0) return finish("left_range");
 
     s.rescale(s.unknowns(x), {&x, &x_prev_prev}, t);
     const double factor = iterations == 0 ? 1.5 : std::clamp(static_cast<double>(options.target_iterations) / iterations, 0.5, 1.5);

@@ -75,6 +75,13 @@ using RecordedObserver = std::function<bool(const BranchPoint&, const RecordedPo
 NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
                         const RecordedObserver& observer = {});
 
+// The branch through a given solution (x0, omega0), within a window of omega: e.g. an isolated
+// branch from one of its limit points, until it closes (window.stop_when_closed). Scales and
+// stability as compute_nfrc, from options (its omega range sets the arc-length units).
+NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
+                          const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window,
+                          const RecordedObserver& observer = {});
+
 // One periodic solution at fixed omega, by Newton from the linear solution (or from `guess`).
 struct FixedFrequencySolution {
   bool converged = false;

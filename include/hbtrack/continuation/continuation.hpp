@@ -64,7 +64,7 @@ struct SpecialPoint {
 };
 
 struct ContinuationSummary {
-  std::string stop_reason;  // reached_end, left_range, max_points, step_size_underflow, ...
+  std::string stop_reason;  // reached_end, left_range, closed, max_points, step_size_underflow, ...
   int points = 0;
   int newton_iterations = 0;
   int failed_steps = 0;
@@ -102,8 +102,24 @@ int newton_at_fixed_parameter(ContinuationProblem& problem, Eigen::VectorXd& u, 
                               int max_iterations);
 
 // Follows the branch from an approximate solution u0 at lambda_start towards lambda_end.
+// Stops with "reached_end" on lambda_end, "left_range" when the branch turns back below
+// lambda_start (both landed on exactly).
 ContinuationResult continue_branch(ContinuationProblem& problem, const Eigen::VectorXd& u0, double lambda_start,
                                    double lambda_end, const ContinuationOptions& options,
+                                   const PointObserver& observer = {}, BranchMonitor* monitor = nullptr);
+
+// The parameter interval a branch may explore, and how to leave the start.
+struct ParameterWindow {
+  double lambda_min = 0, lambda_max = 0;
+  int direction = 1;              // +1: leave the start with lambda increasing, -1: decreasing
+  bool stop_when_closed = false;  // stop ("closed") when the branch returns to its first point
+};
+
+// Follows the branch from u0 at lambda_start (inside the window) in the window's direction
+// until it crosses the bound it headed for ("reached_end"), the other bound ("left_range"),
+// or, when asked, closes on itself ("closed", last point = first point).
+ContinuationResult continue_within(ContinuationProblem& problem, const Eigen::VectorXd& u0, double lambda_start,
+                                   const ParameterWindow& window, const ContinuationOptions& options,
                                    const PointObserver& observer = {}, BranchMonitor* monitor = nullptr);
 
 }  // namespace hbtrack

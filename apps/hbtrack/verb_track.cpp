@@ -1,0 +1,296 @@
+// `hbtrack track`: a limit point of a frc result followed in a second parameter;
+// `hbtrack isolas`: the isolated branches a tracking curve reveals at one parameter value.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli_common.hpp"
+#include "hbtrack/analysis/fold_tracking.hpp"
+#include "hbtrack/io/results_writer.hpp"
+#include "result_folder.hpp"
+
+namespace hbtrack::cli {
+
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+struct TrackOptions {
+  CommonOptions common;
+  std::string from, lp, param, range, method = "bordered";
+};
+
+struct IsolaOptions {
+  CommonOptions common;
+  std::vector<std::string> from;
+  std::string at;
+};
+
+// The case rebuilt with the settings of the result folder `dir`, then the user's --set.
+CaseDefinition case_as_in(const CommonOptions& o, const std::string& dir) {
+  const CaseDefinition plain = load_case(o.case_path, o.sets);
+  std::vector<std::string> overrides = hbm_overrides(dir, plain);
+  overrides.insert(overrides.end(), o.sets.begin(), o.sets.end());  // --set wins
+  return load_case(o.case_path, overrides);
+}
+
+int parameter_index(const HarmonicBalance& hbm, const std::string& name) {
+  const int index = hbm.parameters().find(name);
+  if (index >= 0) return index;
+  std::string known;
+  for (const std::string& n : hbm.parameters().names()) known += (known.empty() ? "" : ", ") + n;
+  throw CaseError("--param: unknown parameter '" + name + "' (the case has: " + known + ")");
+}
+
+// Units of the tracking systems, from the case's frequency range (as the NFRC's).
+FoldScales fold_scales(HarmonicBalance& hbm, const CaseDefinition& c, double parameter_span) {
+  const NfrcOptions& n = c.nfrc;
+  const double reference = n.length_scale > 0 ? n.length_scale : automatic_length_scale(hbm, n.omega_start, n.omega_end);
+  FoldScales s;
+  s.length = n.length_scale > 0 ? n.length_scale : 0.01 * reference;
+  s.omega = std::abs(n.omega_end - n.omega_start);
+  s.force = force_scale(hbm, reference);
+  s.parameter = parameter_span;
+  return s;
+}
+
+std::vector<double> curve_row(const FoldCurvePoint& p) {
+  std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
+  for (const auto& v : p.recorded.outputs) row.insert(row.end(), {v.max, v.min, v.h1});
+  return row;
+}
+
+// The starting limit point: the lp-th (from 1) LP of DIR/summary.json and its state.
+HbmState starting_fold(const std::string& dir, long lp) {
+  const json summary = read_summary(dir);
+  const std::string path = dir + "/summary.json";
+  if (!summary.contains("special_points") || !summary["special_points"].is_array())
+    throw CaseError(path + ": special_points missing (is --from a frc result?)");
+  long seen = 0, row = -1;
+  const json& special = summary["special_points"];
+  for (size_t i = 0; i < special.size() && row < 0; ++i)
+    if (special[i].value("type", "") == "LP" && ++seen == lp) row = static_cast<long>(i);
+  if (row < 0) {
+    long count = 0;
+    for (const auto& sp : special) count += sp.value("type", "") == "LP";
+    throw CaseError("--lp: " + std::to_string(lp) + " is beyond the " + std::to_string(count) + " limit points of " + path);
+  }
+  return read_hbm_state(dir + "/special_states.csv", row);
+}
+
+int run_track(const TrackOptions& o) {
+  const auto t0 = Clock::now();
+  const long lp = parse_integer("--lp", o.lp, 1);
+  const size_t colon = o.range.find(':');
+  if (colon == std::string::npos) throw CaseError("--range: expected LO:HI, got '" + o.range + "'");
+  FoldTrackingOptions tracking;
+  tracking.method = o.method;
+  tracking.parameter_min = parse_number("--range", o.range.substr(0, colon));
+  tracking.parameter_max = parse_number("--range", o.range.substr(colon + 1));
+  if (!(tracking.parameter_min < tracking.parameter_max)) throw CaseError("--range: must be LO:HI with LO < HI, got '" + o.range + "'");
+  if (o.method != "bordered" && o.method != "extended") throw CaseError("--method: must be bordered or extended, got '" + o.method + "'");
+
+  const CaseDefinition c = case_as_in(o.common, o.from);
+  HarmonicBalance hbm = make_system(c);
+  const int parameter = parameter_index(hbm, o.param);
+  const double start_value = hbm.parameters().value(parameter);
+  if (!(tracking.parameter_min <= start_value && start_value <= tracking.parameter_max))
+    throw CaseError("--range: must contain " + o.param + " = " + std::to_string(start_value) + " of the limit point");
+  const HbmState start = starting_fold(o.from, lp);
+  if (start.x.size() != hbm.unknowns())
+    throw CaseError(o.from + "/special_states.csv: holds " + std::to_string(start.x.size()) + " unknowns, the case has " +
+                    std::to_string(hbm.unknowns()) + " (results of another case?)");
+  tracking.continuation = c.nfrc.continuation;
+
+  ensure_directory(o.common.out_dir);
+  std::vector<std::string> header{"leg", "omega", o.param};
+  for (const auto& out : c.outputs)
+    for (const char* kind : {"max_", "min_", "h1_"}) header.push_back(kind + out.name);
+  CsvAppender branch(o.common.out_dir + "/branch.csv", header);
+  std::vector<std::string> state_cols{"leg", "omega", o.param};
+  for (int i = 0; i < hbm.unknowns(); ++i) state_cols.push_back("x" + std::to_string(i));
+  CsvAppender states(o.common.out_dir + "/states.csv", state_cols);
+  json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  summary["options"]["tracking"] = {{"from", o.from}, {"lp", lp}, {"parameter", o.param}, {"method", o.method},
+                                    {"range", {tracking.parameter_min, tracking.parameter_max}}};
+  write_json_atomically(o.common.out_dir + "/summary.json", summary);
+
+  const FoldScales scales = fold_scales(hbm, c, tracking.parameter_max - tracking.parameter_min);
+  Progress progress(o.common.quiet);
+  FoldTrackingResult r;
+  try {
+    r = track_fold(hbm, parameter, start.x, start.omega, scales, tracking, c.outputs, [&](const FoldCurvePoint& p, int index) {
+      branch.append(curve_row(p));
+      std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
+      row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
+      states.append(row);
+      progress.update(index, p.omega, p.recorded, c.outputs);
+      return !interrupted();
+    });
+  } catch (const std::runtime_error& e) {
+    throw RunFailed{e.what()};
+  }
+  json legs = json::array();
+  int newton = 0, jacobians = 0;
+  for (size_t i = 0; i < r.legs.size(); ++i) {
+    const ContinuationSummary& s = r.legs[i];
+    legs.push_back({{"leg", i + 1}, {"towards", i == 0 ? "min" : "max"}, {"stop_reason", s.stop_reason}, {"points", s.points},
+                    {"newton_iterations", s.newton_iterations}, {"failed_steps", s.failed_steps},
+                    {"jacobian_evaluations", s.jacobian_evaluations}, {"wall_s", s.wall_s}});
+    newton += s.newton_iterations;
+    jacobians += s.jacobian_evaluations;
+  }
+  json special = json::array();
+  for (const FoldExtremum& e : r.extrema) {
+    json j = {{"type", e.type}, {"index", e.index}, {"omega", e.omega}, {o.param, e.parameter}, {"located", e.located}};
+    add_outputs(j, c, e.recorded);
+    special.push_back(j);
+  }
+  const bool ok = r.success();
+  summary["stop_reason"] = ok ? (r.closed ? "closed" : "completed") : r.legs.back().stop_reason;
+  summary["closed"] = r.closed;
+  summary["legs"] = legs;
+  summary["points"] = r.points.size();
+  summary["newton_iterations"] = newton;
+  summary["jacobian_evaluations"] = jacobians;
+  summary["start"] = {{"omega", start.omega}, {o.param, start_value}};
+  summary["special_points"] = special;
+  summary["outputs"] = json::array();
+  for (const auto& out : c.outputs) summary["outputs"].push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
+  summary["timings"] = {{"wall_s", seconds_since(t0)}};
+  write_json_atomically(o.common.out_dir + "/summary.json", summary);
+  if (!ok)
+    throw RunFailed{"tracking stopped: " + r.legs.back().stop_reason + " after " + std::to_string(r.points.size()) + " points (kept in " +
+                    o.common.out_dir + ")"};
+  if (!o.common.quiet)
+    std::fprintf(stderr, "track: %zu points, %zu extrema of %s, %s, %.3f s -> %s\n", r.points.size(), r.extrema.size(), o.param.c_str(),
+                 r.closed ? "closed" : "both ways to the range", summary["timings"]["wall_s"].get<double>(), o.common.out_dir.c_str());
+  return 0;
+}
+
+// The points of a tracking result folder, as curve points (outputs are not needed).
+std::vector<FoldCurvePoint> read_tracking_curve(const std::string& dir, const std::string& parameter, int unknowns) {
+  const CsvTable t = read_csv_table(dir + "/states.csv");
+  const int leg = t.column("leg"), omega = t.column("omega"), gamma = t.column(parameter);
+  const int first_x = t.column("x0");
+  if (static_cast<int>(t.header.size()) - first_x != unknowns)
+    throw CaseError(t.path + ":1: holds " + std::to_string(t.header.size() - static_cast<size_t>(first_x)) + " unknowns, the case has " +
+                    std::to_string(unknowns) + " (results of another case?)");
+  std::vector<FoldCurvePoint> curve;
+  for (const auto& row : t.rows) {
+    FoldCurvePoint p;
+    p.leg = static_cast<int>(row[static_cast<size_t>(leg)]);
+    p.omega = row[static_cast<size_t>(omega)];
+    p.parameter = row[static_cast<size_t>(gamma)];
+    p.x = Eigen::Map<const Eigen::VectorXd>(row.data() + first_x, unknowns);
+    curve.push_back(std::move(p));
+  }
+  return curve;
+}
+
+int run_isolas(const IsolaOptions& o) {
+  const auto t0 = Clock::now();
+  const double value = parse_number("--at", o.at);
+  std::string parameter_name;
+  for (const std::string& dir : o.from) {
+    const json s = read_summary(dir);
+    const std::string name = s.contains("options") && s["options"].contains("tracking") ? s["options"]["tracking"].value("parameter", "") : "";
+    if (name.empty()) throw CaseError(dir + "/summary.json: options.tracking.parameter missing (is --from a track result?)");
+    if (!parameter_name.empty() && name != parameter_name)
+      throw CaseError("--from: " + dir + " tracks '" + name + "', " + o.from.front() + " tracks '" + parameter_name + "'");
+    parameter_name = name;
+  }
+  CaseDefinition c = case_as_in(o.common, o.from.front());
+  HarmonicBalance hbm = make_system(c);
+  const int parameter = parameter_index(hbm, parameter_name);
+  std::vector<std::vector<FoldCurvePoint>> curves;
+  for (const std::string& dir : o.from) curves.push_back(read_tracking_curve(dir, parameter_name, hbm.unknowns()));
+  double lo = value, hi = value;
+  for (const auto& curve : curves)
+    for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
+  hbm.parameters().value(parameter) = value;
+  const FoldScales scales = fold_scales(hbm, c, std::max(hi - lo, 1e-300));
+
+  ensure_directory(o.common.out_dir);
+  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  summary["options"]["isolas"] = {{"from", o.from}, {"parameter", parameter_name}, {"at", value}};
+  write_json_atomically(o.common.out_dir + "/summary.json", summary);
+
+  const std::vector<IsolaCandidate> found = compute_isolas(hbm, parameter, value, curves, scales, c.nfrc, c.outputs);
+  json crossings = json::array();
+  int isolas = 0;
+  for (size_t k = 0; k < found.size(); ++k) {
+    const IsolaCandidate& f = found[k];
+    json j = {{"status", f.status}, {"omega", f.start.omega}, {"converged", f.start.converged}};
+    if (f.same_as >= 0) j["same_as"] = f.same_as;
+    if (f.status == "isola" || f.status == "open") {
+      const std::string name = f.status == "isola" ? "isola_" + std::to_string(++isolas) : "open_" + std::to_string(k + 1);
+      const std::string dir = o.common.out_dir + "/" + name;
+      ensure_directory(dir);
+      CsvAppender branch(dir + "/branch.csv", branch_header(c));
+      CsvAppender states(dir + "/states.csv", state_header(hbm.unknowns()));
+      for (size_t i = 0; i < f.branch.recorded.size(); ++i) {
+        branch.append(branch_row(f.branch.recorded[i]));
+        states.append(state_row(f.branch.continuation.points[i].lambda, f.branch.continuation.points[i].u));
+      }
+      const auto& s = f.branch.continuation.summary;
+      j["folder"] = name;
+      j["stop_reason"] = s.stop_reason;
+      j["points"] = s.points;
+      double omega_min = 1e300, omega_max = -1e300;
+      for (const auto& p : f.branch.continuation.points) omega_min = std::min(omega_min, p.lambda), omega_max = std::max(omega_max, p.lambda);
+      j["omega_range"] = {omega_min, omega_max};
+      int unstable = 0;
+      for (const auto& rec : f.branch.recorded) unstable += rec.stable == 0;
+      j["unstable_points"] = unstable;
+      json special = json::array();
+      hbm.parameters().value(parameter) = value;
+      for (const auto& sp : f.branch.continuation.special_points) {
+        json p = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
+        add_outputs(p, c, record_point(hbm, sp.u, sp.lambda, c.outputs));
+        special.push_back(p);
+      }
+      j["special_points"] = special;
+    }
+    crossings.push_back(j);
+  }
+  summary["stop_reason"] = "completed";
+  summary["crossings"] = crossings;
+  summary["isolas"] = isolas;
+  summary["timings"] = {{"wall_s", seconds_since(t0)}};
+  write_json_atomically(o.common.out_dir + "/summary.json", summary);
+  if (!o.common.quiet)
+    std::fprintf(stderr, "isolas: %zu crossings of %s = %g, %d isolated branches, %.3f s -> %s\n", found.size(), parameter_name.c_str(), value,
+                 isolas, summary["timings"]["wall_s"].get<double>(), o.common.out_dir.c_str());
+  return 0;
+}
+
+void add_track_verbs(CLI::App& app, VerbList& verbs) {
+  static TrackOptions track;
+  static IsolaOptions isolas;
+  CLI::App* t = app.add_subcommand("track", "follow a limit point of a frc result in a second parameter");
+  add_common_options(t, track.common);
+  t->add_option("--from", track.from, "frc result folder holding the limit point")->required();
+  t->add_option("--lp", track.lp, "which limit point of --from, counting from 1")->required();
+  t->add_option("--param", track.param, "the parameter to vary (a name of the case's [parameters], or amplitude)")->required();
+  t->add_option("--range", track.range, "LO:HI, the parameter's interval")->required();
+  t->add_option("--method", track.method, "bordered (minimally augmented, default) or extended (the paper's system)");
+  verbs.push_back({t, [] { return run_track(track); }});
+  CLI::App* i = app.add_subcommand("isolas", "isolated branches at one parameter value, from tracking curves");
+  add_common_options(i, isolas.common);
+  i->add_option("--from", isolas.from, "track result folder (repeat for several curves)")
+      ->required()
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  i->add_option("--at", isolas.at, "the parameter value")->required();
+  verbs.push_back({i, [] { return run_isolas(isolas); }});
+}
+
+const VerbRegistrar registrar(add_track_verbs);
+
+}  // namespace
+
+}  // namespace hbtrack::cli

@@ -1,0 +1,85 @@
+#pragma once
+// Limit-point tracking: the curve of the NFRC's limit points as a second parameter gamma
+// changes, followed both ways from a limit point, and the isolated branches it reveals
+// (paper sections 3 and 5.2; method notes sections 6 and 7).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hbtrack/analysis/fold_systems.hpp"
+#include "hbtrack/analysis/nfrc.hpp"
+
+namespace hbtrack {
+
+struct FoldTrackingOptions {
+  std::string method = "bordered";  // bordered (minimally augmented, default) | extended (paper)
+  double parameter_min = 0, parameter_max = 0;
+  ContinuationOptions continuation;
+  void validate() const;  // throws std::invalid_argument naming the field and the rule
+};
+
+struct FoldCurvePoint {
+  Eigen::VectorXd x;
+  double omega = 0;
+  double parameter = 0;
+  int leg = 1;  // 1: from the start towards parameter_min; 2: from the start towards parameter_max
+  RecordedPoint recorded;
+};
+
+// A local extremum of gamma along the curve, located: a minimum is where a pair of limit points
+// is born (an isolated branch appears, or the main branch starts to fold), a maximum where a pair
+// disappears (an isola merges with another branch, or a fold vanishes).
+struct FoldExtremum {
+  std::string type;  // "min" | "max"
+  bool located = false;
+  Eigen::VectorXd x;
+  double omega = 0, parameter = 0;
+  int index = 0;  // the curve point (FoldTrackingResult::points) nearest to it
+  RecordedPoint recorded;
+};
+
+struct FoldTrackingResult {
+  std::vector<FoldCurvePoint> points;  // leg 1 from the start, then leg 2 from the start (not repeated)
+  std::vector<FoldExtremum> extrema;
+  std::vector<ContinuationSummary> legs;
+  bool closed = false;  // leg 1 came back to the start: the curve is a loop
+  bool success() const;
+};
+
+using FoldObserver = std::function<bool(const FoldCurvePoint&, int index)>;
+
+// Follows the limit point near (x, omega) (an LP located on an NFRC at the parameter's current
+// value) while parameter `parameter` of hbm moves within [parameter_min, parameter_max].
+FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
+                              const FoldScales& scales, const FoldTrackingOptions& options,
+                              const std::vector<OutputDof>& outputs, const FoldObserver& observer = {});
+
+// A limit point of the NFRC at the parameter's current value, from an approximation.
+struct LocatedFold {
+  bool converged = false;
+  Eigen::VectorXd x;
+  double omega = 0;
+};
+LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
+                        const FoldScales& scales, const ContinuationOptions& options);
+
+// ---- isolated branches ---------------------------------------------------------------------
+
+// The branch through one crossing of a tracking curve with gamma = value.
+struct IsolaCandidate {
+  LocatedFold start;
+  std::string status;  // "isola" (closed on itself), "open" (reached the omega window: main
+                       // branch), "duplicate" (a limit point of a branch already computed), "failed"
+  int same_as = -1;    // for duplicates: the candidate whose branch holds this limit point
+  NfrcResult branch;   // for isola and open
+};
+
+// At parameter value `value`: every crossing of the tracking curves `curves` with it, refined
+// onto the limit point, and the branch through each new one followed within the options' omega
+// range until it closes. Stability as options.stability.
+std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, double value,
+                                           const std::vector<std::vector<FoldCurvePoint>>& curves,
+                                           const FoldScales& scales, const NfrcOptions& options,
+                                           const std::vector<OutputDof>& outputs);
+
+}  // namespace hbtrack

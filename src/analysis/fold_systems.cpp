@@ -1,0 +1,182 @@
+#include "hbtrack/analysis/fold_systems.hpp"
+
+#include <Eigen/LU>
+#include <stdexcept>
+
+namespace hbtrack {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+constexpr double kEta = 1e-6;  // relative finite-difference step of the second derivatives (paper)
+
+// x with A^T x = b from the factors P A = L U (A^T = U^T L^T P): the left null vector reuses
+// the LU of the right one.
+VectorXd solve_transposed(const Eigen::PartialPivLU<MatrixXd>& lu, const VectorXd& b) {
+  const MatrixXd& f = lu.matrixLU();
+  VectorXd y = f.triangularView<Eigen::Upper>().transpose().solve(b);
+  y = f.triangularView<Eigen::UnitLower>().transpose().solve(y);
+  return lu.permutationP().transpose() * y;
+}
+}  // namespace
+
+void approximate_null_vectors(const MatrixXd& j, VectorXd& right, VectorXd& left) {
+  const Eigen::PartialPivLU<MatrixXd> lu(j);
+  // A start with every component present; inverse iteration converges by the ratio of the two
+  // smallest singular values per step, and at a fold the smallest is near zero.
+  right = VectorXd::LinSpaced(j.rows(), 1.0, 2.0).normalized();
+  left = right;
+  for (int it = 0; it < 4; ++it) {
+    right = lu.solve(right).normalized();
+    left = solve_transposed(lu, left).normalized();
+  }
+  if (!right.allFinite() || !left.allFinite()) throw std::runtime_error("fold: the Jacobian at the start has no usable null vector");
+}
+
+FoldSystem::FoldSystem(HarmonicBalance& hbm, int parameter, const FoldScales& scales)
+    : hbm_(hbm), parameter_(parameter), linear_in_parameter_(parameter == hbm.amplitude_parameter()), scales_(scales),
+      q_(hbm.unknowns()) {
+  if (parameter < 0 || parameter >= hbm.parameters().size()) throw std::invalid_argument("fold: parameter index out of range");
+}
+
+VectorXd FoldSystem::unknown_scale(const VectorXd& u) const {
+  // Displacements: the current amplitude, floored (as the NFRC's adaptive unit); then omega.
+  VectorXd s(size());
+  const double amplitude = u.size() ? harmonics(u).cwiseAbs().maxCoeff() : 0.0;
+  s.head(q_).setConstant(std::max(scales_.length, amplitude));
+  s.tail(size() - q_).setOnes();
+  s(size() - 1) = scales_.omega;
+  return s;
+}
+
+void FoldSystem::evaluate_hbm(const VectorXd& x, double omega, double gamma, bool derivatives, Evaluation& e) {
+  hbm_.parameters().value(parameter_) = gamma;
+  hbm_.evaluate(x, omega, e.r, &e.j, derivatives ? &e.r_omega : nullptr);
+  if (derivatives) e.r_gamma = hbm_.parameter_derivative(x, omega, parameter_);
+}
+
+FoldSystem::SecondDerivatives FoldSystem::along(const VectorXd& x, double omega, double gamma, const VectorXd& d,
+                                                const Evaluation& base) {
+  const double eps = kEta * (x.norm() / d.norm() + kEta);
+  Evaluation shifted;
+  const VectorXd xs = x + eps * d;
+  hbm_.parameters().value(parameter_) = gamma;
+  hbm_.evaluate(xs, omega, shifted.r, &shifted.j, &shifted.r_omega);
+  SecondDerivatives s;
+  s.j = (shifted.j - base.j) / eps;
+  s.r_omega = (shifted.r_omega - base.r_omega) / eps;
+  s.r_gamma = linear_in_parameter_ ? VectorXd::Zero(q_) : VectorXd((hbm_.parameter_derivative(xs, omega, parameter_) - base.r_gamma) / eps);
+  return s;
+}
+
+// ---- extended system ---------------------------------------------------------------------
+
+VectorXd ExtendedFoldSystem::start(const VectorXd& x, double omega, const VectorXd& right, const VectorXd&) {
+  VectorXd u(size());
+  u << x, right.normalized(), omega;
+  return u;
+}
+
+VectorXd ExtendedFoldSystem::unknown_scale(const VectorXd& u) const {
+  VectorXd s = FoldSystem::unknown_scale(u);
+  s.segment(q_, q_).setOnes();  // the unit null vector
+  return s;
+}
+
+void ExtendedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, MatrixXd* jacobian, VectorXd* r_gamma) {
+  const VectorXd x = u.head(q_), phi = u.segment(q_, q_);
+  const double omega = u(2 * q_);
+  Evaluation e;
+  evaluate_hbm(x, omega, gamma, jacobian != nullptr, e);
+  // Rows in force units: R, L R_x phi, F (phi^T phi - 1).
+  const double length = scales_.length, force = scales_.force;
+  r.resize(size());
+  r.head(q_) = e.r;
+  r.segment(q_, q_) = length * (e.j * phi);
+  r(2 * q_) = force * (phi.squaredNorm() - 1.0);
+  if (!jacobian) return;
+  const SecondDerivatives s = along(x, omega, gamma, phi, e);
+  jacobian->setZero(size(), size());
+  jacobian->topLeftCorner(q_, q_) = e.j;
+  jacobian->block(0, 2 * q_, q_, 1) = e.r_omega;
+  jacobian->block(q_, 0, q_, q_) = length * s.j;
+  jacobian->block(q_, q_, q_, q_) = length * e.j;
+  jacobian->block(q_, 2 * q_, q_, 1) = length * s.r_omega;
+  jacobian->block(2 * q_, q_, 1, q_) = 2.0 * force * phi.transpose();
+  if (r_gamma) {
+    r_gamma->resize(size());
+    r_gamma->head(q_) = e.r_gamma;
+    r_gamma->segment(q_, q_) = length * s.r_gamma;
+    (*r_gamma)(2 * q_) = 0.0;
+  }
+}
+
+// ---- minimally augmented (bordered) system ---------------------------------------------------
+
+VectorXd BorderedFoldSystem::start(const VectorXd& x, double omega, const VectorXd& right, const VectorXd& left) {
+  c_ = right.normalized();
+  b_ = left.normalized();
+  last_u_.resize(0);
+  VectorXd u(size());
+  u << x, omega;
+  return u;
+}
+
+void BorderedFoldSystem::null_vectors(const MatrixXd& j, bool left) {
+  MatrixXd a(q_ + 1, q_ + 1);
+  a.topLeftCorner(q_, q_) = j;
+  a.topRightCorner(q_, 1) = b_;
+  a.bottomLeftCorner(1, q_) = c_.transpose();
+  a(q_, q_) = 0.0;
+  const Eigen::PartialPivLU<MatrixXd> lu(a);
+  VectorXd e = VectorXd::Zero(q_ + 1);
+  e(q_) = 1.0;
+  const VectorXd right = lu.solve(e);
+  v_ = right.head(q_);
+  g_ = right(q_);
+  if (left) w_ = solve_transposed(lu, e).head(q_);
+  has_left_ = left;
+}
+
+void BorderedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, MatrixXd* jacobian, VectorXd* r_gamma) {
+  if (b_.size() != q_) throw std::logic_error("BorderedFoldSystem: start() sets the borders first");
+  const VectorXd x = u.head(q_);
+  const double omega = u(q_);
+  Evaluation e;
+  evaluate_hbm(x, omega, gamma, jacobian != nullptr, e);
+  null_vectors(e.j, jacobian != nullptr);
+  last_u_ = u;
+  last_gamma_ = gamma;
+  // g has the units of R_x; times the length unit it weighs like a force.
+  const double length = scales_.length;
+  r.resize(size());
+  r.head(q_) = e.r;
+  r(q_) = length * g_;
+  if (!jacobian) return;
+  // g_z = -w^T (R_x)_z v, all from the second derivatives along v.
+  const SecondDerivatives s = along(x, omega, gamma, v_, e);
+  jacobian->resize(size(), size());
+  jacobian->topLeftCorner(q_, q_) = e.j;
+  jacobian->topRightCorner(q_, 1) = e.r_omega;
+  jacobian->bottomLeftCorner(1, q_) = -length * (w_.transpose() * s.j);
+  (*jacobian)(q_, q_) = -length * w_.dot(s.r_omega);
+  if (r_gamma) {
+    r_gamma->resize(size());
+    r_gamma->head(q_) = e.r_gamma;
+    (*r_gamma)(q_) = -length * w_.dot(s.r_gamma);
+  }
+}
+
+void BorderedFoldSystem::accepted(const VectorXd& u, double gamma) {
+  // The continuation evaluates the Jacobian at the point it accepts last; recompute otherwise.
+  if (!(has_left_ && last_u_.size() == u.size() && last_u_ == u && last_gamma_ == gamma)) {
+    Evaluation e;
+    evaluate_hbm(u.head(q_), u(q_), gamma, false, e);
+    null_vectors(e.j, true);
+  }
+  c_ = v_.normalized();
+  b_ = w_.normalized();
+}
+
+}  // namespace hbtrack

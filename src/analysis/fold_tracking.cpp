@@ -1,0 +1,173 @@
+#include "hbtrack/analysis/fold_tracking.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+namespace hbtrack {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+void FoldTrackingOptions::validate() const {
+  if (method != "bordered" && method != "extended")
+    throw std::invalid_argument("tracking method: must be bordered or extended, got '" + method + "'");
+  if (!std::isfinite(parameter_min) || !std::isfinite(parameter_max) || !(parameter_min < parameter_max))
+    throw std::invalid_argument("range: must be LO:HI with LO < HI, both finite");
+  continuation.validate();
+}
+
+bool FoldTrackingResult::success() const {
+  if (legs.empty()) return false;
+  for (const ContinuationSummary& s : legs)
+    if (s.stop_reason != "reached_end" && s.stop_reason != "left_range" && s.stop_reason != "closed" && s.stop_reason != "max_points")
+      return false;
+  return true;
+}
+
+namespace {
+
+std::unique_ptr<FoldSystem> make_fold_system(const std::string& method, HarmonicBalance& hbm, int parameter,
+                                             const FoldScales& scales) {
+  if (method == "extended") return std::make_unique<ExtendedFoldSystem>(hbm, parameter, scales);
+  return std::make_unique<BorderedFoldSystem>(hbm, parameter, scales);
+}
+
+// Starts `system` at (x, omega): null vectors of R_x there.
+VectorXd start_unknowns(FoldSystem& system, HarmonicBalance& hbm, const VectorXd& x, double omega) {
+  VectorXd r;
+  MatrixXd j;
+  hbm.evaluate(x, omega, r, &j, nullptr);
+  VectorXd right, left;
+  approximate_null_vectors(j, right, left);
+  return system.start(x, omega, right, left);
+}
+
+// A located extremum of lambda at `index` of a leg: a minimum or a maximum, from its neighbours.
+std::string extremum_type(const std::vector<BranchPoint>& leg, int index, double lambda) {
+  const int last = static_cast<int>(leg.size()) - 1;
+  double neighbours = 0;
+  int count = 0;
+  for (int k : {index - 1, index, index + 1})
+    if (k >= 0 && k <= last && leg[static_cast<size_t>(k)].lambda != lambda) {
+      neighbours += leg[static_cast<size_t>(k)].lambda - lambda;
+      ++count;
+    }
+  return count > 0 && neighbours > 0 ? "min" : "max";
+}
+
+}  // namespace
+
+LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
+                        const ContinuationOptions& options) {
+  BorderedFoldSystem system(hbm, parameter, scales);
+  VectorXd u = start_unknowns(system, hbm, x, omega);
+  LocatedFold f;
+  f.converged = newton_at_fixed_parameter(system, u, hbm.parameters().value(parameter), options.tolerance, 3 * options.max_iterations) >= 0;
+  f.x = system.harmonics(u);
+  f.omega = system.omega(u);
+  return f;
+}
+
+FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
+                              const FoldTrackingOptions& options, const std::vector<OutputDof>& outputs,
+                              const FoldObserver& observer) {
+  options.validate();
+  const double gamma0 = hbm.parameters().value(parameter);
+  if (!(options.parameter_min <= gamma0 && gamma0 <= options.parameter_max))
+    throw std::invalid_argument("range: must contain the parameter's value at the limit point, " + std::to_string(gamma0));
+  std::unique_ptr<FoldSystem> system = make_fold_system(options.method, hbm, parameter, scales);
+  FoldTrackingResult result;
+  for (int leg = 1; leg <= 2; ++leg) {
+    hbm.parameters().value(parameter) = gamma0;
+    const VectorXd u0 = start_unknowns(*system, hbm, x, omega);
+    const ParameterWindow window{options.parameter_min, options.parameter_max, leg == 1 ? -1 : 1, leg == 1};
+    const int offset = static_cast<int>(result.points.size()) - (leg == 2 ? 1 : 0);
+    bool stopped = false;
+    const ContinuationResult c = continue_within(*system, u0, gamma0, window, options.continuation, [&](const BranchPoint& p, int index) {
+      system->accepted(p.u, p.lambda);
+      if (leg == 2 && index == 0) return true;  // the start, already the first point of leg 1
+      FoldCurvePoint point{system->harmonics(p.u), system->omega(p.u), p.lambda, leg, {}};
+      hbm.parameters().value(parameter) = p.lambda;  // the recovery of condensed dofs depends on it
+      point.recorded = record_point(hbm, point.x, point.omega, outputs);
+      result.points.push_back(std::move(point));
+      stopped = observer && !observer(result.points.back(), static_cast<int>(result.points.size()) - 1);
+      return !stopped;
+    });
+    result.legs.push_back(c.summary);
+    for (const SpecialPoint& sp : c.special_points) {
+      if (sp.type != "LP") continue;  // the extrema of gamma; the engine's BP is not a fold event
+      FoldExtremum e;
+      e.type = extremum_type(c.points, sp.index, sp.lambda);
+      e.located = sp.located;
+      e.x = system->harmonics(sp.u);
+      e.omega = system->omega(sp.u);
+      e.parameter = sp.lambda;
+      e.index = std::max(0, offset + sp.index);
+      hbm.parameters().value(parameter) = sp.lambda;
+      e.recorded = record_point(hbm, e.x, e.omega, outputs);
+      result.extrema.push_back(std::move(e));
+    }
+    if (c.summary.stop_reason == "closed") {
+      result.closed = true;
+      break;
+    }
+    if (stopped || c.summary.stop_reason == "no_convergence_at_start") break;
+  }
+  hbm.parameters().value(parameter) = gamma0;
+  return result;
+}
+
+std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, double value,
+                                           const std::vector<std::vector<FoldCurvePoint>>& curves, const FoldScales& scales,
+                                           const NfrcOptions& options, const std::vector<OutputDof>& outputs) {
+  const double saved = hbm.parameters().value(parameter);
+  hbm.parameters().value(parameter) = value;
+  // Two more digits than the branch needs, so that its continuation starts without a Newton
+  // step at the limit point (where R_x is singular).
+  FoldScales strict = scales;
+  strict.force *= 1e-2;
+  const ParameterWindow window{std::min(options.omega_start, options.omega_end), std::max(options.omega_start, options.omega_end), 1,
+                               true};
+  auto same_fold = [&](const VectorXd& xa, double wa, const VectorXd& xb, double wb) {
+    const double size = std::max({xa.cwiseAbs().maxCoeff(), xb.cwiseAbs().maxCoeff(), scales.length});
+    return std::abs(wa - wb) <= 1e-6 * std::abs(wb) && (xa - xb).cwiseAbs().maxCoeff() <= 1e-4 * size;
+  };
+  std::vector<IsolaCandidate> out;
+  for (const auto& curve : curves) {
+    for (size_t i = 0; i + 1 < curve.size(); ++i) {
+      const FoldCurvePoint &a = curve[i], &b = curve[i + 1];
+      // A crossing of gamma = value inside the segment, or at its end (counted once).
+      if (a.leg != b.leg || a.parameter == b.parameter) continue;
+      if (!((a.parameter - value) * (b.parameter - value) < 0 || b.parameter == value)) continue;
+      const double f = (value - a.parameter) / (b.parameter - a.parameter);
+      IsolaCandidate cand;
+      cand.start = locate_fold(hbm, parameter, a.x + f * (b.x - a.x), a.omega + f * (b.omega - a.omega), strict, options.continuation);
+      if (!cand.start.converged) {
+        cand.status = "failed";
+        out.push_back(std::move(cand));
+        continue;
+      }
+      for (size_t k = 0; k < out.size() && cand.same_as < 0; ++k) {
+        const IsolaCandidate& other = out[k];
+        if (other.status == "duplicate" || other.status == "failed") continue;
+        if (same_fold(cand.start.x, cand.start.omega, other.start.x, other.start.omega)) cand.same_as = static_cast<int>(k);
+        for (const SpecialPoint& sp : other.branch.continuation.special_points)
+          if (sp.type == "LP" && sp.located && same_fold(cand.start.x, cand.start.omega, sp.u, sp.lambda)) cand.same_as = static_cast<int>(k);
+      }
+      if (cand.same_as >= 0) {
+        cand.status = "duplicate";
+      } else {
+        cand.branch = compute_branch(hbm, options, outputs, cand.start.x, cand.start.omega, window);
+        const std::string& reason = cand.branch.continuation.summary.stop_reason;
+        cand.status = reason == "closed" ? "isola" : (reason == "reached_end" || reason == "left_range") ? "open" : "failed";
+      }
+      out.push_back(std::move(cand));
+    }
+  }
+  hbm.parameters().value(parameter) = saved;
+  return out;
+}
+
+}  // namespace hbtrack
