@@ -1,13 +1,34 @@
 #!/usr/bin/env bash
-# The main job: builds hbtrack and computes the nonlinear frequency response of the shipped
-# examples, with figures, into results/. (The blade study replaces it once the blade exists.)
+# The main job: builds hbtrack, then the study of the shipped blade (data/blade, reduced from the
+# parametric blade by scripts/make-blade-rom.sh): its nominal NFRC with stability and limit
+# points, the tracking of its resonance limit point in the forcing amplitude, and the same chain on
+# the small examples (NFRCs, Duffing limit points tracked to their cusp, isolas search), with
+# figures, into results/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build build -j "$(nproc)"
+hbtrack=./build/hbtrack
 mkdir -p results
+
+# The blade: nominal NFRC (stability by Hill's method), then its resonance LP in amplitude.
+$hbtrack modes examples/blade/nominal.toml --count 6 -o results/blade_modes
+$hbtrack frc examples/blade/nominal.toml -o results/blade_nominal
+/usr/bin/python3 python/plot_branch.py results/blade_nominal --units m
+# Each leg of the tracking curve is capped at 60 points: the curve turns sharply each time a
+# tip node enters or leaves contact, and the full study takes longer than a main job should.
+$hbtrack track examples/blade/nominal.toml --from results/blade_nominal --lp 1 --param amplitude --range 1:80 \
+  --set continuation.max_points=60 -o results/blade_track_amplitude
+/usr/bin/python3 python/plot_tracking.py results/blade_track_amplitude -o results/blade_track_amplitude/tracking.png
+
+# The small examples.
 for example in duffing two_dof_contact coupled_duffing chain_contact; do
-  ./build/hbtrack frc "examples/$example.toml" -o "results/$example"
+  $hbtrack frc "examples/$example.toml" -o "results/$example"
   /usr/bin/python3 python/plot_branch.py "results/$example"
 done
-echo "figures: results/*/nfrc.png"
+for lp in 1 2; do
+  $hbtrack track examples/duffing.toml --from results/duffing --lp $lp --param amplitude --range 0.1:2 -o "results/duffing_track_lp$lp"
+done
+/usr/bin/python3 python/plot_tracking.py results/duffing_track_lp1 results/duffing_track_lp2 -o results/duffing_tracking.png
+$hbtrack isolas examples/duffing.toml --from results/duffing_track_lp1 --from results/duffing_track_lp2 --at 1.5 -o results/duffing_isolas
+echo "figures: results/*/nfrc.png, results/blade_track_amplitude/tracking.png, results/duffing_tracking.png"
