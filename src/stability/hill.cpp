@@ -3,11 +3,16 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/SparseCore>
 #include <Spectra/GenEigsRealShiftSolver.h>
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numeric>
+#include <optional>
+#include <set>
+
+#include "hill_pencil.hpp"
 
 namespace hbtrack {
 
@@ -15,26 +20,26 @@ namespace {
 
 // y = (A - sigma I)^-1 x for the first-order Hill matrix A = [[0, I], [-D2^-1 J, -D2^-1 D1]]
 // without forming A: y1 = -L(sigma)^-1 (D2 x2 + (D1 + sigma D2) x1), y2 = x1 + sigma y1, with
-// the quadratic pencil L(sigma) = J + sigma D1 + sigma^2 D2 factorised once.
+// the quadratic pencil L(sigma) = J + sigma D1 + sigma^2 D2 factorised once (HillPencil: block
+// elimination of the linear dofs) and D1, mostly zero, applied as a sparse matrix.
 class HillShiftInvert {
  public:
   using Scalar = double;
-  HillShiftInvert(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping, const Eigen::MatrixXd& mass, int blocks)
-      : j_(jacobian), d1_(damping), m_(mass), blocks_(blocks), size_(jacobian.rows()) {}
+  HillShiftInvert(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping, const Eigen::MatrixXd& mass, int blocks,
+                  std::vector<int> coupled)
+      : j_(jacobian), d1_(damping), d1_sparse_(damping.sparseView()), m_(mass), blocks_(blocks), size_(jacobian.rows()),
+        coupled_(std::move(coupled)) {}
   Eigen::Index rows() const { return 2 * size_; }
   Eigen::Index cols() const { return 2 * size_; }
   void set_shift(double sigma) {
     sigma_ = sigma;
-    Eigen::MatrixXd pencil = j_ + sigma * d1_;
-    const Eigen::Index n = m_.rows();
-    for (int b = 0; b < blocks_; ++b) pencil.block(b * n, b * n, n, n) += sigma * sigma * m_;
-    lu_.compute(pencil);
+    pencil_.emplace(j_, d1_, m_, sigma, coupled_);
   }
   void perform_op(const double* x_in, double* y_out) const {
     const Eigen::Map<const Eigen::VectorXd> x1(x_in, size_), x2(x_in + size_, size_);
     Eigen::Map<Eigen::VectorXd> y1(y_out, size_), y2(y_out + size_, size_);
-    Eigen::VectorXd rhs = d1_ * x1 + mass_times(x2 + sigma_ * x1);
-    y1 = -lu_.solve(rhs);
+    const Eigen::VectorXd rhs = d1_sparse_ * x1 + mass_times(x2 + sigma_ * x1);
+    y1 = -pencil_->solve(rhs);
     y2 = x1 + sigma_ * y1;
   }
 
@@ -47,19 +52,22 @@ class HillShiftInvert {
   }
   const Eigen::MatrixXd& j_;
   const Eigen::MatrixXd& d1_;
+  Eigen::SparseMatrix<double> d1_sparse_;
   const Eigen::MatrixXd& m_;
   int blocks_;
   Eigen::Index size_;
+  std::vector<int> coupled_;
   double sigma_ = 0;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  std::optional<HillPencil> pencil_;
 };
 
 // Hill's eigenvalues nearest a small real shift (eigenvalue families l + i k w share their real
 // part, so the ones near the imaginary axis with small |Im l| decide stability). Empty when
 // the Arnoldi iteration did not converge.
 Eigen::VectorXcd eigenvalues_near_axis(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping,
-                                       const Eigen::MatrixXd& mass, int blocks, int count, double omega) {
-  HillShiftInvert op(jacobian, damping, mass, blocks);
+                                       const Eigen::MatrixXd& mass, int blocks, int count, double omega,
+                                       std::vector<int> coupled) {
+  HillShiftInvert op(jacobian, damping, mass, blocks, std::move(coupled));
   const Eigen::Index dimension = 2 * jacobian.rows();
   const Eigen::Index ncv = std::min<Eigen::Index>(dimension, std::max<Eigen::Index>(2 * count + 1, 20));
   // A shift a little off zero keeps the pencil regular at a limit point, where J is singular.
@@ -88,7 +96,9 @@ Eigen::VectorXcd all_eigenvalues(const Eigen::MatrixXd& jacobian, const Eigen::M
 
 FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const std::string& solver) {
   const int n = hbm.model().dofs();
-  Eigen::MatrixXd jacobian, damping;
+  // Reused from call to call: two dense n(2H+1) squares (11 MB on the blade) would otherwise be
+  // mapped and faulted in afresh at every point.
+  thread_local Eigen::MatrixXd jacobian, damping;
   hbm.hill_matrices(x, omega, jacobian, damping);
   const Eigen::Index size = jacobian.rows();
   const int blocks = hbm.basis().coefficients();
@@ -99,7 +109,12 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   const bool arnoldi = solver == "arnoldi" || (solver == "auto" && 2 * size > kDenseLimit);
   // Stability and the PD/NS/LP test functions need only the exponents near the axis: at most
   // 24 of them, whatever the size (Arnoldi's cost grows with the square of that count).
-  if (arnoldi) all = eigenvalues_near_axis(jacobian, damping, hbm.model().mass, blocks, std::min<int>({2 * n, 24, static_cast<int>(size) - 2}), omega);
+  if (arnoldi) {
+    std::set<int> coupled;  // the dofs the elements touch: the only ones coupling harmonics
+    for (const auto& e : hbm.elements()) coupled.insert(e->dofs.begin(), e->dofs.end());
+    all = eigenvalues_near_axis(jacobian, damping, hbm.model().mass, blocks, std::min<int>({2 * n, 24, static_cast<int>(size) - 2}), omega,
+                                {coupled.begin(), coupled.end()});
+  }
   if (all.size() == 0) all = all_eigenvalues(jacobian, damping, hbm.model().mass, blocks);
   std::vector<Eigen::Index> order(static_cast<size_t>(all.size()));
   std::iota(order.begin(), order.end(), 0);
