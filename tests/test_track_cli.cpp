@@ -64,6 +64,27 @@ TEST(TrackCli, FollowsTheFirstLimitPointInAmplitudeToItsCusp) {
   EXPECT_EQ(si["crossings"][0]["status"], "open");
 }
 
+TEST(TrackCli, ReadsSubnormalHarmonicsBackAsNumbers) {
+  // A harmonic at round-off level can be written as a subnormal (1e-322); reading it back must
+  // not fail (std::stod rejects it as out of range).
+  const fs::path copy = fs::temp_directory_path() / ("hbtrack_track_subnormal_" + std::to_string(getpid()));
+  fs::remove_all(copy);
+  fs::copy(duffing_frc(), copy);
+  std::ifstream in(copy / "special_states.csv");
+  std::string header, row, rest, line;
+  std::getline(in, header);
+  std::getline(in, row);
+  while (std::getline(in, line)) rest += line + "\n";
+  in.close();
+  const size_t second = row.find(',', row.find(',') + 1);  // x0 is the zero harmonic (zero for Duffing)
+  row = row.substr(0, row.find(',') + 1) + "1.0869444208507424e-322" + row.substr(second);
+  std::ofstream(copy / "special_states.csv") << header << "\n" << row << "\n" << rest;
+  const fs::path out = fs::temp_directory_path() / ("hbtrack_track_subnormal_out_" + std::to_string(getpid()));
+  const CliRun r = run_cli("track " + kDuffing + " --from " + copy.string() + " --lp 1 --param amplitude --range 0.5:1.5 -o " + out.string() +
+                           " -q");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 TEST(TrackCli, BadFlagsFailWithOneLineNamingTheFlag) {
   const std::string from = duffing_frc().string();
   const std::string out = " -o " + (fs::temp_directory_path() / "hbtrack_track_bad").string();

@@ -1,6 +1,7 @@
 #include "result_folder.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -17,14 +18,12 @@ std::vector<std::string> split_csv(const std::string& line) {
 }
 
 double parse_cell(const std::string& where, const std::string& cell) {
-  size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(cell, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != cell.size()) throw CaseError(where + ": '" + cell + "' is not a number");
+  // strtod, not stod: a subnormal value such as 1e-322 (a harmonic at round-off level) is a
+  // number, though strtod flags its underflow.
+  const char* begin = cell.c_str();
+  char* end = nullptr;
+  const double value = std::strtod(begin, &end);
+  if (cell.empty() || end != begin + cell.size() || !std::isfinite(value)) throw CaseError(where + ": '" + cell + "' is not a finite number");
   return value;
 }
 
