@@ -44,17 +44,15 @@ VectorXd start_unknowns(FoldSystem& system, HarmonicBalance& hbm, const VectorXd
   return system.start(x, omega, right, left);
 }
 
-// A located extremum of lambda at `index` of a leg: a minimum or a maximum, from its neighbours.
-std::string extremum_type(const std::vector<BranchPoint>& leg, int index, double lambda) {
+// A located extremum of lambda near point `index` of a leg: a minimum when lambda was falling
+// along the leg just before it. The bracket is the pair of neighbours whose tangents' lambda
+// components differ in sign (the engine reports the nearer of the two as `index`).
+std::string extremum_type(const std::vector<BranchPoint>& leg, int index) {
+  auto rising = [&](int k) { return leg[static_cast<size_t>(k)].tangent(leg[static_cast<size_t>(k)].tangent.size() - 1) > 0; };
   const int last = static_cast<int>(leg.size()) - 1;
-  double neighbours = 0;
-  int count = 0;
-  for (int k : {index - 1, index, index + 1})
-    if (k >= 0 && k <= last && leg[static_cast<size_t>(k)].lambda != lambda) {
-      neighbours += leg[static_cast<size_t>(k)].lambda - lambda;
-      ++count;
-    }
-  return count > 0 && neighbours > 0 ? "min" : "max";
+  int before = index;
+  if (index + 1 > last || rising(index) == rising(index + 1)) before = std::max(index - 1, 0);
+  return rising(before) ? "max" : "min";
 }
 
 }  // namespace
@@ -99,7 +97,7 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
     for (const SpecialPoint& sp : c.special_points) {
       if (sp.type != "LP") continue;  // the extrema of gamma; the engine's BP is not a fold event
       FoldExtremum e;
-      e.type = extremum_type(c.points, sp.index, sp.lambda);
+      e.type = extremum_type(c.points, sp.index);
       e.located = sp.located;
       e.x = system->harmonics(sp.u);
       e.omega = system->omega(sp.u);
