@@ -292,6 +292,8 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
 
   double ds = options.step;
   double farthest = 0;   // scaled distance from the first point, for closure
+  const VectorXd first_scale = s.su;  // the scaling the first point's tangent was computed in
+  const double first_parameter_scale = s.sl;
   VectorXd x_prev_prev;  // for the secant predictor
   while (true) {
     if (static_cast<int>(result.points.size()) >= options.max_points) return finish("max_points");
@@ -383,7 +385,13 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
       farthest = std::max(farthest, (y - first_x).norm());
       const double along = length > 0 ? (first_x - x_prev_prev).dot(chord) / length : -1.0;
       const double off = (first_x - x_prev_prev - along * chord / std::max(length, 1e-300)).norm();
-      if (farthest > 4 * length && along >= 0 && along <= length && off <= 0.25 * length) {
+      // A loop arrives with the orientation it left with; a branch that turned back on itself
+      // (a sharp corner taken at the smallest step) passes the start going the other way.
+      const VectorXd first_t = s.pack(result.points.front().u + result.points.front().tangent.head(m).cwiseProduct(first_scale),
+                                      result.points.front().lambda + result.points.front().tangent(m) * first_parameter_scale) -
+                               first_x;
+      const bool same_orientation = first_t.dot(t) > 0;
+      if (farthest > 4 * length && along >= 0 && along <= length && off <= 0.25 * length && same_orientation) {
         BranchPoint closing = result.points.front();
         closing.step = (first_x - x_prev_prev).norm();
         if (!accept(closing)) return finish("interrupted");
