@@ -150,7 +150,8 @@ int run_track(const TrackOptions& o) {
     special.push_back(j);
   }
   const bool ok = r.success();
-  summary["stop_reason"] = ok ? (r.closed ? "closed" : "completed") : r.legs.back().stop_reason;
+  const std::string failure = r.failure();
+  summary["stop_reason"] = ok ? (r.closed ? "closed" : "completed") : failure;
   summary["closed"] = r.closed;
   summary["legs"] = legs;
   summary["points"] = r.points.size();
@@ -163,8 +164,8 @@ int run_track(const TrackOptions& o) {
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
   if (!ok)
-    throw RunFailed{"tracking stopped: " + r.legs.back().stop_reason + " after " + std::to_string(r.points.size()) + " points (kept in " +
-                    o.common.out_dir + ")"};
+    throw RunFailed{"tracking stopped: " + failure + " after " + std::to_string(r.points.size()) + " points (kept in " + o.common.out_dir +
+                    ")"};
   if (!o.common.quiet)
     std::fprintf(stderr, "track: %zu points, %zu extrema of %s, %s, %.3f s -> %s\n", r.points.size(), r.extrema.size(), o.param.c_str(),
                  r.closed ? "closed" : "both ways to the range", summary["timings"]["wall_s"].get<double>(), o.common.out_dir.c_str());

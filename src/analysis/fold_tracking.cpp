@@ -18,12 +18,12 @@ void FoldTrackingOptions::validate() const {
   continuation.validate();
 }
 
-bool FoldTrackingResult::success() const {
-  if (legs.empty()) return false;
+std::string FoldTrackingResult::failure() const {
+  if (legs.empty()) return "not_started";
   for (const ContinuationSummary& s : legs)
     if (s.stop_reason != "reached_end" && s.stop_reason != "left_range" && s.stop_reason != "closed" && s.stop_reason != "max_points")
-      return false;
-  return true;
+      return s.stop_reason;
+  return "";
 }
 
 namespace {

@@ -43,7 +43,10 @@ struct FoldTrackingResult {
   std::vector<FoldExtremum> extrema;
   std::vector<ContinuationSummary> legs;
   bool closed = false;  // leg 1 came back to the start: the curve is a loop
-  bool success() const;
+  bool success() const { return failure().empty(); }
+  // The stop reason of the first leg that did not end as asked (a bound, closure, max_points),
+  // empty when none.
+  std::string failure() const;
 };
 
 using FoldObserver = std::function<bool(const FoldCurvePoint&, int index)>;
