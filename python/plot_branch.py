@@ -2,7 +2,9 @@
 """Plots the branch of an hbtrack result folder: for each output dof, the extremes (max and min
 over a period) against omega, with the special points of summary.json marked.
 
-    /usr/bin/python3 python/plot_branch.py RESULT_DIR [-o FIGURE.png]
+    /usr/bin/python3 python/plot_branch.py RESULT_DIR [--also OTHER_DIR ...] [-o FIGURE.png]
+
+--also overlays other branches of the same case (e.g. the isolas hbtrack isolas found).
 """
 import argparse
 import csv
@@ -29,6 +31,7 @@ def main():
     parser.add_argument("result_dir")
     parser.add_argument("-o", "--output", help="figure file (default RESULT_DIR/nfrc.png)")
     parser.add_argument("--units", default="", help="displacement unit for the axis label")
+    parser.add_argument("--also", action="append", default=[], help="another result folder to overlay")
     args = parser.parse_args()
 
     branch = read_branch(os.path.join(args.result_dir, "branch.csv"))
@@ -40,20 +43,29 @@ def main():
 
     fig, axes = plt.subplots(len(names), 1, figsize=(6.5, 3.2 * len(names)), squeeze=False)
     unit = f" [{args.units}]" if args.units else ""
+    folders = [args.result_dir] + args.also
     for ax, name in zip(axes[:, 0], names):
-        stable = branch.get("stable")
-        for key, colour in ((f"max_{name}", "C0"), (f"min_{name}", "C1")):
-            if stable is None:
-                ax.plot(branch["omega"], branch[key], color=colour, lw=1.2, label=key)
-            else:  # stable solid, unstable dashed
-                for flag, style in ((1.0, "-"), (0.0, "--")):
-                    ys = [y if s == flag else float("nan") for y, s in zip(branch[key], stable)]
-                    ax.plot(branch["omega"], ys, style, color=colour, lw=1.2, label=key if flag else None)
-        for sp in summary.get("special_points", []):
-            for key in (f"max_{name}", f"min_{name}"):
-                if key in sp:
-                    ax.plot(sp["omega"], sp[key], "o", color="k", ms=4)
-                    ax.annotate(sp["type"], (sp["omega"], sp[key]), textcoords="offset points", xytext=(4, 4), fontsize=8)
+        for number, folder in enumerate(folders):
+            if number == 0:
+                data, info, colours, tag = branch, summary, ("C0", "C1"), ""
+            else:
+                data = read_branch(os.path.join(folder, "branch.csv"))
+                with open(os.path.join(folder, "summary.json")) as f:
+                    info = json.load(f)
+                colours, tag = (f"C{2 * number}", f"C{2 * number + 1}"), f" ({os.path.basename(os.path.normpath(folder))})"
+            stable = data.get("stable")
+            for key, colour in ((f"max_{name}", colours[0]), (f"min_{name}", colours[1])):
+                if stable is None:
+                    ax.plot(data["omega"], data[key], color=colour, lw=1.2, label=key + tag)
+                else:  # stable solid, unstable dashed
+                    for flag, style in ((1.0, "-"), (0.0, "--")):
+                        ys = [y if s == flag else float("nan") for y, s in zip(data[key], stable)]
+                        ax.plot(data["omega"], ys, style, color=colour, lw=1.2, label=key + tag if flag else None)
+            for sp in info.get("special_points", []):
+                for key in (f"max_{name}", f"min_{name}"):
+                    if key in sp:
+                        ax.plot(sp["omega"], sp[key], "o", color="k", ms=4)
+                        ax.annotate(sp["type"], (sp["omega"], sp[key]), textcoords="offset points", xytext=(4, 4), fontsize=8)
         ax.set_xlabel(r"$\omega$ [rad/s]")
         ax.set_ylabel(f"{name}{unit}")
         ax.grid(alpha=0.3)

@@ -2,9 +2,12 @@
 // starting from a frc limit point, one-line errors for bad flags.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "cli_support.hpp"
 #include "test_support.hpp"
@@ -62,6 +65,92 @@ TEST(TrackCli, FollowsTheFirstLimitPointInAmplitudeToItsCusp) {
   ASSERT_EQ(si["crossings"].size(), 2u);
   for (const auto& c : si["crossings"]) EXPECT_TRUE(c["status"] == "open" || c["status"] == "duplicate") << c.dump();
   EXPECT_EQ(si["crossings"][0]["status"], "open");
+}
+
+// The NLTVA example has a documented isola (examples/nltva.toml): its tracking curve shows where
+// it is born and where it merges, `isolas` computes it at A = 0.15 where the NFRC from the linear
+// solution does not reach it, and a simulation started on its stable part stays on it while one
+// from rest settles on the main branch (the paper's Fig. 12).
+TEST(TrackCli, FindsTheIsolaOfTheNonlinearAbsorberAndTimeIntegrationConfirmsIt) {
+  const std::string nltva = hbtrack::test::source_path("examples/nltva.toml");
+  const fs::path root = fs::temp_directory_path() / ("hbtrack_nltva_" + std::to_string(getpid()));
+  fs::remove_all(root);
+  const std::string frc = (root / "frc").string(), track = (root / "track").string(), isolas = (root / "isolas").string();
+  ASSERT_EQ(run_cli("frc " + nltva + " -o " + frc + " -q").exit_code, 0);
+  const CliRun t = run_cli("track " + nltva + " --from " + frc + " --lp 1 --param amplitude --range 0.01:0.4 -o " + track + " -q");
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  const nlohmann::json ts = read_json(fs::path(track) / "summary.json");
+  bool born = false, merges = false;
+  for (const auto& sp : ts["special_points"]) {
+    const double w = sp["omega"], a = sp["amplitude"];
+    born = born || (sp["type"] == "min" && std::abs(w - 1.80) < 0.01 && std::abs(a - 0.1247) < 1e-3);
+    merges = merges || (sp["type"] == "max" && std::abs(w - 1.44) < 0.01 && std::abs(a - 0.1856) < 1e-3);
+  }
+  EXPECT_TRUE(born) << ts["special_points"].dump();
+  EXPECT_TRUE(merges) << ts["special_points"].dump();
+
+  const CliRun i = run_cli("isolas " + nltva + " --from " + track + " --at 0.15 -o " + isolas + " -q");
+  ASSERT_EQ(i.exit_code, 0) << i.err;
+  const nlohmann::json is = read_json(fs::path(isolas) / "summary.json");
+  ASSERT_EQ(is["isolas"], 1) << is.dump();
+  const fs::path isola = fs::path(isolas) / "isola_1";
+  const nlohmann::json isola_summary = read_json(isola / "summary.json");
+  EXPECT_EQ(isola_summary["stop_reason"], "closed");
+  // Closed: the last row of states.csv repeats the first.
+  std::ifstream states(isola / "states.csv");
+  std::string header, first, line, last;
+  std::getline(states, header);
+  std::getline(states, first);
+  while (std::getline(states, line)) last = line;
+  EXPECT_EQ(first, last);
+  // Detached: the main NFRC at the same amplitude stays below a third of the isola's smallest peak.
+  const std::string main = (root / "main").string();
+  ASSERT_EQ(run_cli("frc " + nltva + " --set amplitude=0.15 -o " + main + " -q").exit_code, 0);
+  auto extreme_of_max_x1 = [](const fs::path& branch, double lo, double hi, bool smallest) {
+    std::ifstream in(branch);
+    std::string row;
+    std::getline(in, row);
+    const auto cols = csv_header(branch);
+    const size_t col = static_cast<size_t>(std::find(cols.begin(), cols.end(), "max_x1") - cols.begin());
+    double extreme = smallest ? 1e300 : 0.0;
+    while (std::getline(in, row)) {
+      std::vector<double> v;
+      std::stringstream ss(row);
+      for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+      if (v[0] < lo || v[0] > hi) continue;
+      extreme = smallest ? std::min(extreme, v[col]) : std::max(extreme, v[col]);
+    }
+    return extreme;
+  };
+  const double isola_smallest = extreme_of_max_x1(isola / "branch.csv", 1.6, 2.3, true);
+  EXPECT_LT(3.0 * extreme_of_max_x1(fs::path(main) / "branch.csv", 1.6, 2.3, false), isola_smallest);
+
+  // Time integration on the isola's stable part (row 23 at the writing; any stable row with a
+  // large amplitude will do) against a start from rest at the same frequency.
+  std::ifstream branch(isola / "branch.csv");
+  std::getline(branch, line);
+  const auto cols = csv_header(isola / "branch.csv");
+  const size_t stable_col = static_cast<size_t>(std::find(cols.begin(), cols.end(), "stable") - cols.begin());
+  const size_t max_col = static_cast<size_t>(std::find(cols.begin(), cols.end(), "max_x1") - cols.begin());
+  long row = -1, best = -1;
+  double omega = 0, peak = 0;
+  while (std::getline(branch, line)) {
+    ++row;
+    std::vector<double> v;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+    if (v[stable_col] == 1.0 && v[max_col] > peak && v[0] > 1.8 && v[0] < 2.1) best = row, omega = v[0], peak = v[max_col];
+  }
+  ASSERT_GE(best, 0) << "no stable isola point between omega 1.8 and 2.1";
+  const std::string on_isola = (root / "sim_isola").string(), from_rest = (root / "sim_rest").string();
+  ASSERT_EQ(run_cli("simulate " + nltva + " --from " + isola.string() + " --point " + std::to_string(best) + " -o " + on_isola + " -q").exit_code, 0);
+  char omega_text[40];
+  std::snprintf(omega_text, sizeof omega_text, "%.17g", omega);
+  ASSERT_EQ(run_cli("simulate " + nltva + " --set amplitude=0.15 --omega " + omega_text + " -o " + from_rest + " -q").exit_code, 0);
+  const double stays = read_json(fs::path(on_isola) / "summary.json")["max_x1"];
+  const double rest = read_json(fs::path(from_rest) / "summary.json")["max_x1"];
+  EXPECT_NEAR(stays, peak, 5e-3 * peak);  // the steady-state criterion of simulate, 0.5 %
+  EXPECT_LT(3.0 * rest, peak);
 }
 
 TEST(TrackCli, ReadsSubnormalHarmonicsBackAsNumbers) {

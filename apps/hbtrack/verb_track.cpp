@@ -255,6 +255,12 @@ int run_isolas(const IsolaOptions& o) {
         special.push_back(p);
       }
       j["special_points"] = special;
+      // Each branch folder is a result folder of its own (plot_branch.py, simulate --from).
+      json branch_summary = {{"verb", "isolas"},        {"options", options_json(c, hbm)}, {"stop_reason", s.stop_reason},
+                             {"points", s.points},       {"special_points", special},       {"outputs", json::array()}};
+      for (const auto& out : c.outputs)
+        branch_summary["outputs"].push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
+      write_json_atomically(dir + "/summary.json", branch_summary);
     }
     crossings.push_back(j);
   }
