@@ -19,31 +19,14 @@
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/stability/floquet.hpp"
 #include "hbtrack/stability/hill.hpp"
+#include "bench_support.hpp"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-double dense_lu_seconds(int m) {
-  Eigen::MatrixXd a = Eigen::MatrixXd::Random(m, m) + m * Eigen::MatrixXd::Identity(m, m);
-  std::vector<double> times;
-  double sink = 0;
-  for (int r = 0; r < 15; ++r) {
-    const auto t0 = Clock::now();
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
-    times.push_back(seconds_since(t0));
-    sink += lu.matrixLU()(0, 0);
-  }
-  if (sink == 42.0) std::printf(" ");  // keep the factorisations alive
-  return median(times);
-}
+using hbtrack::bench::Clock;
+using hbtrack::bench::dense_lu_seconds;
+using hbtrack::bench::median;
+using hbtrack::bench::seconds_since;
 
 }  // namespace
 

@@ -18,33 +18,14 @@
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/stability/hill.hpp"
+#include "bench_support.hpp"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-// Median time of one dense partial-pivoting LU of a well-conditioned m x m matrix.
-double dense_lu_seconds(int m) {
-  Eigen::MatrixXd a = Eigen::MatrixXd::Random(m, m) + m * Eigen::MatrixXd::Identity(m, m);
-  const int reps = std::max(5, static_cast<int>(2e7 / (static_cast<double>(m) * m * m)));
-  std::vector<double> times;
-  double sink = 0;
-  for (int r = 0; r < std::min(reps, 2000); ++r) {
-    const auto t0 = Clock::now();
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
-    times.push_back(seconds_since(t0));
-    sink += lu.matrixLU()(0, 0);
-  }
-  if (sink == 42.0) std::printf(" ");  // keep the factorisations alive
-  return median(times);
-}
+using hbtrack::bench::Clock;
+using hbtrack::bench::dense_lu_seconds;
+using hbtrack::bench::median;
+using hbtrack::bench::seconds_since;
 
 // The chain example with n masses, the contact and the forcing at the free end, the range
 // around the first mode, and the forcing scaled so that the linear peak is three gaps.

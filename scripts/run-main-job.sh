@@ -3,7 +3,7 @@
 # parametric blade by scripts/make-blade-rom.sh): its nominal NFRC with stability and limit
 # points, the tracking of its resonance limit point in the forcing amplitude, and the same chain on
 # the small examples (NFRCs, Duffing limit points tracked to their cusp, isolas search), with
-# figures, into results/.
+# figures, into results/, and the isola of the nonlinear absorber example.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -22,7 +22,7 @@ $hbtrack track examples/blade/nominal.toml --from results/blade_nominal --lp 1 -
 /usr/bin/python3 python/plot_tracking.py results/blade_track_amplitude -o results/blade_track_amplitude/tracking.png
 
 # The small examples.
-for example in duffing two_dof_contact coupled_duffing chain_contact; do
+for example in duffing two_dof_contact coupled_duffing chain_contact nltva; do
   $hbtrack frc "examples/$example.toml" -o "results/$example"
   /usr/bin/python3 python/plot_branch.py "results/$example"
 done
@@ -31,4 +31,10 @@ for lp in 1 2; do
 done
 /usr/bin/python3 python/plot_tracking.py results/duffing_track_lp1 results/duffing_track_lp2 -o results/duffing_tracking.png
 $hbtrack isolas examples/duffing.toml --from results/duffing_track_lp1 --from results/duffing_track_lp2 --at 1.5 -o results/duffing_isolas
-echo "figures: results/*/nfrc.png, results/blade_track_amplitude/tracking.png, results/duffing_tracking.png"
+# The absorber's isola: born and merging on the tracking curve, computed at A = 0.15.
+$hbtrack track examples/nltva.toml --from results/nltva --lp 1 --param amplitude --range 0.01:0.4 -o results/nltva_track
+/usr/bin/python3 python/plot_tracking.py results/nltva_track -o results/nltva_tracking.png
+$hbtrack frc examples/nltva.toml --set amplitude=0.15 -o results/nltva_A0.15
+$hbtrack isolas examples/nltva.toml --from results/nltva_track --at 0.15 -o results/nltva_isolas
+/usr/bin/python3 python/plot_branch.py results/nltva_A0.15 --also results/nltva_isolas/isola_1 -o results/nltva_isola.png
+echo "figures: results/*/nfrc.png, results/blade_track_amplitude/tracking.png, results/*tracking.png, results/nltva_isola.png"

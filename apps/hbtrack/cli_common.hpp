@@ -2,6 +2,7 @@
 // What every hbtrack verb shares: registration, the uniform failure types, result-folder rows
 // and the progress line.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -11,6 +12,10 @@
 #include "hbtrack/io/case_file.hpp"
 
 namespace hbtrack::cli {
+
+// Wall-clock timings for summary.json.
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // A verb: its CLI11 sub-command and what runs when it was chosen (returns the exit code).
 struct Verb {

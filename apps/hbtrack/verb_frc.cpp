@@ -11,9 +11,7 @@ namespace hbtrack::cli {
 namespace {
 
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 int run_frc(const CommonOptions& o) {
   const auto t0 = Clock::now();

@@ -16,7 +16,6 @@ namespace hbtrack::cli {
 namespace {
 
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
 
 // The paper's first bending, second bending and first torsion frequencies of rotor 67 (rad/s).
 constexpr double kPaperFrequencies[] = {2039.78, 6343.69, 10745.26};

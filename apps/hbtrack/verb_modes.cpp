@@ -12,7 +12,6 @@ namespace hbtrack::cli {
 namespace {
 
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
 
 int run_modes(const CommonOptions& o, int count) {
   const auto t0 = Clock::now();

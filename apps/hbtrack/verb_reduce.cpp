@@ -18,10 +18,8 @@ namespace hbtrack::cli {
 namespace {
 
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 struct ReduceOptions {
   std::string mass, stiffness, calculix, nodes, boundary_file, out_dir;

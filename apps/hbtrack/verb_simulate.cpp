@@ -25,9 +25,7 @@ namespace hbtrack::cli {
 namespace {
 
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Numeric flags arrive as text and are checked here, so that a bad value gives the tool's
 // one-line CaseError (exit 2) naming the flag.

@@ -14,9 +14,7 @@ namespace hbtrack::cli {
 namespace {
 
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 struct TrackOptions {
   CommonOptions common;

@@ -316,7 +316,9 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     bool accepted = converged && (y - x).dot(t) > 0 && (smallest_step || (y - prediction).norm() <= ds);
     Tangent tan_new;
     if (accepted) {
-      tan_new = s.tangent(t);
+      // Through a corner (smallest step) the branch goes on the way the step went: oriented by
+      // the old tangent, a turn sharper than 90 degrees would send it back along itself.
+      tan_new = s.tangent(smallest_step ? VectorXd((y - x).normalized()) : t);
       accepted = smallest_step || std::acos(std::clamp(t.dot(tan_new.t), -1.0, 1.0)) <= options.max_angle;
     }
     if (!accepted) {

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <complex>
 #include <numeric>
-#include <optional>
+#include <memory>
 #include <set>
 
 #include "hill_pencil.hpp"
@@ -33,7 +33,7 @@ class HillShiftInvert {
   Eigen::Index cols() const { return 2 * size_; }
   void set_shift(double sigma) {
     sigma_ = sigma;
-    pencil_.emplace(j_, d1_, m_, sigma, coupled_);
+    pencil_ = std::make_unique<HillPencil>(j_, d1_, m_, sigma, coupled_);
   }
   void perform_op(const double* x_in, double* y_out) const {
     const Eigen::Map<const Eigen::VectorXd> x1(x_in, size_), x2(x_in + size_, size_);
@@ -58,7 +58,7 @@ class HillShiftInvert {
   Eigen::Index size_;
   std::vector<int> coupled_;
   double sigma_ = 0;
-  std::optional<HillPencil> pencil_;
+  std::unique_ptr<HillPencil> pencil_;  // (std::optional here trips GCC 12's -Wmaybe-uninitialized at -O1)
 };
 
 // Hill's eigenvalues nearest a small real shift (eigenvalue families l + i k w share their real
