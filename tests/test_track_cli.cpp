@@ -65,6 +65,15 @@ TEST(TrackCli, FollowsTheFirstLimitPointInAmplitudeToItsCusp) {
   ASSERT_EQ(si["crossings"].size(), 2u);
   for (const auto& c : si["crossings"]) EXPECT_TRUE(c["status"] == "open" || c["status"] == "duplicate") << c.dump();
   EXPECT_EQ(si["crossings"][0]["status"], "open");
+
+  // A limit point beyond the case's frequency range is reported, not followed.
+  const CliRun narrow = run_cli("isolas " + kDuffing + " --from " + out.string() + " --at 1.5 --set continuation.omega_end=1.3 -o " +
+                                isolas.string() + " -q");
+  ASSERT_EQ(narrow.exit_code, 0) << narrow.err;
+  int outside = 0;
+  const nlohmann::json narrowed = read_json(isolas / "summary.json");  // kept alive: the loop refers into it
+  for (const auto& c : narrowed["crossings"]) outside += c["status"] == "outside_range";
+  EXPECT_EQ(outside, 1);
 }
 
 // The NLTVA example has a documented isola (examples/nltva.toml): its tracking curve shows where

@@ -156,6 +156,8 @@ std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, 
       }
       if (cand.same_as >= 0) {
         cand.status = "duplicate";
+      } else if (cand.start.omega < window.lambda_min || cand.start.omega > window.lambda_max) {
+        cand.status = "outside_range";  // a limit point beyond the case's frequency range
       } else {
         cand.branch = compute_branch(hbm, options, outputs, cand.start.x, cand.start.omega, window);
         const std::string& reason = cand.branch.continuation.summary.stop_reason;

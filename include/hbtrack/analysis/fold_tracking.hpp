@@ -72,7 +72,8 @@ LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const Eigen::Vector
 struct IsolaCandidate {
   LocatedFold start;
   std::string status;  // "isola" (closed on itself), "open" (reached the omega window: main
-                       // branch), "duplicate" (a limit point of a branch already computed), "failed"
+                       // branch), "duplicate" (a limit point of a branch already computed),
+                       // "outside_range" (beyond the case's omega range), "failed"
   int same_as = -1;    // for duplicates: the candidate whose branch holds this limit point
   NfrcResult branch;   // for isola and open
 };
