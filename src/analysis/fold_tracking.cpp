@@ -102,7 +102,7 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
       e.x = system->harmonics(sp.u);
       e.omega = system->omega(sp.u);
       e.parameter = sp.lambda;
-      e.index = std::max(0, offset + sp.index);
+      e.index = leg == 2 && sp.index == 0 ? 0 : std::max(0, offset + sp.index);  // leg 2 starts at point 0
       hbm.parameters().value(parameter) = sp.lambda;
       e.recorded = record_point(hbm, e.x, e.omega, outputs);
       result.extrema.push_back(std::move(e));
