@@ -118,9 +118,12 @@ namespace {
 // The two-dof contact example with a smooth (sqrt) contact law, so that the harmonic balance
 // converges spectrally and Hill's method can be compared with the monodromy matrix.
 std::vector<std::string> smooth_two_dof(double width, int harmonics) {
-  return {"elements[0].type=\"regularized_contact\"", "elements[0].law=\"sqrt\"",
-          "elements[0].width=" + std::to_string(width), "elements[0].stiffness=10",
-          "harmonic_balance.harmonics=" + std::to_string(harmonics), "harmonic_balance.samples=512"};
+  // Appended, not "text" + std::to_string(...): GCC 12 reports a false -Warray-bounds on that at -O3.
+  std::string width_set = "elements[0].width=", harmonics_set = "harmonic_balance.harmonics=";
+  width_set += std::to_string(width);
+  harmonics_set += std::to_string(harmonics);
+  return {"elements[0].type=\"regularized_contact\"", "elements[0].law=\"sqrt\"", width_set, "elements[0].stiffness=10", harmonics_set,
+          "harmonic_balance.samples=512"};
 }
 }  // namespace
 
