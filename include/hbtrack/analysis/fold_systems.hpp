@@ -45,7 +45,6 @@ class FoldSystem : public ContinuationProblem {
   Eigen::VectorXd unknown_scale(const Eigen::VectorXd& u) const override;
   double parameter_scale() const override { return scales_.parameter; }
   double residual_scale() const override { return scales_.force; }
-  int parameter() const { return parameter_; }
 
  protected:
   // R, and with `derivatives` R_x, R_omega, R_gamma, at (x, omega) with gamma set.
