@@ -25,6 +25,7 @@ struct IsolaOptions {
   CommonOptions common;
   std::vector<std::string> from;
   std::string at;
+  bool locate_only = false;
 };
 
 // The case rebuilt with the settings of the result folder `dir`, then the user's --set.
@@ -218,13 +219,14 @@ int run_isolas(const IsolaOptions& o) {
   summary["options"]["isolas"] = {{"from", o.from}, {"parameter", parameter_name}, {"at", value}};
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
 
-  const std::vector<IsolaCandidate> found = compute_isolas(hbm, parameter, value, curves, scales, c.nfrc, c.outputs);
+  const std::vector<IsolaCandidate> found = compute_isolas(hbm, parameter, value, curves, scales, c.nfrc, c.outputs, !o.locate_only);
   json crossings = json::array();
   int isolas = 0;
   for (size_t k = 0; k < found.size(); ++k) {
     const IsolaCandidate& f = found[k];
     json j = {{"status", f.status}, {"omega", f.start.omega}, {"converged", f.start.converged}};
     if (f.same_as >= 0) j["same_as"] = f.same_as;
+    if (f.start.converged) add_outputs(j, c, record_point(hbm, f.start.x, f.start.omega, c.outputs));
     if (f.status == "isola" || f.status == "open") {
       const std::string name = f.status == "isola" ? "isola_" + std::to_string(++isolas) : "open_" + std::to_string(k + 1);
       const std::string dir = o.common.out_dir + "/" + name;
@@ -291,6 +293,7 @@ void add_track_verbs(CLI::App& app, VerbList& verbs) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   i->add_option("--at", isolas.at, "the parameter value")->required();
+  i->add_flag("--locate-only", isolas.locate_only, "only locate the limit points where the curves cross --at (no branches)");
   verbs.push_back({i, [] { return run_isolas(isolas); }});
 }
 

@@ -58,11 +58,19 @@ std::string extremum_type(const std::vector<BranchPoint>& leg, int index) {
 }  // namespace
 
 LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
-                        const ContinuationOptions& options) {
+                        const ContinuationOptions& options, const FoldScales& fallback) {
   BorderedFoldSystem system(hbm, parameter, scales);
   VectorXd u = start_unknowns(system, hbm, x, omega);
   LocatedFold f;
-  f.converged = newton_at_fixed_parameter(system, u, hbm.parameters().value(parameter), options.tolerance, 3 * options.max_iterations) >= 0;
+  const double value = hbm.parameters().value(parameter);
+  f.converged = newton_at_fixed_parameter(system, u, value, options.tolerance, 3 * options.max_iterations) >= 0;
+  if (!f.converged && scales.force < fallback.force) {
+    // The extra digits asked for may lie below the round-off of a stiff model: a fold located
+    // to the case's own tolerance is still located.
+    BorderedFoldSystem plain(hbm, parameter, fallback);
+    u = start_unknowns(plain, hbm, system.harmonics(u), system.omega(u));
+    f.converged = newton_at_fixed_parameter(plain, u, value, options.tolerance, options.max_iterations) >= 0;
+  }
   f.x = system.harmonics(u);
   f.omega = system.omega(u);
   return f;
@@ -119,7 +127,8 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
 
 std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, double value,
                                            const std::vector<std::vector<FoldCurvePoint>>& curves, const FoldScales& scales,
-                                           const NfrcOptions& options, const std::vector<OutputDof>& outputs) {
+                                           const NfrcOptions& options, const std::vector<OutputDof>& outputs,
+                                           bool follow_branches) {
   const double saved = hbm.parameters().value(parameter);
   hbm.parameters().value(parameter) = value;
   // Two more digits than the branch needs, so that its continuation starts without a Newton
@@ -141,7 +150,8 @@ std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, 
       if (!((a.parameter - value) * (b.parameter - value) < 0 || b.parameter == value)) continue;
       const double f = (value - a.parameter) / (b.parameter - a.parameter);
       IsolaCandidate cand;
-      cand.start = locate_fold(hbm, parameter, a.x + f * (b.x - a.x), a.omega + f * (b.omega - a.omega), strict, options.continuation);
+      cand.start =
+          locate_fold(hbm, parameter, a.x + f * (b.x - a.x), a.omega + f * (b.omega - a.omega), strict, options.continuation, scales);
       if (!cand.start.converged) {
         cand.status = "failed";
         out.push_back(std::move(cand));
@@ -158,6 +168,8 @@ std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, 
         cand.status = "duplicate";
       } else if (cand.start.omega < window.lambda_min || cand.start.omega > window.lambda_max) {
         cand.status = "outside_range";  // a limit point beyond the case's frequency range
+      } else if (!follow_branches) {
+        cand.status = "located";
       } else {
         cand.branch = compute_branch(hbm, options, outputs, cand.start.x, cand.start.omega, window);
         const std::string& reason = cand.branch.continuation.summary.stop_reason;

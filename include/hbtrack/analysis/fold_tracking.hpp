@@ -57,14 +57,16 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const Eigen::
                               const FoldScales& scales, const FoldTrackingOptions& options,
                               const std::vector<OutputDof>& outputs, const FoldObserver& observer = {});
 
-// A limit point of the NFRC at the parameter's current value, from an approximation.
+// A limit point of the NFRC at the parameter's current value, from an approximation: Newton on
+// the minimally augmented system in `scales`, or, when round-off keeps it from that tolerance, in
+// the looser `fallback` scales.
 struct LocatedFold {
   bool converged = false;
   Eigen::VectorXd x;
   double omega = 0;
 };
 LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
-                        const FoldScales& scales, const ContinuationOptions& options);
+                        const FoldScales& scales, const ContinuationOptions& options, const FoldScales& fallback);
 
 // ---- isolated branches ---------------------------------------------------------------------
 
@@ -73,17 +75,19 @@ struct IsolaCandidate {
   LocatedFold start;
   std::string status;  // "isola" (closed on itself), "open" (reached the omega window: main
                        // branch), "duplicate" (a limit point of a branch already computed),
-                       // "outside_range" (beyond the case's omega range), "failed"
+                       // "outside_range" (beyond the case's omega range), "located" (branches
+                       // not followed), "failed"
   int same_as = -1;    // for duplicates: the candidate whose branch holds this limit point
   NfrcResult branch;   // for isola and open
 };
 
 // At parameter value `value`: every crossing of the tracking curves `curves` with it, refined
 // onto the limit point, and the branch through each new one followed within the options' omega
-// range until it closes. Stability as options.stability.
+// range until it closes. Stability as options.stability. With follow_branches false only the
+// limit points are located (the cheap check that a validation NFRC's LPs lie on the curves).
 std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, double value,
                                            const std::vector<std::vector<FoldCurvePoint>>& curves,
                                            const FoldScales& scales, const NfrcOptions& options,
-                                           const std::vector<OutputDof>& outputs);
+                                           const std::vector<OutputDof>& outputs, bool follow_branches = true);
 
 }  // namespace hbtrack
