@@ -527,6 +527,44 @@ void read_outputs(const Reader& in, const toml::value& root, CaseDefinition& c) 
   }
 }
 
+void read_study(const Reader& in, const toml::value& root, CaseDefinition& c) {
+  const toml::value* st = in.find(root, "study");
+  if (!st) return;
+  in.table(*st, "study");
+  in.check_keys(*st, "study", {"track", "max_points", "simulate_periods"});
+  StudySettings& study = c.study;
+  study.max_points = in.integer_or(*st, "max_points", "study.max_points", study.max_points);
+  if (study.max_points < 2) in.fail(&st->at("max_points"), "study.max_points", "must be >= 2");
+  study.simulate_periods = in.integer_or(*st, "simulate_periods", "study.simulate_periods", study.simulate_periods);
+  if (study.simulate_periods < 0) in.fail(&st->at("simulate_periods"), "study.simulate_periods", "must be >= 0");
+  const toml::value* track = in.find(*st, "track");
+  if (!track) return;
+  if (!track->is_array()) in.fail(track, "study.track", "expected an array of tables {parameter = ..., range = [lo, hi]}");
+  for (size_t i = 0; i < track->as_array().size(); ++i) {
+    const std::string field = "study.track[" + std::to_string(i) + "]";
+    const toml::value& t = in.table(track->as_array()[i], field);
+    in.check_keys(t, field, {"parameter", "range"});
+    StudyTrack s;
+    const toml::value& name = in.require(t, "parameter", field + ".parameter");
+    s.parameter = in.string(name, field + ".parameter");
+    if (c.parameters.find(s.parameter) < 0) {
+      const std::string guess = nearest(s.parameter, c.parameters.names());
+      in.fail(&name, field + ".parameter", "unknown parameter '" + s.parameter + "'" + (guess.empty() ? " (declare it in [parameters])" : " (did you mean '" + guess + "'?)"));
+    }
+    const toml::value& range = in.require(t, "range", field + ".range");
+    const VectorXd r = in.vector(range, field + ".range");
+    if (r.size() != 2 || !(r(0) < r(1))) in.fail(&range, field + ".range", "expected [lo, hi] with lo < hi");
+    s.min = r(0);
+    s.max = r(1);
+    const double value = c.parameters.value(c.parameters.find(s.parameter));
+    if (!(s.min <= value && value <= s.max))
+      in.fail(&range, field + ".range", "must contain the case's " + s.parameter + " = " + std::to_string(value) + " (tracking starts there)");
+    for (const StudyTrack& other : study.track)
+      if (other.parameter == s.parameter) in.fail(&name, field + ".parameter", "'" + s.parameter + "' is tracked twice");
+    study.track.push_back(s);
+  }
+}
+
 // Applies "NAME=VALUE" overrides to the parsed TOML document.
 void apply_overrides(const Reader& in, toml::value& root, const std::vector<std::string>& overrides) {
   for (const std::string& o : overrides) {
@@ -622,7 +660,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   Reader in(path);
   if (!root.is_table()) throw CaseError(path + ": expected a TOML table at the top level");
   apply_overrides(in, root, overrides);
-  in.check_keys(root, "", {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs"});
+  in.check_keys(root, "", {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs", "study"});
   CaseDefinition c;
   c.path = path;
   read_model(in, root, c);
@@ -638,6 +676,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   read_settings(in, root, c);
   check_forcing_within_harmonics(in, root, c);
   read_outputs(in, root, c);
+  read_study(in, root, c);
   return c;
 }
 

@@ -21,6 +21,18 @@ class CaseError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The [study] section: what `hbtrack study` varies. Each tracked parameter gets every limit point
+// of the nominal NFRC followed over [min, max] (the parameter's case value lies inside).
+struct StudyTrack {
+  std::string parameter;
+  double min = 0, max = 0;
+};
+struct StudySettings {
+  std::vector<StudyTrack> track;
+  int max_points = 400;       // per leg of a tracking curve
+  int simulate_periods = 60;  // periods of the time-integration check, 0 for none
+};
+
 struct CaseDefinition {
   std::string path;
   StructuralModel model;
@@ -29,6 +41,7 @@ struct CaseDefinition {
   HarmonicBalanceOptions harmonic_balance;
   NfrcOptions nfrc;
   std::vector<OutputDof> outputs;
+  StudySettings study;
 };
 
 // `overrides` are "NAME=VALUE": a named parameter (`amplitude=2`) or a dotted case key

@@ -1,0 +1,110 @@
+#include "study_report.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace hbtrack::cli {
+
+namespace {
+
+using nlohmann::json;
+
+std::string num(double v, const char* format = "%.6g") {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+// The name of the first output column (max_NAME) a special point carries, or "".
+std::string first_output_key(const json& point) {
+  for (const auto& [key, value] : point.items())
+    if (key.rfind("max_", 0) == 0) return key;
+  return "";
+}
+
+void nominal_section(std::ostream& out, const json& s) {
+  if (!s.contains("nfrc")) return;
+  const json& n = s["nfrc"];
+  out << "## Nominal NFRC\n\n" << n.value("points", 0) << " points in " << num(n.value("wall_s", 0.0), "%.1f") << " s ([nfrc/](nfrc/)).\n\n";
+  out << "| special point | omega (rad/s) | first output max |\n|---|---|---|\n";
+  for (const auto& sp : n["special_points"]) {
+    const std::string key = first_output_key(sp);
+    out << "| " << sp.value("type", "") << " | " << num(sp.value("omega", 0.0), "%.2f") << " | "
+        << (key.empty() ? "" : num(sp.value(key, 0.0), "%.4g")) << " |\n";
+  }
+  out << "\n";
+}
+
+void tracking_section(std::ostream& out, const json& s) {
+  if (!s.contains("tracking")) return;
+  out << "## Limit-point tracking\n\n| parameter | range | LP | omega at LP | points | stop | time (s) |\n|---|---|---|---|---|---|---|\n";
+  for (const auto& t : s["tracking"])
+    for (const auto& c : t["curves"]) {
+      out << "| " << t["parameter"].get<std::string>() << " | " << num(t["range"][0]) << " to " << num(t["range"][1]) << " | "
+          << c.value("lp", 0) << " | " << num(c.value("omega", 0.0), "%.2f") << " | ";
+      if (c.value("same_curve_as_earlier_lp", false)) out << "on an earlier LP's curve | | |\n";
+      else out << c.value("points", 0) << " | " << c.value("stop_reason", "") << " | " << num(c.value("wall_s", 0.0), "%.1f") << " |\n";
+    }
+  out << "\n### Extrema of the parameter along the curves (appearance and merging of limit points)\n\n";
+  out << "| parameter | extremum | value | omega (rad/s) | first output max | curve |\n|---|---|---|---|---|---|\n";
+  int count = 0;
+  for (const auto& t : s["tracking"])
+    for (const auto& e : t["extrema"]) {
+      const std::string key = first_output_key(e);
+      out << "| " << t["parameter"].get<std::string>() << " | " << e.value("type", "") << " | " << num(e.value("value", 0.0)) << " | "
+          << num(e.value("omega", 0.0), "%.2f") << " | " << (key.empty() ? "" : num(e.value(key, 0.0), "%.4g")) << " | "
+          << e.value("curve", "") << " |\n";
+      ++count;
+    }
+  if (count == 0) out << "| (none in the ranges) | | | | | |\n";
+  out << "\n### Validation NFRCs and isolated branches\n\nAt each value an NFRC from the linear solution; each of its limit points must "
+         "be a limit point of the tracking curves there (distance: relative, omega and first output). Crossings of the curves "
+         "that no validation NFRC holds announce isolated branches, computed by `hbtrack isolas`.\n\n";
+  out << "| parameter = value | NFRC LPs | on a curve | largest distance | curve crossings | not on the NFRC | isolas |\n"
+         "|---|---|---|---|---|---|---|\n";
+  for (const auto& t : s["tracking"])
+    for (const auto& v : t["validations"]) {
+      const size_t lps = v["limit_points"].size();
+      out << "| " << t["parameter"].get<std::string>() << " = " << num(v.value("value", 0.0)) << " | " << lps << " | "
+          << lps - static_cast<size_t>(v.value("lps_off_the_curves", 0)) << " | " << num(v.value("largest_distance", 0.0), "%.1e") << " | "
+          << v.value("crossings", 0) << " | " << v.value("crossings_not_on_the_nfrc", 0) << " | " << v.value("isolas", 0) << " |\n";
+      for (const auto& i : v.value("isola_branches", json::array()))
+        out << "|   isola [" << i.value("folder", "") << "](" << i.value("folder", "") << "/) | omega " << num(i["omega_range"][0], "%.2f") << " to "
+            << num(i["omega_range"][1], "%.2f") << " | " << i.value("points", 0) << " points | " << i.value("unstable_points", 0)
+            << " unstable | | | |\n";
+    }
+  out << "\n";
+}
+
+void simulation_section(std::ostream& out, const json& s) {
+  if (!s.contains("simulation")) return;
+  const json& m = s["simulation"];
+  out << "## Time integration of the resonance\n\nFrom the HBM state of NFRC point " << m.value("point", 0) << " (omega = "
+      << num(m.value("omega", 0.0), "%.2f") << " rad/s), " << m.value("periods", 0) << " periods of HHT-alpha Newmark in "
+      << num(m.value("wall_s", 0.0), "%.1f") << " s ([simulate/](simulate/)).\n\n| quantity | HBM | simulation | difference |\n|---|---|---|---|\n";
+  for (const auto& o : m["outputs"])
+    out << "| " << o.value("name", "") << " | " << num(o.value("hbm", 0.0), "%.5g") << " | " << num(o.value("simulation", 0.0), "%.5g") << " | "
+        << num(100 * o.value("relative_difference", 0.0), "%+.2f") << " % |\n";
+  out << "\n";
+}
+
+}  // namespace
+
+void write_study_report(const std::string& dir, const json& s) {
+  std::ostringstream out;
+  out << "# hbtrack study of " << s.value("case", "") << "\n\nStatus: " << s.value("stop_reason", "") << ", "
+      << num(s.contains("timings") ? s["timings"].value("wall_s", 0.0) : 0.0, "%.1f") << " s in all. Every number below is in "
+      << "[summary.json](summary.json); each folder is the result of one hbtrack command (its log.txt says which).\n\n";
+  for (const auto& f : s.value("figures", json::array())) out << "![" << f.get<std::string>() << "](" << f.get<std::string>() << ")\n";
+  out << "\n";
+  nominal_section(out, s);
+  tracking_section(out, s);
+  simulation_section(out, s);
+  out << "## Steps\n\n| folder | exit code | time (s) |\n|---|---|---|\n";
+  for (const auto& st : s["steps"])
+    out << "| " << st.value("folder", "") << " | " << st.value("exit_code", 0) << " | " << num(st.value("wall_s", 0.0), "%.1f") << " |\n";
+  std::ofstream(dir + "/index.md") << out.str();
+}
+
+}  // namespace hbtrack::cli

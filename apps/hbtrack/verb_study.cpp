@@ -1,0 +1,402 @@
+// `hbtrack study`: the paper's whole analysis of one case, as the verbs a user would run by hand,
+// each a child process writing its own result folder under DIR (independent ones side by side):
+//   nfrc/                 the nominal NFRC with stability
+//   track_P_lpK/          limit point K followed in parameter P (the case's [study] section)
+//   validate_P_J/         an NFRC at a parameter value next to each extremum of the P curves
+//   crossings_P_J/        the limit points of the tracking curves at that value, located
+//   isolas_P_J/           the branches through the crossings no validation NFRC holds
+//   simulate/             time integration from the stable resonance point of the NFRC
+//   figures/, index.md    the figures and a page with the numbers (study_report.cpp)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <thread>
+
+#include "child_process.hpp"
+#include "cli_common.hpp"
+#include "hbtrack/io/results_writer.hpp"
+#include "result_folder.hpp"
+#include "study_curves.hpp"
+#include "study_report.hpp"
+
+namespace hbtrack::cli {
+
+namespace {
+
+using nlohmann::json;
+
+struct StudyOptions {
+  CommonOptions common;
+  std::vector<std::string> only;  // restrict the tracked parameters
+  int jobs = 0;                   // steps side by side; 0: one per core
+};
+
+// A limit point of a validation NFRC lies on a tracking curve when the located crossing agrees
+// to this (relative omega and output): both are Newton solutions to the case's tolerance and the
+// NFRC's limit point is located by a secant on its test function.
+constexpr double kSameLimitPoint = 1e-5;
+// Validation NFRCs sit this fraction of the parameter range away from an extremum.
+constexpr double kProbeOffset = 0.02;
+
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+// One verb run into DIR/folder. A step that may fail keeps going with what it wrote (exit 1: a
+// tracking leg or a simulation that stopped early still leaves its points).
+struct Step {
+  std::string folder;
+  std::vector<std::string> args;
+  bool must_succeed = false;
+};
+
+// The same extremum reached again (a curve that passes it twice, or the other LP's curve).
+bool already_listed(const json& extrema, const TrackingCurve::Extremum& e) {
+  for (const auto& x : extrema)
+    if (x["type"] == e.type && std::abs(x["value"].get<double>() - e.value) <= 1e-9 * std::abs(e.value) &&
+        std::abs(x["omega"].get<double>() - e.omega) <= 1e-9 * std::abs(e.omega))
+      return true;
+  return false;
+}
+
+class Study {
+ public:
+  Study(const StudyOptions& o, const CaseDefinition& c) : o_(o), c_(c), dir_(o.common.out_dir) {
+    jobs_ = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    for (const StudyTrack& t : c_.study.track)
+      if (o_.only.empty() || std::find(o_.only.begin(), o_.only.end(), t.parameter) != o_.only.end()) tracked_.push_back(t);
+  }
+
+  int run() {
+    const auto t0 = Clock::now();
+    ensure_directory(dir_);
+    summary_ = {{"verb", "study"}, {"case", o_.common.case_path}, {"jobs", jobs_}, {"stop_reason", "running"}, {"steps", json::array()}};
+    save();
+    const bool ok = nominal() && tracking() && validation_and_simulation() && isolas();
+    for (const StudyTrack& t : tracked_) summary_["tracking"].push_back(entries_[t.parameter]);
+    figures();
+    summary_["stop_reason"] = ok ? "completed" : stop_reason_;
+    summary_["timings"] = {{"wall_s", seconds_since(t0)}};
+    save();
+    write_study_report(dir_, summary_);
+    if (!ok) throw RunFailed{"study stopped: " + stop_reason_ + " (results so far in " + dir_ + ")"};
+    if (!o_.common.quiet) std::fprintf(stderr, "study: done in %.1f s -> %s/index.md\n", summary_["timings"]["wall_s"].get<double>(), dir_.c_str());
+    return 0;
+  }
+
+ private:
+  // Runs independent steps side by side; false when the study cannot go on.
+  bool run_steps(const std::vector<Step>& steps) {
+    if (steps.empty()) return true;
+    if (interrupted()) return stop("interrupted");
+    std::vector<ChildTask> tasks;
+    for (const Step& s : steps) {
+      std::vector<std::string> args = s.args;
+      for (const std::string& set : o_.common.sets) args.insert(args.end(), {"--set", set});
+      args.insert(args.end(), {"-q", "-o", dir_ + "/" + s.folder});
+      ensure_directory(dir_ + "/" + s.folder);
+      tasks.push_back(hbtrack_task(args, dir_ + "/" + s.folder + "/log.txt"));
+    }
+    if (!o_.common.quiet) {
+      std::string names;
+      for (const Step& s : steps) names += (names.empty() ? "" : ", ") + s.folder;
+      std::fprintf(stderr, "study: running %s\n", names.c_str());
+    }
+    const std::vector<int> codes = run_tasks(tasks, jobs_, [&](size_t i, int code, double seconds) {
+      if (!o_.common.quiet) std::fprintf(stderr, "study:   %-26s exit %d, %.1f s\n", steps[i].folder.c_str(), code, seconds);
+      summary_["steps"].push_back({{"folder", steps[i].folder}, {"exit_code", code}, {"wall_s", seconds}});
+      save();
+    });
+    for (size_t i = 0; i < steps.size(); ++i) {
+      if (interrupted() || codes[i] >= 128) return stop("interrupted");
+      if (codes[i] == 0 || (codes[i] == 1 && !steps[i].must_succeed)) continue;
+      return stop(steps[i].folder + " failed (exit " + std::to_string(codes[i]) + ", see " + dir_ + "/" + steps[i].folder + "/log.txt)");
+    }
+    return true;
+  }
+  bool stop(const std::string& reason) {
+    stop_reason_ = reason;
+    return false;
+  }
+  void save() const { write_json_atomically(dir_ + "/summary.json", summary_); }
+  std::string first_output() const { return c_.outputs.empty() ? "" : c_.outputs.front().name; }
+  double case_value(const std::string& name) const { return c_.parameters.value(c_.parameters.find(name)); }
+
+  bool nominal() {
+    if (!run_steps({{"nfrc", {"frc", o_.common.case_path}, true}})) return false;
+    const json s = read_summary(dir_ + "/nfrc");
+    for (const auto& sp : s["special_points"])
+      if (sp.value("type", "") == "LP") limit_points_.push_back(sp);
+    summary_["nfrc"] = {{"points", s["points"]}, {"special_points", s["special_points"]}, {"limit_points", limit_points_.size()},
+                        {"wall_s", s["timings"]["wall_s"]}};
+    return true;
+  }
+
+  // Round k follows the k-th limit point in every parameter at once; a limit point that already
+  // lies on an earlier curve of the same parameter (the two folds of one cusp) is not tracked again.
+  bool tracking() {
+    summary_["tracking"] = json::array();
+    const std::string out = first_output();
+    for (const StudyTrack& t : tracked_)
+      entries_[t.parameter] = {{"parameter", t.parameter}, {"range", {t.min, t.max}}, {"curves", json::array()},
+                               {"extrema", json::array()}, {"validations", json::array()}};
+    for (size_t k = 0; k < limit_points_.size(); ++k) {
+      const json& lp = limit_points_[k];
+      const double omega = lp.value("omega", 0.0), output = out.empty() ? 0.0 : lp.value("max_" + out, 0.0);
+      std::vector<Step> round;
+      std::vector<const StudyTrack*> which;
+      for (const StudyTrack& t : tracked_) {
+        // Interpolated between tracking points: a coarser test than kSameLimitPoint.
+        if (lies_on_a_curve(curves_[t.parameter], case_value(t.parameter), omega, output, 1e-3)) {
+          entries_[t.parameter]["curves"].push_back({{"lp", k + 1}, {"omega", omega}, {"same_curve_as_earlier_lp", true}});
+          continue;
+        }
+        const std::string range = number_text(t.min) + ":" + number_text(t.max);
+        round.push_back({"track_" + t.parameter + "_lp" + std::to_string(k + 1),
+                         {"track", o_.common.case_path, "--from", dir_ + "/nfrc", "--lp", std::to_string(k + 1), "--param", t.parameter,
+                          "--range", range, "--set", "continuation.max_points=" + std::to_string(c_.study.max_points)},
+                         false});
+        which.push_back(&t);
+      }
+      if (!run_steps(round)) return false;
+      for (size_t i = 0; i < round.size(); ++i) add_curve(*which[i], k + 1, omega, round[i].folder);
+    }
+    return true;
+  }
+
+  void add_curve(const StudyTrack& t, size_t lp, double omega, const std::string& folder) {
+    const std::string out = first_output();
+    const json s = read_summary(dir_ + "/" + folder);
+    curves_[t.parameter].push_back(read_tracking_curve_folder(dir_ + "/" + folder, t.parameter, out));
+    json& entry = entries_[t.parameter];
+    entry["curves"].push_back({{"lp", lp},
+                               {"omega", omega},
+                               {"folder", folder},
+                               {"points", s.value("points", 0)},
+                               {"stop_reason", s.value("stop_reason", "")},
+                               {"closed", s.value("closed", false)},
+                               {"wall_s", s["timings"].value("wall_s", 0.0)}});
+    for (const auto& e : curves_[t.parameter].back().extrema)
+      if (!already_listed(entry["extrema"], e))
+        entry["extrema"].push_back({{"type", e.type}, {"value", e.value}, {"omega", e.omega}, {"max_" + out, e.first_output}, {"curve", folder}});
+  }
+
+  // NFRCs from the linear solution next to every extremum (or at both ends of a range without
+  // one), the tracking curves' limit points located at the same values, and the time
+  // integration: all independent of each other.
+  bool validation_and_simulation() {
+    std::vector<Step> frcs, crossings;
+    for (const StudyTrack& t : tracked_) {
+      if (curves_[t.parameter].empty()) continue;
+      const std::vector<double> probes = probe_values(curves_[t.parameter], t.min, t.max, kProbeOffset);
+      for (size_t j = 0; j < probes.size(); ++j) {
+        const std::string tag = t.parameter + "_" + std::to_string(j + 1), at = number_text(probes[j]);
+        probes_.push_back({&t, probes[j], tag});
+        frcs.push_back({"validate_" + tag, {"frc", o_.common.case_path, "--set", t.parameter + "=" + at, "--set", "stability.method=none"}, false});
+        Step locate{"crossings_" + tag, {"isolas", o_.common.case_path, "--at", at, "--locate-only"}, true};
+        for (const TrackingCurve& c : curves_[t.parameter]) locate.args.insert(locate.args.end(), {"--from", c.folder});
+        crossings.push_back(locate);
+      }
+    }
+    const long point = simulation_point();
+    if (point >= 0) {
+      const int periods = c_.study.simulate_periods;
+      frcs.push_back({"simulate",
+                      {"simulate", o_.common.case_path, "--from", dir_ + "/nfrc", "--point", std::to_string(point), "--max-periods",
+                       std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods))},
+                      false});
+    }
+    if (!run_steps(frcs) || !run_steps(crossings)) return false;
+    for (const Probe& p : probes_) compare(p);
+    if (point >= 0) compare_simulation(point);
+    return true;
+  }
+
+  struct Probe {
+    const StudyTrack* track;
+    double value;
+    std::string tag;
+  };
+
+  // Every LP of the validation NFRC must be a located crossing; crossings it does not hold
+  // belong to branches it does not reach.
+  void compare(const Probe& p) {
+    const std::string out = first_output();
+    const json validation = read_summary(dir_ + "/validate_" + p.tag);
+    const json crossings = read_summary(dir_ + "/crossings_" + p.tag)["crossings"];
+    json lps = json::array();
+    double worst = 0;
+    int off_the_curves = 0;
+    std::vector<bool> used(crossings.size(), false);
+    for (const auto& sp : validation.value("special_points", json::array())) {
+      if (sp.value("type", "") != "LP") continue;
+      const double omega = sp.value("omega", 0.0), output = out.empty() ? 0.0 : sp.value("max_" + out, 0.0);
+      double best = 1e300;
+      size_t best_k = crossings.size();
+      for (size_t k = 0; k < crossings.size(); ++k) {
+        const std::string status = crossings[k].value("status", "");
+        if (status != "located" && status != "duplicate") continue;
+        const double d_omega = std::abs(crossings[k].value("omega", 0.0) - omega) / std::abs(omega);
+        const double d_output = out.empty() ? 0.0 : std::abs(crossings[k].value("max_" + out, 0.0) - output) / std::max(std::abs(output), 1e-300);
+        if (std::max(d_omega, d_output) < best) best = std::max(d_omega, d_output), best_k = k;
+      }
+      const bool on_curve = best <= kSameLimitPoint;
+      if (on_curve) used[best_k] = true, worst = std::max(worst, best);
+      else ++off_the_curves;
+      lps.push_back({{"omega", omega}, {"max_" + out, output}, {"distance", best}, {"on_a_tracking_curve", on_curve}});
+    }
+    int unseen = 0;
+    for (size_t k = 0; k < crossings.size(); ++k)
+      if (crossings[k].value("status", "") == "located" && !used[k]) ++unseen;
+    entries_[p.track->parameter]["validations"].push_back({{"value", p.value},
+                                                           {"folder", "validate_" + p.tag},
+                                                           {"stop_reason", validation.value("stop_reason", "")},
+                                                           {"limit_points", lps},
+                                                           {"lps_off_the_curves", off_the_curves},
+                                                           {"largest_distance", worst},
+                                                           {"crossings", crossings.size()},
+                                                           {"crossings_not_on_the_nfrc", unseen}});
+  }
+
+  // Limit points of the tracking curves that no NFRC from the linear solution passes announce
+  // isolated branches: `isolas` follows each until it closes.
+  bool isolas() {
+    std::vector<Step> steps;
+    std::vector<json*> where;
+    for (const Probe& p : probes_) {
+      json& validations = entries_[p.track->parameter]["validations"];
+      for (auto& v : validations) {
+        if (v["folder"] != "validate_" + p.tag || v["crossings_not_on_the_nfrc"].get<int>() == 0) continue;
+        Step s{"isolas_" + p.tag, {"isolas", o_.common.case_path, "--at", number_text(p.value)}, false};
+        for (const TrackingCurve& c : curves_[p.track->parameter]) s.args.insert(s.args.end(), {"--from", c.folder});
+        steps.push_back(s);
+        where.push_back(&v);
+      }
+    }
+    if (!run_steps(steps)) return false;
+    for (size_t i = 0; i < steps.size(); ++i) {
+      json& v = *where[i];
+      const json s = read_summary(dir_ + "/" + steps[i].folder);
+      v["isolas_folder"] = steps[i].folder;
+      v["isolas"] = s.value("isolas", 0);
+      v["isola_branches"] = json::array();
+      for (const auto& x : s.value("crossings", json::array()))
+        if (x.value("status", "") == "isola")
+          v["isola_branches"].push_back({{"folder", steps[i].folder + "/" + x.value("folder", "")}, {"omega_range", x["omega_range"]},
+                                         {"points", x["points"]}, {"unstable_points", x["unstable_points"]},
+                                         {"special_points", x["special_points"]}});
+    }
+    return true;
+  }
+
+  // The resonance a user checks first: the stable NFRC point where the first output peaks, moved
+  // down in omega by kSimulationDetuning. At the fold itself the truncated HBM's limit point may
+  // lie a little beyond the full model's, and a simulation there slowly leaves the orbit.
+  long simulation_point() const {
+    constexpr double kSimulationDetuning = 2e-3;
+    if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return -1;
+    const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
+    const auto peak = static_cast<size_t>(b.column("max_" + first_output()));
+    const bool has_stability = std::find(b.header.begin(), b.header.end(), "stable") != b.header.end();
+    const auto stable = has_stability ? static_cast<size_t>(b.column("stable")) : 0;
+    auto best_below = [&](double omega_max) {
+      long best = -1;
+      for (size_t i = 0; i < b.rows.size(); ++i)
+        if ((!has_stability || b.rows[i][stable] == 1.0) && b.rows[i][0] <= omega_max &&
+            (best < 0 || b.rows[i][peak] > b.rows[static_cast<size_t>(best)][peak]))
+          best = static_cast<long>(i);
+      return best;
+    };
+    const long top = best_below(1e300);
+    if (top < 0) return -1;
+    const long detuned = best_below((1.0 - kSimulationDetuning) * b.rows[static_cast<size_t>(top)][0]);
+    return detuned >= 0 ? detuned : top;
+  }
+
+  void compare_simulation(long point) {
+    const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
+    const std::vector<double>& row = b.rows[static_cast<size_t>(point)];
+    const json s = read_summary(dir_ + "/simulate");
+    json cmp = {{"point", point}, {"omega", row[0]}, {"periods", s.value("periods", 0)}, {"converged", s.value("converged", false)},
+                {"wall_s", s.contains("timings") ? s["timings"].value("wall_s", 0.0) : 0.0}, {"outputs", json::array()}};
+    for (const auto& out : c_.outputs)
+      for (const char* kind : {"max_", "min_", "h1_"}) {
+        const std::string key = kind + out.name;
+        const double hbm = row[static_cast<size_t>(b.column(key))], sim = s.value(key, 0.0);
+        cmp["outputs"].push_back({{"name", key}, {"hbm", hbm}, {"simulation", sim}, {"relative_difference", (sim - hbm) / std::abs(hbm)}});
+      }
+    summary_["simulation"] = cmp;
+    save();
+  }
+
+  // Figures are a convenience: a missing matplotlib costs the pictures, not the study.
+  void figures() {
+    ensure_directory(dir_ + "/figures");
+    std::vector<ChildTask> tasks;
+    std::vector<std::string> names;
+    auto plot = [&](const std::string& name, const std::string& script, std::vector<std::string> args) {
+      args.insert(args.end(), {"-o", dir_ + "/figures/" + name});
+      tasks.push_back(python_script_task(script, args, dir_ + "/figures/log.txt"));
+      names.push_back("figures/" + name);
+    };
+    if (summary_.contains("nfrc")) plot("nfrc.png", "plot_branch.py", {dir_ + "/nfrc"});
+    for (const auto& t : summary_["tracking"]) {
+      std::vector<std::string> folders;
+      for (const auto& c : t["curves"])
+        if (c.contains("folder")) folders.push_back(dir_ + "/" + c["folder"].get<std::string>());
+      if (!folders.empty()) plot("tracking_" + t["parameter"].get<std::string>() + ".png", "plot_tracking.py", folders);
+      for (const auto& v : t["validations"]) {
+        std::vector<std::string> overlay{dir_ + "/" + v["folder"].get<std::string>()};
+        for (const auto& i : v.value("isola_branches", json::array())) overlay.insert(overlay.end(), {"--also", dir_ + "/" + i["folder"].get<std::string>()});
+        plot(v["folder"].get<std::string>() + ".png", "plot_branch.py", overlay);
+      }
+    }
+    const std::vector<int> codes = run_tasks(tasks, jobs_);
+    json made = json::array();
+    for (size_t i = 0; i < codes.size(); ++i)
+      if (codes[i] == 0) made.push_back(names[i]);
+    summary_["figures"] = made;
+  }
+
+  const StudyOptions& o_;
+  const CaseDefinition& c_;
+  const std::string dir_;
+  int jobs_ = 1;
+  std::vector<StudyTrack> tracked_;
+  json summary_;
+  json limit_points_ = json::array();
+  std::map<std::string, json> entries_;  // per tracked parameter: curves, extrema, validations
+  std::map<std::string, std::vector<TrackingCurve>> curves_;
+  std::vector<Probe> probes_;
+  std::string stop_reason_;
+};
+
+int run_study(const StudyOptions& o) {
+  const CaseDefinition c = load_case(o.common.case_path, o.common.sets);
+  if (c.study.track.empty()) throw CaseError(o.common.case_path + ": study.track: missing (the parameters to track; see examples/blade/nominal.toml)");
+  for (const std::string& name : o.only) {
+    const bool known = std::any_of(c.study.track.begin(), c.study.track.end(), [&](const StudyTrack& t) { return t.parameter == name; });
+    if (!known) throw CaseError("--only: '" + name + "' is not tracked in the case's [study] section");
+  }
+  if (o.jobs < 0) throw CaseError("--jobs: must be >= 0 (0: one per core)");
+  Study study(o, c);
+  return study.run();
+}
+
+void add_study_verb(CLI::App& app, VerbList& verbs) {
+  static StudyOptions options;
+  CLI::App* s = app.add_subcommand("study", "the whole analysis of a case: NFRC, tracking of every limit point, isolas, validation, figures");
+  add_common_options(s, options.common);
+  s->add_option("--only", options.only, "track only this parameter of [study] (repeatable)")->type_name("NAME");
+  s->add_option("--jobs", options.jobs, "independent steps run side by side (0: one per core)")->type_name("INT")->capture_default_str();
+  verbs.push_back({s, [] { return run_study(options); }});
+}
+
+const VerbRegistrar registrar(add_study_verb);
+
+}  // namespace
+
+}  // namespace hbtrack::cli

@@ -1,0 +1,114 @@
+// `hbtrack study` end to end on a reduced-cost blade (tests/data/blade_small_study.toml: three
+// contact nodes, H = 5): the nominal NFRC, the tracking of its limit points in the amplitude, the
+// validation NFRCs around the cusp, whose every limit point must lie on a tracking curve, and the
+// time-integration check.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_support.hpp"
+#include "test_support.hpp"
+
+namespace fs = std::filesystem;
+using hbtrack::test::CliRun;
+using hbtrack::test::run_cli;
+using nlohmann::json;
+
+namespace {
+
+const std::string kSmallBlade = hbtrack::test::source_path("tests/data/blade_small_study.toml");
+
+json read_json(const fs::path& p) { return json::parse(std::ifstream(p)); }
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+TEST(StudyCli, SmallBladeStudyFindsTheCuspAndEveryValidationLimitPointLiesOnTheTrackingCurve) {
+  const fs::path dir = fresh_dir("hbtrack_study_small_blade");
+  // Stability off: the study's logic does not depend on it and Hill would double the run time.
+  const CliRun r = run_cli("study " + kSmallBlade + " --set stability.method=none -q -o " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json s = read_json(dir / "summary.json");
+  EXPECT_EQ(s["stop_reason"], "completed");
+
+  const json& lps = s["nfrc"]["special_points"];
+  std::vector<double> lp_omega;
+  for (const auto& p : lps)
+    if (p["type"] == "LP") lp_omega.push_back(p["omega"].get<double>());
+  ASSERT_EQ(lp_omega.size(), 2u) << "the contact resonance folds over once";
+
+  ASSERT_EQ(s["tracking"].size(), 1u);
+  const json& amplitude = s["tracking"][0];
+  ASSERT_EQ(amplitude["curves"].size(), 2u);
+  // The two limit points meet at the cusp, so the second lies on the first one's curve.
+  EXPECT_TRUE(amplitude["curves"][0].contains("folder"));
+  EXPECT_TRUE(amplitude["curves"][1].value("same_curve_as_earlier_lp", false));
+
+  // One extremum: the cusp, a minimum of the amplitude below the nominal 40, where the fold is
+  // born on the contact-stiffened resonance: above the linear 1B, below the nominal peak.
+  ASSERT_EQ(amplitude["extrema"].size(), 1u);
+  const json& cusp = amplitude["extrema"][0];
+  EXPECT_EQ(cusp["type"], "min");
+  const double cusp_value = cusp["value"].get<double>();
+  EXPECT_GT(cusp_value, 5.0);
+  EXPECT_LT(cusp_value, 40.0);
+  const double linear_1b = read_json(hbtrack::test::source_path("data/blade/summary.json"))["natural_frequencies"][0].get<double>();
+  EXPECT_GT(cusp["omega"].get<double>(), linear_1b);
+  EXPECT_LT(cusp["omega"].get<double>(), std::max(lp_omega[0], lp_omega[1]));
+
+  // Validation NFRCs on both sides of the cusp: none of the limit points below it, two above,
+  // each of them a limit point of the tracking curve at that amplitude (both are Newton
+  // solutions to the case tolerance: the study's threshold is 1e-5 relative).
+  ASSERT_EQ(amplitude["validations"].size(), 2u);
+  const json& below = amplitude["validations"][0];
+  const json& above = amplitude["validations"][1];
+  EXPECT_LT(below["value"].get<double>(), cusp_value);
+  EXPECT_GT(above["value"].get<double>(), cusp_value);
+  EXPECT_EQ(below["limit_points"].size(), 0u);
+  EXPECT_EQ(below["crossings"], 0);
+  EXPECT_EQ(above["limit_points"].size(), 2u);
+  for (const auto& v : amplitude["validations"]) {
+    EXPECT_EQ(v["lps_off_the_curves"], 0) << "at amplitude " << v["value"];
+    EXPECT_EQ(v["crossings_not_on_the_nfrc"], 0) << "no isola on this blade at amplitude " << v["value"];
+    for (const auto& lp : v["limit_points"]) EXPECT_LE(lp["distance"].get<double>(), 1e-5);
+  }
+
+  // Time integration from the resonance's HBM state: two periods stay on the HBM orbit to a few
+  // percent (the H = 5 truncation; tests/test_timeint_* check the integrators themselves).
+  ASSERT_TRUE(s.contains("simulation"));
+  for (const auto& o : s["simulation"]["outputs"]) {
+    if (o["name"].get<std::string>().rfind("h1_", 0) == 0) {
+      EXPECT_LT(std::abs(o["relative_difference"].get<double>()), 0.05) << o["name"];
+    }
+  }
+
+  std::stringstream page;
+  page << std::ifstream(dir / "index.md").rdbuf();
+  EXPECT_NE(page.str().find("| amplitude | min |"), std::string::npos) << "the cusp is in the page's table";
+  for (const auto& f : s["figures"]) EXPECT_GT(fs::file_size(dir / f.get<std::string>()), 1000u) << f;
+  fs::remove_all(dir);
+}
+
+TEST(StudyCli, BadStudyInputGivesOneLineErrors) {
+  const fs::path dir = fresh_dir("hbtrack_study_bad");
+  const CliRun no_study = run_cli("study " + hbtrack::test::source_path("examples/duffing.toml") + " -o " + dir.string());
+  EXPECT_EQ(no_study.exit_code, 2);
+  EXPECT_NE(no_study.err.find("study.track: missing"), std::string::npos) << no_study.err;
+  const CliRun only = run_cli("study " + kSmallBlade + " --only clearance -o " + dir.string());
+  EXPECT_EQ(only.exit_code, 2);
+  EXPECT_NE(only.err.find("--only: 'clearance' is not tracked"), std::string::npos) << only.err;
+  const CliRun range = run_cli("study " + kSmallBlade + " --set amplitude=70 -o " + dir.string());
+  EXPECT_EQ(range.exit_code, 2);
+  EXPECT_NE(range.err.find("study.track[0].range: must contain the case's amplitude"), std::string::npos) << range.err;
+  for (const CliRun& run : {no_study, only, range}) EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace
