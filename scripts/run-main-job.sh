@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # The main job: builds hbtrack, then the study of the shipped blade (data/blade, reduced from the
-# parametric blade by scripts/make-blade-rom.sh): its nominal NFRC with stability and limit
-# points, the tracking of its resonance limit point in the forcing amplitude, and the same chain on
-# the small examples (NFRCs, Duffing limit points tracked to their cusp, isolas search), with
-# figures, into results/, and the isola of the nonlinear absorber example.
+# parametric blade by scripts/make-blade-rom.sh) with `hbtrack study`, and the same chain on the
+# small examples (NFRCs, Duffing limit points tracked to their cusp, isolas search) with figures,
+# into results/, and the isola of the nonlinear absorber example.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -11,15 +10,11 @@ cmake --build build -j "$(nproc)"
 hbtrack=./build/hbtrack
 mkdir -p results
 
-# The blade: nominal NFRC (stability by Hill's method), then its resonance LP in amplitude.
+# The blade study (the [study] section of its case): nominal NFRC with stability, every limit
+# point tracked in amplitude, friction coefficient and clearance, validation NFRCs, isolas,
+# a time-integration check, figures and results/blade_study/index.md.
 $hbtrack modes examples/blade/nominal.toml --count 6 -o results/blade_modes
-$hbtrack frc examples/blade/nominal.toml -o results/blade_nominal
-/usr/bin/python3 python/plot_branch.py results/blade_nominal --units m
-# Each leg of the tracking curve is capped at 60 points: the curve turns sharply each time a
-# tip node enters or leaves contact, and the full study takes longer than a main job should.
-$hbtrack track examples/blade/nominal.toml --from results/blade_nominal --lp 1 --param amplitude --range 1:80 \
-  --set continuation.max_points=60 -o results/blade_track_amplitude
-/usr/bin/python3 python/plot_tracking.py results/blade_track_amplitude -o results/blade_track_amplitude/tracking.png
+$hbtrack study examples/blade/nominal.toml -o results/blade_study
 
 # The small examples.
 for example in duffing two_dof_contact coupled_duffing chain_contact nltva; do
@@ -37,4 +32,5 @@ $hbtrack track examples/nltva.toml --from results/nltva --lp 1 --param amplitude
 $hbtrack frc examples/nltva.toml --set amplitude=0.15 -o results/nltva_A0.15
 $hbtrack isolas examples/nltva.toml --from results/nltva_track --at 0.15 -o results/nltva_isolas
 /usr/bin/python3 python/plot_branch.py results/nltva_A0.15 --also results/nltva_isolas/isola_1 -o results/nltva_isola.png
-echo "figures: results/*/nfrc.png, results/blade_track_amplitude/tracking.png, results/*tracking.png, results/nltva_isola.png"
+echo "blade study: results/blade_study/index.md (figures in results/blade_study/figures/)"
+echo "examples: results/*/nfrc.png, results/*tracking.png, results/nltva_isola.png"
