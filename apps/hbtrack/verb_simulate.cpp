@@ -77,6 +77,7 @@ int run_simulate(const SimulateOptions& o) {
   const int n = c.model.dofs();
   MotionState initial = rest_state(n);
   std::optional<RecordedPoint> start_point;
+  std::vector<Eigen::VectorXd> start_harmonics;  // of each output dof: the HBM orbit to compare with
   double omega = omega_flag.value_or(0.0);
   if (!o.from.empty()) {
     const HbmState s = read_hbm_state(o.from + "/states.csv", point);
@@ -85,7 +86,9 @@ int run_simulate(const SimulateOptions& o) {
                       std::to_string(hbm.unknowns()) + " (results of another case?)");
     if (!(s.omega > 0) || !std::isfinite(s.omega)) throw CaseError(o.from + "/states.csv: point " + o.point + ": omega must be > 0");
     if (!omega_flag) omega = s.omega;
-    initial = state_from_harmonics(hbm.expand(s.x, s.omega), n, harmonics, s.omega);
+    const Eigen::VectorXd full = hbm.expand(s.x, s.omega);
+    initial = state_from_harmonics(full, n, harmonics, s.omega);
+    for (const OutputDof& out : c.outputs) start_harmonics.push_back(dof_harmonics(full, n, harmonics, out.dof));
     start_point = record_point(hbm, s.x, s.omega, c.outputs);
   }
 
@@ -125,6 +128,11 @@ int run_simulate(const SimulateOptions& o) {
     summary["options"]["simulation"]["point"] = point;
     json start = {{"omega", start_point->omega}};
     add_outputs(start, c, *start_point);
+    for (size_t i = 0; i < c.outputs.size(); ++i) {
+      std::string key = "harmonics_";
+      key += c.outputs[i].name;
+      start[key] = std::vector<double>(start_harmonics[i].data(), start_harmonics[i].data() + start_harmonics[i].size());
+    }
     summary["start"] = start;
   }
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
