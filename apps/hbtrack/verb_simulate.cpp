@@ -38,13 +38,6 @@ struct SimulateOptions {
   std::string record_periods = "1";
 };
 
-RecordedPoint simulated_point(double omega, const SteadyStateResult& r) {
-  RecordedPoint p;
-  p.omega = omega;
-  for (const PeriodSummary& s : r.outputs) p.outputs.push_back({s.max, s.min, s.first_harmonic()});
-  return p;
-}
-
 int run_simulate(const SimulateOptions& o) {
   const auto t0 = Clock::now();
   // Flags first: they are cheap to check and their errors name them.
@@ -146,28 +139,9 @@ int run_simulate(const SimulateOptions& o) {
   const double integration_s = seconds_since(t_integration);
   if (show_progress) std::fprintf(stderr, "\n");
 
-  std::vector<std::string> header{"time"};
-  for (const OutputDof& out : c.outputs) header.push_back(out.name);
-  CsvAppender signals(o.common.out_dir + "/signals.csv", header);
-  for (Eigen::Index i = 0; i < r.time.size(); ++i) {
-    std::vector<double> row{r.time(i)};
-    for (Eigen::Index j = 0; j < r.signals.cols(); ++j) row.push_back(r.signals(i, j));
-    signals.append(row);
-  }
-
-  summary["converged"] = r.converged;
-  summary["periods"] = r.periods;
-  summary["stop_reason"] = r.stop_reason;
-  if (!r.message.empty()) summary["message"] = r.message;
-  summary["last_change"] = r.last_change;
-  summary["steps"] = r.statistics.steps;
-  summary["force_evaluations"] = r.statistics.force_evaluations;
-  summary["newton_iterations"] = r.statistics.newton_iterations;
-  add_outputs(summary, c, simulated_point(omega, r));
-  for (size_t i = 0; i < c.outputs.size() && i < r.outputs.size(); ++i) {
-    const Eigen::VectorXd& h = r.outputs[i].harmonics;
-    summary["harmonics_" + c.outputs[i].name] = std::vector<double>(h.data(), h.data() + h.size());
-  }
+  CsvAppender signals(o.common.out_dir + "/signals.csv", signals_header(c));
+  for (const std::vector<double>& row : signals_rows(r)) signals.append(row);
+  add_simulation_summary(summary, c, r);
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"integration_s", integration_s}};
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
 

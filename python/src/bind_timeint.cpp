@@ -82,29 +82,9 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
     r = integrate_to_steady_state(*integrator, initial, c.outputs, steady, [&](int, double) { return !(interrupted = python_interrupted()); });
   }
   if (interrupted) throw py::error_already_set();
-  Table signals{{"time"}, {}};
-  for (const OutputDof& out : c.outputs) signals.header.push_back(out.name);
-  for (Eigen::Index i = 0; i < r.time.size(); ++i) {
-    std::vector<double> row{r.time(i)};
-    for (Eigen::Index j = 0; j < r.signals.cols(); ++j) row.push_back(r.signals(i, j));
-    signals.rows.push_back(row);
-  }
+  const Table signals{signals_header(c), signals_rows(r)};
   summary["omega"] = omega;
-  summary["converged"] = r.converged;
-  summary["periods"] = r.periods;
-  summary["stop_reason"] = r.stop_reason;
-  if (!r.message.empty()) summary["message"] = r.message;
-  summary["last_change"] = r.last_change;
-  summary["steps"] = r.statistics.steps;
-  summary["newton_iterations"] = r.statistics.newton_iterations;
-  for (size_t i = 0; i < c.outputs.size() && i < r.outputs.size(); ++i) {
-    const PeriodSummary& s = r.outputs[i];
-    const std::string& name = c.outputs[i].name;
-    summary["max_" + name] = s.max;
-    summary["min_" + name] = s.min;
-    summary["h1_" + name] = s.first_harmonic();
-    summary["harmonics_" + name] = std::vector<double>(s.harmonics.data(), s.harmonics.data() + s.harmonics.size());
-  }
+  add_simulation_summary(summary, c, r);
   summary["outputs"] = outputs_json(c);
   py::dict out;
   out["signals"] = signals.columns();

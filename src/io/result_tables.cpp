@@ -156,6 +156,42 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   summary["outputs"] = outputs_json(c);
 }
 
+std::vector<std::string> signals_header(const CaseDefinition& c) {
+  std::vector<std::string> header{"time"};
+  for (const OutputDof& out : c.outputs) header.push_back(out.name);
+  return header;
+}
+
+std::vector<std::vector<double>> signals_rows(const SteadyStateResult& r) {
+  std::vector<std::vector<double>> rows;
+  for (Eigen::Index i = 0; i < r.time.size(); ++i) {
+    std::vector<double> row{r.time(i)};
+    for (Eigen::Index j = 0; j < r.signals.cols(); ++j) row.push_back(r.signals(i, j));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+void add_simulation_summary(json& summary, const CaseDefinition& c, const SteadyStateResult& r) {
+  summary["converged"] = r.converged;
+  summary["periods"] = r.periods;
+  summary["stop_reason"] = r.stop_reason;
+  if (!r.message.empty()) summary["message"] = r.message;
+  summary["last_change"] = r.last_change;
+  summary["steps"] = r.statistics.steps;
+  summary["force_evaluations"] = r.statistics.force_evaluations;
+  summary["newton_iterations"] = r.statistics.newton_iterations;
+  RecordedPoint last_period;
+  for (const PeriodSummary& s : r.outputs) last_period.outputs.push_back({s.max, s.min, s.first_harmonic()});
+  add_outputs(summary, c, last_period);
+  for (size_t i = 0; i < c.outputs.size() && i < r.outputs.size(); ++i) {
+    const Eigen::VectorXd& h = r.outputs[i].harmonics;
+    std::string key = "harmonics_";
+    key += c.outputs[i].name;
+    summary[key] = std::vector<double>(h.data(), h.data() + h.size());
+  }
+}
+
 FoldScales tracking_scales(HarmonicBalance& hbm, const NfrcOptions& n, double parameter_span) {
   const double reference = n.length_scale > 0 ? n.length_scale : automatic_length_scale(hbm, n.omega_start, n.omega_end);
   FoldScales s;

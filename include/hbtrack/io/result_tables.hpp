@@ -10,6 +10,7 @@
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/timeint/steady_state.hpp"
 
 namespace hbtrack {
 
@@ -36,6 +37,13 @@ std::vector<std::string> tracking_header(const CaseDefinition& c, const std::str
 std::vector<double> tracking_row(const FoldCurvePoint& p);
 // What `track` adds to summary.json: stop_reason, closed, legs, counts, special_points (extrema).
 void add_tracking_summary(nlohmann::json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter);
+
+// signals.csv of a simulation: time, then one column per output; its rows.
+std::vector<std::string> signals_header(const CaseDefinition& c);
+std::vector<std::vector<double>> signals_rows(const SteadyStateResult& r);
+// What `simulate` adds to summary.json once integrated: convergence, counts, and the last
+// period's max_/min_/h1_/harmonics_NAME per output.
+void add_simulation_summary(nlohmann::json& summary, const CaseDefinition& c, const SteadyStateResult& r);
 
 // Units of the tracking systems, from the case's frequency range (as the NFRC's).
 FoldScales tracking_scales(HarmonicBalance& hbm, const NfrcOptions& nfrc, double parameter_span);
