@@ -14,17 +14,17 @@ mkdir -p results
 # The blade: nominal NFRC (stability by Hill's method), then its resonance LP in amplitude.
 $hbtrack modes examples/blade/nominal.toml --count 6 -o results/blade_modes
 $hbtrack frc examples/blade/nominal.toml -o results/blade_nominal
-/usr/bin/python3 python/plot_branch.py results/blade_nominal --units m
+$hbtrack plot results/blade_nominal --units m   # nfrc and harmonics, PNG and PDF
 # Each leg of the tracking curve is capped at 60 points: the curve turns sharply each time a
 # tip node enters or leaves contact, and the full study takes longer than a main job should.
 $hbtrack track examples/blade/nominal.toml --from results/blade_nominal --lp 1 --param amplitude --range 1:80 \
   --set continuation.max_points=60 -o results/blade_track_amplitude
-/usr/bin/python3 python/plot_tracking.py results/blade_track_amplitude -o results/blade_track_amplitude/tracking.png
+$hbtrack plot results/blade_track_amplitude --units m   # tracking (omega, A) and tracking_3d
 
 # The small examples.
 for example in duffing two_dof_contact coupled_duffing chain_contact nltva; do
   $hbtrack frc "examples/$example.toml" -o "results/$example"
-  /usr/bin/python3 python/plot_branch.py "results/$example"
+  $hbtrack plot "results/$example"
 done
 for lp in 1 2; do
   $hbtrack track examples/duffing.toml --from results/duffing --lp $lp --param amplitude --range 0.1:2 -o "results/duffing_track_lp$lp"
@@ -37,4 +37,7 @@ $hbtrack track examples/nltva.toml --from results/nltva --lp 1 --param amplitude
 $hbtrack frc examples/nltva.toml --set amplitude=0.15 -o results/nltva_A0.15
 $hbtrack isolas examples/nltva.toml --from results/nltva_track --at 0.15 -o results/nltva_isolas
 /usr/bin/python3 python/plot_branch.py results/nltva_A0.15 --also results/nltva_isolas/isola_1 -o results/nltva_isola.png
-echo "figures: results/*/nfrc.png, results/blade_track_amplitude/tracking.png, results/*tracking.png, results/nltva_isola.png"
+for folder in results/duffing_track_lp1 results/duffing_track_lp2 results/duffing_isolas results/nltva_track results/nltva_isolas; do
+  $hbtrack plot "$folder"
+done
+echo "figures: results/*/nfrc.png, results/blade_track_amplitude/tracking.png, results/*tracking.png, results/nltva_isola.png (and PDFs)"

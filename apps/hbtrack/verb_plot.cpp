@@ -13,7 +13,7 @@ namespace hbtrack::cli {
 namespace {
 
 struct PlotOptions {
-  std::string dir, out;
+  std::string dir, out, units;
 };
 
 int run_plot(const PlotOptions& o) {
@@ -30,6 +30,7 @@ int run_plot(const PlotOptions& o) {
   if (!interpreter || !*interpreter) interpreter = HBTRACK_PYTHON_INTERPRETER;
   std::vector<std::string> args{interpreter, "-m", "hbtrack.plot", o.dir};
   if (!o.out.empty()) args.insert(args.end(), {"-o", o.out});
+  if (!o.units.empty()) args.insert(args.end(), {"--units", o.units});
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -47,6 +48,7 @@ void add_plot_verb(CLI::App& app, VerbList& verbs) {
   CLI::App* plot = app.add_subcommand("plot", "figures (PNG and PDF) of a result folder of any verb, by the Python package");
   plot->add_option("dir", options.dir, "result folder (frc, track, isolas, simulate, solve)")->required();
   plot->add_option("-o,--output", options.out, "folder for the figures (default: DIR)");
+  plot->add_option("--units", options.units, "the model's length unit for the axis labels (e.g. m; default: model length unit)");
   verbs.push_back({plot, [] { return run_plot(options); }});
 }
 
