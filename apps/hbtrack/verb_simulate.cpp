@@ -107,14 +107,7 @@ int run_simulate(const SimulateOptions& o) {
 
   ensure_directory(o.common.out_dir);
   json summary = {{"verb", "simulate"}, {"options", options_json(c, hbm)}, {"omega", omega}, {"stop_reason", "running"}};
-  summary["options"]["simulation"] = {{"method", o.method},
-                                      {"initial_state", o.from.empty() ? "rest" : "hbm"},
-                                      {"steps_per_period", steps_per_period},
-                                      {"max_periods", steady.max_periods},
-                                      {"record_periods", steady.record_periods},
-                                      {"tolerance", steady.tolerance},
-                                      {"confirmations", steady.confirmations},
-                                      {"harmonics", steady.harmonics}};
+  summary["options"]["simulation"] = simulation_options_json(o.method, !o.from.empty(), steps_per_period, steady);
   summary["options"]["simulation"].update(method_options);
   if (!o.from.empty()) {
     summary["options"]["simulation"]["from"] = o.from;

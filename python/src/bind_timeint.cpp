@@ -67,14 +67,7 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
     dp.samples_per_period = steps_per_period;
     integrator = std::make_unique<DormandPrinceIntegrator>(equation, dp);
   }
-  summary["options"]["simulation"] = {{"method", method},
-                                      {"initial_state", start ? "hbm" : "rest"},
-                                      {"steps_per_period", steps_per_period},
-                                      {"max_periods", steady.max_periods},
-                                      {"record_periods", steady.record_periods},
-                                      {"tolerance", steady.tolerance},
-                                      {"confirmations", steady.confirmations},
-                                      {"harmonics", steady.harmonics}};
+  summary["options"]["simulation"] = simulation_options_json(method, start.has_value(), steps_per_period, steady);
   SteadyStateResult r;
   bool interrupted = false;
   {

@@ -156,6 +156,17 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   summary["outputs"] = outputs_json(c);
 }
 
+json simulation_options_json(const std::string& method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady) {
+  return {{"method", method},
+          {"initial_state", from_hbm ? "hbm" : "rest"},
+          {"steps_per_period", steps_per_period},
+          {"max_periods", steady.max_periods},
+          {"record_periods", steady.record_periods},
+          {"tolerance", steady.tolerance},
+          {"confirmations", steady.confirmations},
+          {"harmonics", steady.harmonics}};
+}
+
 std::vector<std::string> signals_header(const CaseDefinition& c) {
   std::vector<std::string> header{"time"};
   for (const OutputDof& out : c.outputs) header.push_back(out.name);

@@ -38,6 +38,9 @@ std::vector<double> tracking_row(const FoldCurvePoint& p);
 // What `track` adds to summary.json: stop_reason, closed, legs, counts, special_points (extrema).
 void add_tracking_summary(nlohmann::json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter);
 
+// summary.json "options.simulation" of `simulate` (the integrator's own settings come on top).
+nlohmann::json simulation_options_json(const std::string& method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady);
+
 // signals.csv of a simulation: time, then one column per output; its rows.
 std::vector<std::string> signals_header(const CaseDefinition& c);
 std::vector<std::vector<double>> signals_rows(const SteadyStateResult& r);
