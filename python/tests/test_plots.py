@@ -16,6 +16,7 @@ EXPECTED = {  # result kind: figures made for it
     "solve": {"nfrc", "harmonics"},
     "track": {"tracking_3d", "tracking"},
     "isolas": {"isolas", "tracking"},
+    "isola_branch": {"nfrc", "harmonics"},  # one branch folder of an isolas result
     "simulate": {"signals", "harmonics_x"},
 }
 
@@ -45,9 +46,14 @@ def solve_cli(results_dir):
 
 @pytest.mark.parametrize("kind", sorted(EXPECTED))
 def test_figures_of_each_result_folder(kind, request, tmp_path, solve_cli):
-    folder = solve_cli if kind == "solve" else request.getfixturevalue(
-        {"frc": "duffing_frc_cli", "track": "duffing_track_cli", "isolas": "duffing_isolas_cli",
-         "simulate": "duffing_simulate_cli"}[kind])["folder"]
+    if kind == "solve":
+        folder = solve_cli
+    elif kind == "isola_branch":
+        isolas = request.getfixturevalue("duffing_isolas_cli")
+        folder = os.path.join(isolas["folder"], sorted(isolas["branches"])[0])
+    else:
+        folder = request.getfixturevalue({"frc": "duffing_frc_cli", "track": "duffing_track_cli", "isolas": "duffing_isolas_cli",
+                                          "simulate": "duffing_simulate_cli"}[kind])["folder"]
     result = hbtrack.read_result(folder)
     assert result["kind"] == kind
     figures = figures_for(result)
