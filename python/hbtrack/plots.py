@@ -232,7 +232,8 @@ def harmonics_figure(series, title, length_unit=None):
         amplitudes = harmonic_amplitudes(harmonics)
         orders = np.arange(len(amplitudes))
         ax.bar(orders + (i - (len(series) - 1) / 2) * width, amplitudes, width, label=label, color=f"C{i}")
-    ax.set_yscale("log", nonpositive="mask")
+    ax.set_xticks(np.arange(max(len(harmonic_amplitudes(h)) for h in series.values())))
+    ax.set_yscale("log", nonpositive="clip")  # bars start at 0: clipped to the axis, not dropped
     ax.set_xlabel(r"harmonic order j (frequency j$\omega$) [-]")
     ax.set_ylabel(length_label("amplitude", length_unit))
     ax.set_title(title, fontsize=10)
