@@ -91,3 +91,9 @@ def test_blade_frc_matches_cli(results_dir):
     assert (cli["branch"]["max_le"] > BLADE_CLEARANCE).all()  # in contact at every point
     assert_same_columns(api["branch"], cli["branch"])
     assert_same_special_points(api["special_points"], cli["special_points"])
+
+
+def test_api_starts_from_a_cli_result_folder(duffing_case, duffing_frc_cli, duffing_track_cli):
+    # read_result gives the API's dict: tracking from the CLI's frc folder is the CLI's tracking.
+    api = hbtrack.track(duffing_case, duffing_frc_cli, lp=1, param="amplitude", range=(0.1, 2.0))
+    assert_same_columns(api["branch"], duffing_track_cli["branch"])
