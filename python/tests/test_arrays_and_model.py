@@ -61,8 +61,10 @@ def test_fewer_modes_bound_the_frequencies_from_above():
     full, _ = hbtrack.normal_modes(M, K)
     reduced, _ = hbtrack.normal_modes(rom["mass"], rom["stiffness"])
     assert len(reduced) == 6
-    assert np.all(reduced >= full[:6] * (1 - 1e-10))
-    assert reduced[0] < full[0] * 1.01  # the lowest mode is captured to 1 %
+    assert np.all(reduced >= full[:6] * (1 - 1e-10))  # 1e-10: eigen-solver round-off only
+    # Three interior modes and the free end's constraint modes hold the first chain mode well:
+    # measured 0.12 % above; 1 % leaves room for solver changes, not for a lost mode.
+    assert reduced[0] < full[0] * 1.01
 
 
 def test_output_harmonics_give_the_recorded_first_harmonic(duffing_case, duffing_frc):
