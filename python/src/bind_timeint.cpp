@@ -58,16 +58,20 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
   if (!(omega > 0)) throw CaseError("omega: must be > 0 (or give a start state)");
   EquationOfMotion equation(c.model, c.elements, hbm.parameters(), omega);
   std::unique_ptr<TimeIntegrator> integrator;
+  json integrator_settings;  // as the CLI records them
   if (method == "newmark") {
     NewmarkOptions no;
     no.steps_per_period = steps_per_period;
     integrator = std::make_unique<NewmarkIntegrator>(equation, no);
+    integrator_settings = {{"alpha", no.alpha}, {"newton_tolerance", no.newton_tolerance}, {"max_newton_iterations", no.max_newton_iterations}};
   } else {
     DormandPrinceOptions dp;
     dp.samples_per_period = steps_per_period;
     integrator = std::make_unique<DormandPrinceIntegrator>(equation, dp);
+    integrator_settings = {{"relative_tolerance", dp.relative_tolerance}, {"absolute_tolerance", dp.absolute_tolerance}};
   }
   summary["options"]["simulation"] = simulation_options_json(method, start.has_value(), steps_per_period, steady);
+  summary["options"]["simulation"].update(integrator_settings);
   SteadyStateResult r;
   bool interrupted = false;
   {

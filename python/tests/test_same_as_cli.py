@@ -77,6 +77,8 @@ def test_duffing_simulation_matches_cli(duffing_frc, duffing_simulate_cli):
     assert (a["converged"], a["periods"], a["stop_reason"]) == (c["converged"], c["periods"], c["stop_reason"])
     for key in ("omega", "max_x", "min_x", "harmonics_x"):
         np.testing.assert_allclose(a[key], c[key], rtol=RELATIVE, atol=0, err_msg=key)
+    cli_settings = {k: v for k, v in c["options"]["simulation"].items() if k not in ("from", "point")}  # the CLI's flags
+    assert a["options"]["simulation"] == cli_settings
     for key in ("omega", "max_x", "harmonics_x"):  # the HBM orbit it started from
         np.testing.assert_allclose(a["start"][key], c["start"][key], rtol=RELATIVE, atol=0, err_msg=key)
 
