@@ -83,7 +83,8 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
         for number, branch_result in enumerate([result, *others]):
             branch = branch_result["branch"]
             stable, unstable = _stable_masks(branch)
-            tag = "" if number == 0 else f" ({branch_result.get('label', f'branch {number + 1}')})"
+            label = branch_result.get("label", "" if number == 0 else f"branch {number + 1}")
+            tag = f" ({label})" if label else ""
             for side, key in enumerate((f"max_{name}", f"min_{name}")):
                 _plot_split(ax, branch["omega"], branch[key], stable, unstable, f"C{2 * number + side}", key + tag)
                 _mark_special_points(ax, branch_result.get("special_points", []), key)
