@@ -16,6 +16,8 @@ packages=(
   libgtest-dev           # tests
   libbenchmark-dev       # bench/
   python3-numpy python3-matplotlib  # plots of the main job
+  pybind11-dev python3-pybind11     # the Python module (python/)
+  python3-pytest                    # its tests (python/tests, run by ctest)
 )
 
 missing=()

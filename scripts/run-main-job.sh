@@ -19,7 +19,7 @@ $hbtrack study examples/blade/nominal.toml -o results/blade_study
 # The small examples.
 for example in duffing two_dof_contact coupled_duffing chain_contact nltva; do
   $hbtrack frc "examples/$example.toml" -o "results/$example"
-  /usr/bin/python3 python/plot_branch.py "results/$example"
+  $hbtrack plot "results/$example"
 done
 for lp in 1 2; do
   $hbtrack track examples/duffing.toml --from results/duffing --lp $lp --param amplitude --range 0.1:2 -o "results/duffing_track_lp$lp"
@@ -32,5 +32,8 @@ $hbtrack track examples/nltva.toml --from results/nltva --lp 1 --param amplitude
 $hbtrack frc examples/nltva.toml --set amplitude=0.15 -o results/nltva_A0.15
 $hbtrack isolas examples/nltva.toml --from results/nltva_track --at 0.15 -o results/nltva_isolas
 /usr/bin/python3 python/plot_branch.py results/nltva_A0.15 --also results/nltva_isolas/isola_1 -o results/nltva_isola.png
+for folder in results/duffing_track_lp1 results/duffing_track_lp2 results/duffing_isolas results/nltva_track results/nltva_isolas; do
+  $hbtrack plot "$folder"
+done
 echo "blade study: results/blade_study/index.md (figures in results/blade_study/figures/)"
 echo "examples: results/*/nfrc.png, results/*tracking.png, results/nltva_isola.png"

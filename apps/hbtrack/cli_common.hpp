@@ -10,6 +10,7 @@
 
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/io/result_tables.hpp"  // options_json, branch rows: shared with the Python module
 
 namespace hbtrack::cli {
 
@@ -43,13 +44,6 @@ void add_common_options(CLI::App* command, CommonOptions& options);
 bool interrupted();
 
 HarmonicBalance make_system(const CaseDefinition& c);
-nlohmann::json options_json(const CaseDefinition& c, const HarmonicBalance& hbm);
-std::vector<std::string> branch_header(const CaseDefinition& c);
-std::vector<double> branch_row(const RecordedPoint& p);
-std::vector<std::string> state_header(int unknowns);
-std::vector<double> state_row(double omega, const Eigen::VectorXd& x);
-// Adds max_NAME, min_NAME, h1_NAME of a recorded point to a JSON object.
-void add_outputs(nlohmann::json& j, const CaseDefinition& c, const RecordedPoint& p);
 
 // A one-line progress report on a terminal (stderr), silent otherwise or when quiet.
 class Progress {

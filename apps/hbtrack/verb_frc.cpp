@@ -30,35 +30,18 @@ int run_frc(const CommonOptions& o) {
     progress.update(index, p.lambda, rec, c.outputs);
     return !interrupted();
   });
-  const auto& s = r.continuation.summary;
-  summary["stop_reason"] = s.stop_reason;
-  summary["points"] = s.points;
-  summary["newton_iterations"] = s.newton_iterations;
-  summary["failed_steps"] = s.failed_steps;
-  summary["step_halvings"] = s.step_halvings;
-  summary["jacobian_evaluations"] = s.jacobian_evaluations;
-  summary["options"]["continuation"]["length_scale"] = r.length_scale;
-  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};
-  summary["outputs"] = json::array();
-  for (const auto& out : c.outputs) summary["outputs"].push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
-  json special = json::array();
+  add_nfrc_summary(summary, c, hbm, r);
+  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", r.continuation.summary.wall_s}};
   // The state of each special point, in summary order: `track` starts from a limit point's.
   CsvAppender special_states(o.out_dir + "/special_states.csv", state_header(hbm.unknowns()));
-  for (const auto& sp : r.continuation.special_points) {
-    special_states.append(state_row(sp.lambda, sp.u));
-    json j = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
-    j["parameters"] = summary["options"]["parameters"];
-    // Outputs of the special point itself (a located one lies between two rows of branch.csv).
-    add_outputs(j, c, record_point(hbm, sp.u, sp.lambda, c.outputs));
-    special.push_back(j);
-  }
-  summary["special_points"] = special;
+  for (const auto& sp : r.continuation.special_points) special_states.append(state_row(sp.lambda, sp.u));
   write_json_atomically(o.out_dir + "/summary.json", summary);
+  const auto& s = r.continuation.summary;
   if (!r.continuation.success())
     throw RunFailed{"continuation stopped: " + s.stop_reason + " after " + std::to_string(s.points) + " points (kept in " + o.out_dir + ")"};
   if (!o.quiet)
     std::fprintf(stderr, "frc: %d points, %d special points, %d Newton iterations, %.3f s -> %s\n", s.points,
-                 static_cast<int>(special.size()), s.newton_iterations, summary["timings"]["wall_s"].get<double>(), o.out_dir.c_str());
+                 static_cast<int>(r.continuation.special_points.size()), s.newton_iterations, summary["timings"]["wall_s"].get<double>(), o.out_dir.c_str());
   return 0;
 }
 

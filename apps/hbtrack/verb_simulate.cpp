@@ -38,13 +38,6 @@ struct SimulateOptions {
   std::string record_periods = "1";
 };
 
-RecordedPoint simulated_point(double omega, const SteadyStateResult& r) {
-  RecordedPoint p;
-  p.omega = omega;
-  for (const PeriodSummary& s : r.outputs) p.outputs.push_back({s.max, s.min, s.first_harmonic()});
-  return p;
-}
-
 int run_simulate(const SimulateOptions& o) {
   const auto t0 = Clock::now();
   // Flags first: they are cheap to check and their errors name them.
@@ -77,6 +70,7 @@ int run_simulate(const SimulateOptions& o) {
   const int n = c.model.dofs();
   MotionState initial = rest_state(n);
   std::optional<RecordedPoint> start_point;
+  std::vector<Eigen::VectorXd> start_harmonics;  // of each output dof: the HBM orbit to compare with
   double omega = omega_flag.value_or(0.0);
   if (!o.from.empty()) {
     const HbmState s = read_hbm_state(o.from + "/states.csv", point);
@@ -85,7 +79,9 @@ int run_simulate(const SimulateOptions& o) {
                       std::to_string(hbm.unknowns()) + " (results of another case?)");
     if (!(s.omega > 0) || !std::isfinite(s.omega)) throw CaseError(o.from + "/states.csv: point " + o.point + ": omega must be > 0");
     if (!omega_flag) omega = s.omega;
-    initial = state_from_harmonics(hbm.expand(s.x, s.omega), n, harmonics, s.omega);
+    const Eigen::VectorXd full = hbm.expand(s.x, s.omega);
+    initial = state_from_harmonics(full, n, harmonics, s.omega);
+    for (const OutputDof& out : c.outputs) start_harmonics.push_back(dof_harmonics(full, n, harmonics, out.dof));
     start_point = record_point(hbm, s.x, s.omega, c.outputs);
   }
 
@@ -111,20 +107,18 @@ int run_simulate(const SimulateOptions& o) {
 
   ensure_directory(o.common.out_dir);
   json summary = {{"verb", "simulate"}, {"options", options_json(c, hbm)}, {"omega", omega}, {"stop_reason", "running"}};
-  summary["options"]["simulation"] = {{"method", o.method},
-                                      {"initial_state", o.from.empty() ? "rest" : "hbm"},
-                                      {"steps_per_period", steps_per_period},
-                                      {"max_periods", steady.max_periods},
-                                      {"record_periods", steady.record_periods},
-                                      {"tolerance", steady.tolerance},
-                                      {"confirmations", steady.confirmations},
-                                      {"harmonics", steady.harmonics}};
+  summary["options"]["simulation"] = simulation_options_json(o.method, !o.from.empty(), steps_per_period, steady);
   summary["options"]["simulation"].update(method_options);
   if (!o.from.empty()) {
     summary["options"]["simulation"]["from"] = o.from;
     summary["options"]["simulation"]["point"] = point;
     json start = {{"omega", start_point->omega}};
     add_outputs(start, c, *start_point);
+    for (size_t i = 0; i < c.outputs.size(); ++i) {
+      std::string key = "harmonics_";
+      key += c.outputs[i].name;
+      start[key] = std::vector<double>(start_harmonics[i].data(), start_harmonics[i].data() + start_harmonics[i].size());
+    }
     summary["start"] = start;
   }
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
@@ -138,28 +132,9 @@ int run_simulate(const SimulateOptions& o) {
   const double integration_s = seconds_since(t_integration);
   if (show_progress) std::fprintf(stderr, "\n");
 
-  std::vector<std::string> header{"time"};
-  for (const OutputDof& out : c.outputs) header.push_back(out.name);
-  CsvAppender signals(o.common.out_dir + "/signals.csv", header);
-  for (Eigen::Index i = 0; i < r.time.size(); ++i) {
-    std::vector<double> row{r.time(i)};
-    for (Eigen::Index j = 0; j < r.signals.cols(); ++j) row.push_back(r.signals(i, j));
-    signals.append(row);
-  }
-
-  summary["converged"] = r.converged;
-  summary["periods"] = r.periods;
-  summary["stop_reason"] = r.stop_reason;
-  if (!r.message.empty()) summary["message"] = r.message;
-  summary["last_change"] = r.last_change;
-  summary["steps"] = r.statistics.steps;
-  summary["force_evaluations"] = r.statistics.force_evaluations;
-  summary["newton_iterations"] = r.statistics.newton_iterations;
-  add_outputs(summary, c, simulated_point(omega, r));
-  for (size_t i = 0; i < c.outputs.size() && i < r.outputs.size(); ++i) {
-    const Eigen::VectorXd& h = r.outputs[i].harmonics;
-    summary["harmonics_" + c.outputs[i].name] = std::vector<double>(h.data(), h.data() + h.size());
-  }
+  CsvAppender signals(o.common.out_dir + "/signals.csv", signals_header(c));
+  for (const std::vector<double>& row : signals_rows(r)) signals.append(row);
+  add_simulation_summary(summary, c, r);
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"integration_s", integration_s}};
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
 

@@ -17,6 +17,12 @@ Eigen::VectorXd dof_signal(const Eigen::VectorXd& full, int dofs, int harmonics,
   return x;
 }
 
+Eigen::VectorXd dof_harmonics(const Eigen::VectorXd& full, int dofs, int harmonics, int dof) {
+  Eigen::VectorXd h(2 * harmonics + 1);
+  for (int k = 0; k <= 2 * harmonics; ++k) h(k) = full(k * dofs + dof);
+  return h;
+}
+
 OutputValues output_values(const Eigen::VectorXd& full, int dofs, int harmonics, int dof, int samples) {
   const Eigen::VectorXd x = dof_signal(full, dofs, harmonics, dof, samples);
   OutputValues out;

@@ -20,6 +20,10 @@ struct OutputValues {
 // `samples` instants to find the extremes.
 OutputValues output_values(const Eigen::VectorXd& full, int dofs, int harmonics, int dof, int samples);
 
+// Fourier coefficients of one dof, [a0, a1, b1, ..., aH, bH] with x = a0/2 + sum a_j cos + b_j sin
+// (the layout of a simulation's PeriodSummary::harmonics, so the two compare entry by entry).
+Eigen::VectorXd dof_harmonics(const Eigen::VectorXd& full, int dofs, int harmonics, int dof);
+
 // Time signal of one dof over a period at `samples` equally spaced instants.
 Eigen::VectorXd dof_signal(const Eigen::VectorXd& full, int dofs, int harmonics, int dof, int samples);
 

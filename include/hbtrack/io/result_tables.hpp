@@ -1,0 +1,54 @@
+#pragma once
+// The rows and summary fields of a result folder (the contract in README "Using it"), shared by
+// the command-line verbs and the Python module so that both report the same numbers.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "hbtrack/analysis/fold_tracking.hpp"
+#include "hbtrack/analysis/nfrc.hpp"
+#include "hbtrack/io/case_file.hpp"
+#include "hbtrack/timeint/steady_state.hpp"
+
+namespace hbtrack {
+
+// summary.json "options": the case's parameters, harmonic balance, continuation and stability.
+nlohmann::json options_json(const CaseDefinition& c, const HarmonicBalance& hbm);
+// summary.json "outputs": [{name, dof}] per recorded output dof.
+nlohmann::json outputs_json(const CaseDefinition& c);
+// Adds max_NAME, min_NAME, h1_NAME of a recorded point to a JSON object.
+void add_outputs(nlohmann::json& j, const CaseDefinition& c, const RecordedPoint& p);
+
+// branch.csv of an NFRC: omega, stable (when computed), max_/min_/h1_NAME per output.
+std::vector<std::string> branch_header(const CaseDefinition& c);
+std::vector<double> branch_row(const RecordedPoint& p);
+// states.csv: omega, x0, x1, ...
+std::vector<std::string> state_header(int unknowns);
+std::vector<double> state_row(double omega, const Eigen::VectorXd& x);
+
+// What `frc` adds to summary.json once the NFRC is done: stop_reason, counts, the length scale
+// used, outputs and special_points (each with its own outputs and the options' parameters).
+void add_nfrc_summary(nlohmann::json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r);
+
+// branch.csv of a tracking curve: leg, omega, the parameter, max_/min_/h1_NAME per output.
+std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter);
+std::vector<double> tracking_row(const FoldCurvePoint& p);
+// What `track` adds to summary.json: stop_reason, closed, legs, counts, special_points (extrema).
+void add_tracking_summary(nlohmann::json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter);
+
+// summary.json "options.simulation" of `simulate` (the integrator's own settings come on top).
+nlohmann::json simulation_options_json(const std::string& method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady);
+
+// signals.csv of a simulation: time, then one column per output; its rows.
+std::vector<std::string> signals_header(const CaseDefinition& c);
+std::vector<std::vector<double>> signals_rows(const SteadyStateResult& r);
+// What `simulate` adds to summary.json once integrated: convergence, counts, and the last
+// period's max_/min_/h1_/harmonics_NAME per output.
+void add_simulation_summary(nlohmann::json& summary, const CaseDefinition& c, const SteadyStateResult& r);
+
+// Units of the tracking systems, from the case's frequency range (as the NFRC's).
+FoldScales tracking_scales(HarmonicBalance& hbm, const NfrcOptions& nfrc, double parameter_span);
+
+}  // namespace hbtrack

@@ -1,0 +1,28 @@
+"""hbtrack from Python: harmonic balance with arc-length continuation, stability, limit-point
+tracking, isolated branches, time integration and Craig-Bampton reduction.
+
+    import hbtrack
+    case = hbtrack.load_case("examples/duffing.toml", set={"amplitude": 2.0})
+    case.continuation.step = 0.05            # options are named as in the case file and the CLI
+    nfrc = hbtrack.frc(case)                 # branch columns as branch.csv, summary as summary.json
+    lp1 = hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.5, 3.0))
+    hbtrack.plots.save_figure(hbtrack.plots.nfrc_figure(nfrc), "out/nfrc")   # out/nfrc.png, .pdf
+
+Import with PYTHONPATH=build/python (the build assembles the package and its compiled part
+there); plotting and reading result folders also work from python/ without a build.
+"""
+from . import plots
+from ._core import core as _core
+from .analysis import frc, isolas, limit_point, track
+from .cases import case_from_arrays, load_case
+from .model import normal_modes, output_harmonics, reduce
+from .results import read_result
+from .timeint import simulate
+
+if _core is not None:
+    from ._hbtrack import (Case, ContinuationOptions, FoldTrackingOptions, HarmonicBalanceOptions, NfrcOptions,
+                           StabilityOptions, SteadyStateOptions)
+
+__all__ = ["load_case", "case_from_arrays", "frc", "track", "isolas", "limit_point", "simulate", "reduce",
+           "normal_modes", "output_harmonics", "read_result", "plots", "Case", "ContinuationOptions",
+           "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]

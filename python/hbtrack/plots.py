@@ -1,0 +1,258 @@
+"""Figures of hbtrack results (matplotlib): each function takes result dicts, from the API or
+from hbtrack.results.read_result, and returns a matplotlib Figure; save_figure writes it as PNG
+and PDF. Frequencies are in rad/s; lengths in the model's own unit (the case's matrices decide
+it: metres for the blade), which the labels say unless a unit is given.
+"""
+import os
+
+import matplotlib
+
+if "MPLBACKEND" not in os.environ:
+    matplotlib.use("Agg")  # figures go to files; no display needed
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from .results import output_names, tracking_curve  # noqa: E402
+
+OMEGA_LABEL = r"$\omega$ [rad/s]"
+MODEL_LENGTH = "model length unit"
+# Units of the usual tracking parameters; any other named parameter is in the case's units.
+PARAMETER_UNITS = {"amplitude": "-, scales the case's forcing", "mu": "-", "clearance": MODEL_LENGTH}
+
+
+def length_label(what, unit=None):
+    return f"{what} [{unit or MODEL_LENGTH}]"
+
+
+def parameter_label(name, length_unit=None):
+    unit = PARAMETER_UNITS.get(name, "case units")
+    if unit == MODEL_LENGTH and length_unit:
+        unit = length_unit
+    return f"{name} [{unit}]"
+
+
+def save_figure(fig, path):
+    """Writes PATH.png and PATH.pdf (path without extension); returns both file names."""
+    folder = os.path.dirname(path)
+    if folder:
+        os.makedirs(folder, exist_ok=True)
+    files = [f"{path}.png", f"{path}.pdf"]
+    fig.savefig(files[0], dpi=150)
+    fig.savefig(files[1])
+    plt.close(fig)
+    return files
+
+
+def _stable_masks(branch):
+    """(stable, unstable) point masks; every point stable when stability was not computed."""
+    stable = branch.get("stable")
+    if stable is None:
+        return np.ones(len(branch["omega"]), bool), np.zeros(len(branch["omega"]), bool)
+    return stable == 1, stable == 0
+
+
+def _plot_split(ax, x, y, stable, unstable, colour, label):
+    """Stable segments solid, unstable dashed; a segment joining a stable and an unstable point
+    is drawn dashed so that the curve stays connected."""
+    if len(x) == 1:
+        ax.plot(x, y, "o", color=colour, label=label)
+        return
+    solid = np.where(stable, y, np.nan)
+    dashed = np.where(unstable | np.roll(unstable, 1) | np.roll(unstable, -1), y, np.nan)
+    ax.plot(x, solid, "-", color=colour, lw=1.3, label=label)
+    if unstable.any():
+        ax.plot(x, dashed, "--", color=colour, lw=1.3)
+
+
+def _mark_special_points(ax, special_points, key):
+    for sp in special_points:
+        if key in sp:
+            ax.plot(sp["omega"], sp[key], "o", color="k", ms=4, zorder=5)
+            ax.annotate(sp["type"], (sp["omega"], sp[key]), textcoords="offset points", xytext=(4, 4), fontsize=8)
+
+
+def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
+    """NFRC of the chosen outputs (default all): max and min over a period against omega, stable
+    solid, unstable dashed, special points (LP, BP, PD, NS) marked. `others`: more branch results
+    of the same case overlaid (e.g. isolas)."""
+    names = outputs or output_names(result)
+    if not names:
+        raise ValueError("nfrc_figure: the result records no outputs")
+    fig, axes = plt.subplots(len(names), 1, figsize=(6.5, 3.2 * len(names)), squeeze=False)
+    for ax, name in zip(axes[:, 0], names):
+        for number, branch_result in enumerate([result, *others]):
+            branch = branch_result["branch"]
+            stable, unstable = _stable_masks(branch)
+            label = branch_result.get("label", "" if number == 0 else f"branch {number + 1}")
+            tag = f" ({label})" if label else ""
+            for side, key in enumerate((f"max_{name}", f"min_{name}")):
+                _plot_split(ax, branch["omega"], branch[key], stable, unstable, f"C{2 * number + side}", key + tag)
+                _mark_special_points(ax, branch_result.get("special_points", []), key)
+        ax.set_xlabel(OMEGA_LABEL)
+        ax.set_ylabel(length_label(name, length_unit))  # the legend tells max_ and min_ apart
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axes[0, 0].set_title(title or "NFRC (solid: stable, dashed: unstable)", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def _tracking_parameter(track):
+    return track["summary"]["options"]["tracking"]["parameter"]
+
+
+def _extrema(track):
+    return [sp for sp in track.get("special_points", []) if sp["type"] in ("min", "max")]
+
+
+def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
+    """Limit-point curves in (omega, parameter, max of `output`), extrema of the parameter marked
+    (v: min, a pair of limit points is born; ^: max, a pair disappears); `validations`: NFRC
+    results overlaid at their own parameter value."""
+    tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
+    name = output or output_names(tracks[0])[0]
+    param = _tracking_parameter(tracks[0])
+    fig = plt.figure(figsize=(7, 5.5))
+    ax = fig.add_subplot(projection="3d")
+    for i, track in enumerate(tracks):
+        curve = tracking_curve(track)
+        ax.plot(curve["omega"], curve[param], curve[f"max_{name}"], color=f"C{i}", lw=1.4, label=f"limit points ({i + 1})")
+        for sp in _extrema(track):
+            ax.scatter([sp["omega"]], [sp[param]], [sp[f"max_{name}"]], marker="v" if sp["type"] == "min" else "^", color="k", s=30)
+    for j, nfrc in enumerate(validations):
+        value = nfrc["summary"]["options"]["parameters"][param]
+        branch = nfrc["branch"]
+        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), branch[f"max_{name}"], color="0.4", lw=0.9,
+                ls=":", label="NFRC" if j == 0 else None)
+    ax.set_xlabel(OMEGA_LABEL)
+    ax.set_ylabel(parameter_label(param, length_unit))
+    ax.set_zlabel(length_label(f"max {name}", length_unit))
+    ax.set_title("limit-point tracking (v: min, ^: max of the parameter)", fontsize=10)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
+    """Limit-point curves projected on (omega, parameter), start (o) and extrema (v min, ^ max)
+    annotated; limit points of the `validations` NFRCs (x) at their parameter value, which the
+    curves must pass through; `at`: a parameter value drawn as a line (isolas)."""
+    tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
+    param = _tracking_parameter(tracks[0])
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    for i, track in enumerate(tracks):
+        curve = tracking_curve(track)
+        lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
+        ax.plot(curve["omega"], curve[param], color=f"C{i}", lw=1.3, label=f"limit point {lp}")
+        start = track["summary"].get("start")
+        if start:
+            ax.plot([start["omega"]], [start[param]], "o", color=f"C{i}", ms=5)
+        for sp in _extrema(track):
+            ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == "min" else "^", color="k", ms=7)
+            ax.annotate(f"{sp['type']} ({sp['omega']:.6g}, {sp[param]:.4g})", (sp["omega"], sp[param]),
+                        textcoords="offset points", xytext=(6, 4), fontsize=8)
+    for j, nfrc in enumerate(validations):
+        value = nfrc["summary"]["options"]["parameters"][param]
+        lps = [sp["omega"] for sp in nfrc.get("special_points", []) if sp["type"] == "LP"]
+        ax.plot(lps, [value] * len(lps), "x", color="k", ms=8, label="LPs of NFRCs" if j == 0 else None)
+    if at is not None:
+        ax.axhline(at, color="0.5", lw=0.8, ls=":", label=f"{param} = {at:g}")
+    ax.set_xlabel(OMEGA_LABEL)
+    ax.set_ylabel(parameter_label(param, length_unit))
+    ax.set_title("limit-point tracking (o: start, v: min, ^: max)", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def validation_figure(tracks, nfrcs, output=None, length_unit=None):
+    """Tracking curves in (omega, max of `output`) with NFRCs computed separately overlaid: each
+    NFRC's folds must lie on a tracking curve."""
+    tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
+    name = output or output_names(tracks[0])[0]
+    param = _tracking_parameter(tracks[0])
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    for i, track in enumerate(tracks):
+        curve = tracking_curve(track)
+        ax.plot(curve["omega"], curve[f"max_{name}"], color="k", lw=1.6, label="limit points" if i == 0 else None)
+    for j, nfrc in enumerate(nfrcs):
+        value = nfrc["summary"]["options"]["parameters"][param]
+        stable, unstable = _stable_masks(nfrc["branch"])
+        _plot_split(ax, nfrc["branch"]["omega"], nfrc["branch"][f"max_{name}"], stable, unstable, f"C{j}", f"NFRC, {param} = {value:g}")
+    ax.set_xlabel(OMEGA_LABEL)
+    ax.set_ylabel(length_label(f"max {name} over a period", length_unit))
+    ax.set_title("tracking curves and NFRCs (folds on the curves)", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def harmonic_signal(harmonics, omega, time):
+    """x(t) = a0/2 + sum a_j cos(j omega t) + b_j sin(j omega t) from [a0, a1, b1, ..., aH, bH]."""
+    h = np.asarray(harmonics)
+    x = np.full(np.shape(time), 0.5 * h[0])
+    for j in range(1, (len(h) - 1) // 2 + 1):
+        x += h[2 * j - 1] * np.cos(j * omega * time) + h[2 * j] * np.sin(j * omega * time)
+    return x
+
+
+def harmonic_amplitudes(harmonics):
+    """|mean| then hypot(a_j, b_j) for j = 1..H."""
+    h = np.asarray(harmonics)
+    return np.concatenate([[abs(0.5 * h[0])], np.hypot(h[1::2], h[2::2])])
+
+
+def time_signals_figure(simulation, outputs=None, length_unit=None):
+    """Simulated displacement of each output over the recorded periods, with the HBM orbit the
+    simulation started from (when it started from one) for comparison."""
+    names = outputs or output_names(simulation)
+    signals, summary = simulation["signals"], simulation["summary"]
+    omega = summary["omega"]
+    start = summary.get("start", {})
+    fig, axes = plt.subplots(len(names), 1, figsize=(6.5, 2.8 * len(names)), squeeze=False)
+    for ax, name in zip(axes[:, 0], names):
+        t = signals["time"]
+        ax.plot(t, signals[name], color="C0", lw=1.3, label="time integration")
+        if f"harmonics_{name}" in start:
+            ax.plot(t, harmonic_signal(start[f"harmonics_{name}"], omega, t), "--", color="C1", lw=1.3, label="HBM")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel(length_label(name, length_unit))
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axes[0, 0].set_title(f"steady state at omega = {omega:.6g} rad/s", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def harmonics_figure(series, title, length_unit=None):
+    """Bar chart of harmonic amplitudes: series = {label: [a0, a1, b1, ..., aH, bH]}, log scale."""
+    fig, ax = plt.subplots(figsize=(6.5, 3.6))
+    width = 0.8 / max(len(series), 1)
+    for i, (label, harmonics) in enumerate(series.items()):
+        amplitudes = harmonic_amplitudes(harmonics)
+        orders = np.arange(len(amplitudes))
+        ax.bar(orders + (i - (len(series) - 1) / 2) * width, amplitudes, width, label=label, color=f"C{i}")
+    ax.set_xticks(np.arange(max(len(harmonic_amplitudes(h)) for h in series.values())))
+    ax.set_yscale("log", nonpositive="clip")  # bars start at 0: clipped to the axis, not dropped
+    ax.set_xlabel(r"harmonic order j (frequency j$\omega$) [-]")
+    ax.set_ylabel(length_label("amplitude", length_unit))
+    ax.set_title(title, fontsize=10)
+    ax.grid(alpha=0.3, axis="y")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def state_harmonics(result, point, largest=4):
+    """{label: harmonics} of row `point` of a result's states, per retained dof (the condensed
+    unknowns: the dofs the nonlinear elements act on, in model order), the `largest` in first
+    harmonic only (the blade retains 27)."""
+    harmonics = result["summary"]["options"]["harmonic_balance"]["harmonics"]
+    row = np.asarray(result["states"][point])
+    x = row[3:] if "leg" in result.get("branch", {}) else row[1:]  # after leg, omega, parameter or omega
+    coefficients = 2 * harmonics + 1
+    blocks = x.reshape(coefficients, len(x) // coefficients)  # harmonic-major: entry k * q + dof
+    first = np.hypot(blocks[1], blocks[2]) if harmonics >= 1 else np.abs(blocks[0])
+    keep = sorted(np.argsort(first)[::-1][:largest])
+    return {f"retained dof {k + 1}": blocks[:, k] for k in keep}

@@ -1,0 +1,202 @@
+// NFRC, limit-point tracking and isolas: the computations of hbtrack frc / track / isolas, with
+// the same tables (as columns) and summary fields, computed with the GIL released.
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "bindings.hpp"
+#include "hbtrack/analysis/fold_tracking.hpp"
+#include "hbtrack/io/case_file.hpp"
+#include "hbtrack/io/result_tables.hpp"
+
+namespace hbtrack::python {
+
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The case's harmonic balance system; a model the case reader let through but the system
+// rejects is bad input (ValueError naming the case).
+HarmonicBalance make_system(const CaseDefinition& c) {
+  try {
+    return HarmonicBalance(c.model, c.elements, c.parameters, c.harmonic_balance);
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(c.path + ": " + e.what());
+  }
+}
+
+int parameter_index(const HarmonicBalance& hbm, const std::string& name) {
+  const int index = hbm.parameters().find(name);
+  if (index >= 0) return index;
+  std::string known;
+  for (const std::string& n : hbm.parameters().names()) known += (known.empty() ? "" : ", ") + n;
+  throw CaseError("param: unknown parameter '" + name + "' (the case has: " + known + ")");
+}
+
+// A branch as `frc` writes it: branch.csv columns, states.csv rows, the summary's special points
+// with their states (special_states.csv).
+py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r, json summary) {
+  Table branch{branch_header(c), {}}, states{state_header(hbm.unknowns()), {}}, special{state_header(hbm.unknowns()), {}};
+  for (size_t i = 0; i < r.recorded.size(); ++i) {
+    branch.rows.push_back(branch_row(r.recorded[i]));
+    states.rows.push_back(state_row(r.continuation.points[i].lambda, r.continuation.points[i].u));
+  }
+  for (const auto& sp : r.continuation.special_points) special.rows.push_back(state_row(sp.lambda, sp.u));
+  add_nfrc_summary(summary, c, hbm, r);
+  py::dict out;
+  out["branch"] = branch.columns();
+  out["states"] = states.matrix();
+  out["special_states"] = special.matrix();
+  out["summary"] = to_python(summary);
+  out["special_points"] = out["summary"]["special_points"];
+  return out;
+}
+
+py::dict frc(const CaseDefinition& c) {
+  const auto t0 = Clock::now();
+  HarmonicBalance hbm = make_system(c);
+  json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}};
+  NfrcResult r;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    r = compute_nfrc(hbm, c.nfrc, c.outputs, [&](const BranchPoint&, const RecordedPoint&, int) { return !(interrupted = python_interrupted()); });
+  }
+  if (interrupted) throw py::error_already_set();
+  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", r.continuation.summary.wall_s}};
+  return branch_result(c, hbm, r, summary);
+}
+
+// `hbtrack track` from a limit point (x, omega) of an NFRC of the same case.
+py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, const std::string& param, double parameter_min,
+               double parameter_max, const std::string& method) {
+  const auto t0 = Clock::now();
+  FoldTrackingOptions tracking;
+  tracking.method = method;
+  tracking.parameter_min = parameter_min;
+  tracking.parameter_max = parameter_max;
+  tracking.continuation = c.nfrc.continuation;
+  if (!(parameter_min < parameter_max)) throw CaseError("range: must be (LO, HI) with LO < HI");
+  if (method != "bordered" && method != "extended") throw CaseError("method: must be bordered or extended, got '" + method + "'");
+  HarmonicBalance hbm = make_system(c);
+  const int parameter = parameter_index(hbm, param);
+  const double start_value = hbm.parameters().value(parameter);
+  if (!(parameter_min <= start_value && start_value <= parameter_max))
+    throw CaseError("range: must contain " + param + " = " + std::to_string(start_value) + " of the limit point");
+  if (x.size() != hbm.unknowns())
+    throw CaseError("start: the limit point holds " + std::to_string(x.size()) + " unknowns, the case has " + std::to_string(hbm.unknowns()) +
+                    " (a result of another case?)");
+
+  Table branch{tracking_header(c, param), {}}, states{{"leg", "omega", param}, {}};
+  for (const std::string& column : state_header(hbm.unknowns())) if (column != "omega") states.header.push_back(column);
+  json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}};
+  summary["options"]["tracking"] = {{"parameter", param}, {"method", method}, {"range", {parameter_min, parameter_max}}};
+  const FoldScales scales = tracking_scales(hbm, c.nfrc, parameter_max - parameter_min);
+  FoldTrackingResult r;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    r = track_fold(hbm, parameter, x, omega, scales, tracking, c.outputs, [&](const FoldCurvePoint& p, int) {
+      branch.rows.push_back(tracking_row(p));
+      std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
+      row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
+      states.rows.push_back(row);
+      return !(interrupted = python_interrupted());
+    });
+  }
+  if (interrupted) throw py::error_already_set();
+  add_tracking_summary(summary, c, r, param);
+  summary["start"] = {{"omega", omega}, {param, start_value}};
+  summary["timings"] = {{"wall_s", seconds_since(t0)}};
+  py::dict out;
+  out["branch"] = branch.columns();
+  out["states"] = states.matrix();
+  out["summary"] = to_python(summary);
+  out["special_points"] = out["summary"]["special_points"];
+  return out;
+}
+
+// Tracking curves as `track` returns their states: rows of leg, omega, parameter, x0, x1, ...
+std::vector<FoldCurvePoint> curve_from_states(const Eigen::MatrixXd& states, int unknowns) {
+  if (states.cols() != 3 + unknowns)
+    throw CaseError("curves: a tracking curve's states hold " + std::to_string(states.cols() - 3) + " unknowns, the case has " +
+                    std::to_string(unknowns) + " (a result of another case?)");
+  std::vector<FoldCurvePoint> curve;
+  for (Eigen::Index i = 0; i < states.rows(); ++i) {
+    FoldCurvePoint p;
+    p.leg = static_cast<int>(states(i, 0));
+    p.omega = states(i, 1);
+    p.parameter = states(i, 2);
+    p.x = states.row(i).tail(unknowns).transpose();
+    curve.push_back(std::move(p));
+  }
+  return curve;
+}
+
+// `hbtrack isolas`: every crossing of the curves with param = at, and the branch through each
+// new limit point; isola_K / open_K entries as the CLI's folders.
+py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& curve_states, const std::string& param, double at) {
+  const auto t0 = Clock::now();
+  HarmonicBalance hbm = make_system(c);
+  const int parameter = parameter_index(hbm, param);
+  std::vector<std::vector<FoldCurvePoint>> curves;
+  for (const auto& states : curve_states) curves.push_back(curve_from_states(states, hbm.unknowns()));
+  double lo = at, hi = at;
+  for (const auto& curve : curves)
+    for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
+  hbm.parameters().value(parameter) = at;
+  const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
+  std::vector<IsolaCandidate> found;
+  {
+    py::gil_scoped_release release;
+    found = compute_isolas(hbm, parameter, at, curves, scales, c.nfrc, c.outputs);
+  }
+  json crossings = json::array();
+  py::dict branches;
+  int isola_count = 0;
+  for (size_t k = 0; k < found.size(); ++k) {
+    const IsolaCandidate& f = found[k];
+    json j = {{"status", f.status}, {"omega", f.start.omega}, {"converged", f.start.converged}};
+    if (f.same_as >= 0) j["same_as"] = f.same_as;
+    if (f.status == "isola" || f.status == "open") {
+      const std::string name = f.status == "isola" ? "isola_" + std::to_string(++isola_count) : "open_" + std::to_string(k + 1);
+      hbm.parameters().value(parameter) = at;
+      json branch_summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}};
+      py::dict branch = branch_result(c, hbm, f.branch, branch_summary);
+      branches[py::str(name)] = branch;
+      j["folder"] = name;
+      j["stop_reason"] = f.branch.continuation.summary.stop_reason;
+      j["points"] = f.branch.continuation.summary.points;
+      double omega_min = 1e300, omega_max = -1e300;
+      for (const auto& p : f.branch.continuation.points) omega_min = std::min(omega_min, p.lambda), omega_max = std::max(omega_max, p.lambda);
+      j["omega_range"] = {omega_min, omega_max};
+      int unstable = 0;
+      for (const auto& rec : f.branch.recorded) unstable += rec.stable == 0;
+      j["unstable_points"] = unstable;
+    }
+    crossings.push_back(j);
+  }
+  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", "completed"}, {"crossings", crossings},
+                  {"isolas", isola_count}, {"timings", {{"wall_s", seconds_since(t0)}}}};
+  summary["options"]["isolas"] = {{"parameter", param}, {"at", at}};
+  py::dict out;
+  out["summary"] = to_python(summary);
+  out["branches"] = branches;
+  return out;
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  m.def("frc", &frc, py::arg("case"), "NFRC with stability: {branch, states, special_points, special_states, summary}");
+  m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
+        py::arg("parameter_max"), py::arg("method") = "bordered", "limit point (x, omega) tracked in param");
+  m.def("isolas", &isolas, py::arg("case"), py::arg("curves"), py::arg("param"), py::arg("at"),
+        "branches through the crossings of tracking curves (their states) with param = at");
+}
+
+}  // namespace hbtrack::python

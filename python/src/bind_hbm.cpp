@@ -1,0 +1,26 @@
+// Harmonic balance solutions read back: the Fourier coefficients of each output dof at a point.
+#include <pybind11/eigen.h>
+
+#include "bindings.hpp"
+#include "hbtrack/io/case_file.hpp"
+
+namespace hbtrack::python {
+
+void bind_hbm(py::module_& m) {
+  m.def(
+      "output_harmonics",
+      [](const CaseDefinition& c, const Eigen::VectorXd& state) {
+        HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+        if (state.size() != 1 + hbm.unknowns())
+          throw CaseError("state: holds " + std::to_string(state.size() - 1) + " unknowns after omega, the case has " +
+                          std::to_string(hbm.unknowns()) + " (a result of another case?)");
+        const Eigen::VectorXd full = hbm.expand(state.tail(hbm.unknowns()), state(0));
+        py::dict out;
+        for (const OutputDof& o : c.outputs) out[py::str(o.name)] = dof_harmonics(full, c.model.dofs(), c.harmonic_balance.harmonics, o.dof);
+        return out;
+      },
+      py::arg("case"), py::arg("state"),
+      "{output name: [a0, a1, b1, ..., aH, bH]} (x = a0/2 + sum a_j cos + b_j sin) of a state row [omega, x0, x1, ...]");
+}
+
+}  // namespace hbtrack::python

@@ -1,0 +1,36 @@
+#pragma once
+// Shared by the binding translation units of the _hbtrack extension: registration functions (one
+// per C++ folder bound) and the conversions of results into Python objects.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+namespace hbtrack::python {
+
+namespace py = pybind11;
+
+void bind_options(py::module_& m);
+void bind_case(py::module_& m);
+void bind_analysis(py::module_& m);
+void bind_hbm(py::module_& m);
+void bind_timeint(py::module_& m);
+void bind_model(py::module_& m);
+
+// summary.json as the Python json module would read it (same keys, same numbers).
+py::object to_python(const nlohmann::json& document);
+
+// A table the CLI writes as CSV, kept in memory: header and rows.
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  py::dict columns() const;  // {column name: 1-D float array}, as branch.csv's columns
+  py::array_t<double> matrix() const;  // rows x columns, as states.csv without its header
+};
+
+// True (and the Python error set) when Ctrl-C arrived; callable with the GIL released.
+bool python_interrupted();
+
+}  // namespace hbtrack::python

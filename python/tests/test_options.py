@@ -1,0 +1,52 @@
+"""Options are Python classes named as the C++ fields, the case keys and the CLI flags; they
+round-trip through attributes, keywords and repr, and a Case's options are live references."""
+import pytest
+
+import hbtrack
+
+from conftest import DUFFING
+
+
+@pytest.mark.parametrize("cls", [hbtrack.ContinuationOptions, hbtrack.StabilityOptions, hbtrack.HarmonicBalanceOptions,
+                                 hbtrack.FoldTrackingOptions, hbtrack.SteadyStateOptions])
+def test_repr_rebuilds_an_equal_object(cls):
+    original = cls()
+    rebuilt = eval(repr(original), vars(hbtrack))  # noqa: S307 - nested options print as their class
+    assert repr(rebuilt) == repr(original)
+    assert type(rebuilt) is cls
+    for field in cls.fields:
+        assert getattr(rebuilt, field) == getattr(original, field)
+
+
+def test_keywords_set_attributes_and_repr_shows_them():
+    options = hbtrack.ContinuationOptions(step=0.05, predictor="secant", max_points=12, locate=False)
+    assert (options.step, options.predictor, options.max_points, options.locate) == (0.05, "secant", 12, False)
+    options.tolerance = 1e-11
+    assert options.tolerance == 1e-11
+    text = repr(options)
+    for part in ("step=0.05", "predictor='secant'", "max_points=12", "locate=False", "tolerance=1e-11"):
+        assert part in text
+
+
+def test_names_are_the_case_file_keys(duffing_frc):
+    # summary.json's options are written under the case file's keys: the [continuation] keys
+    # other than the NFRC's range and length scale are ContinuationOptions' fields, in order.
+    written = list(duffing_frc["summary"]["options"]["continuation"])
+    nfrc_only = {"omega_start", "omega_end", "length_scale"}
+    assert sorted(hbtrack.ContinuationOptions.fields) == sorted(k for k in written if k not in nfrc_only)
+    assert sorted(hbtrack.StabilityOptions.fields) == sorted(duffing_frc["summary"]["options"]["stability"])
+
+
+def test_overrides_and_case_options_round_trip():
+    case = hbtrack.load_case(DUFFING, set={"amplitude": 2.0, "harmonic_balance.harmonics": 9, "continuation.step": 0.01})
+    assert case.parameters["amplitude"] == 2.0
+    assert case.harmonic_balance.harmonics == 9
+    assert case.continuation.step == 0.01
+    case.continuation.step = 0.03  # a reference into the case, shared with case.nfrc
+    assert case.nfrc.continuation.step == 0.03
+    case.stability.method = "monodromy"
+    assert case.nfrc.stability.method == "monodromy"
+    case.set_parameter("amplitude", 1.5)
+    assert case.parameters["amplitude"] == 1.5
+    assert case.outputs == ["x"] and case.dof_names == ["x"]
+    assert repr(case).startswith("Case(path=")

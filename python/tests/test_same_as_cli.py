@@ -1,0 +1,101 @@
+"""The Python API computes what the CLI writes: same columns, same numbers.
+
+Tolerance 1e-12 relative: both run the same library code on the same input, and the CLI's
+%.17g text reads back to the same doubles, so the numbers should agree to the last bit; the
+margin only allows for a last-bit difference from a different instruction order between the
+two builds (the extension is compiled as position-independent code)."""
+import numpy as np
+import pytest
+
+import hbtrack
+from hbtrack.results import read_result
+
+from conftest import BLADE, BLADE_CHEAP, BLADE_CLEARANCE, DUFFING, run_cli, set_flags
+
+RELATIVE = 1e-12
+
+
+def assert_same_columns(api, cli):
+    assert list(api) == list(cli), "column names differ"
+    for name in cli:
+        assert len(api[name]) == len(cli[name]) > 0, name
+        np.testing.assert_allclose(api[name], cli[name], rtol=RELATIVE, atol=0, err_msg=name)
+
+
+def assert_same_special_points(api, cli):
+    assert [sp["type"] for sp in api] == [sp["type"] for sp in cli]
+    for a, c in zip(api, cli):
+        assert a["index"] == c["index"]
+        for key, value in c.items():
+            if isinstance(value, float):
+                assert a[key] == pytest.approx(value, rel=RELATIVE, abs=0), key
+
+
+def test_duffing_frc_matches_cli(duffing_frc, duffing_frc_cli):
+    assert_same_columns(duffing_frc["branch"], duffing_frc_cli["branch"])
+    np.testing.assert_allclose(duffing_frc["states"], duffing_frc_cli["states"], rtol=RELATIVE, atol=1e-300)
+    assert_same_special_points(duffing_frc["special_points"], duffing_frc_cli["special_points"])
+    assert [sp["type"] for sp in duffing_frc["special_points"]].count("LP") == 2  # README: both folds
+    for key in ("stop_reason", "points", "newton_iterations", "failed_steps", "options", "outputs"):
+        assert duffing_frc["summary"][key] == duffing_frc_cli["summary"][key], key
+
+
+def test_duffing_with_overrides_matches_cli(results_dir):
+    overrides = {"amplitude": 2.0, "harmonic_balance.harmonics": 3}
+    api = hbtrack.frc(hbtrack.load_case(DUFFING, set=overrides))
+    folder = str(results_dir / "duffing_overrides")
+    run_cli("frc", DUFFING, "-o", folder, *set_flags(overrides))
+    cli = read_result(folder)
+    assert cli["summary"]["options"]["parameters"]["amplitude"] == 2.0
+    assert cli["summary"]["options"]["harmonic_balance"]["harmonics"] == 3
+    assert_same_columns(api["branch"], cli["branch"])
+
+
+def test_duffing_tracking_matches_cli(duffing_track, duffing_track_cli):
+    assert_same_columns(duffing_track["branch"], duffing_track_cli["branch"])
+    assert_same_special_points(duffing_track["special_points"], duffing_track_cli["special_points"])
+    assert duffing_track["summary"]["stop_reason"] == duffing_track_cli["summary"]["stop_reason"]
+    assert duffing_track["summary"]["options"]["tracking"]["lp"] == 1
+
+
+def test_duffing_isolas_match_cli(duffing_case, duffing_track, duffing_isolas_cli):
+    api = hbtrack.isolas(duffing_case, duffing_track, at=1.5)
+    api_crossings, cli_crossings = api["summary"]["crossings"], duffing_isolas_cli["summary"]["crossings"]
+    # README: at A = 1.5 both crossings of the Duffing curve are limit points of the main branch.
+    assert [c["status"] for c in cli_crossings] == [c["status"] for c in api_crossings]
+    assert {c["status"] for c in cli_crossings} <= {"open", "duplicate"}
+    for a, c in zip(api_crossings, cli_crossings):
+        assert a["omega"] == pytest.approx(c["omega"], rel=RELATIVE, abs=0)
+    for name, branch in duffing_isolas_cli["branches"].items():
+        assert_same_columns(api["branches"][name]["branch"], branch["branch"])
+
+
+def test_duffing_simulation_matches_cli(duffing_frc, duffing_simulate_cli):
+    api = hbtrack.simulate(hbtrack.load_case(DUFFING), start=duffing_frc, point=20, max_periods=200)
+    assert_same_columns(api["signals"], duffing_simulate_cli["signals"])
+    a, c = api["summary"], duffing_simulate_cli["summary"]
+    assert (a["converged"], a["periods"], a["stop_reason"]) == (c["converged"], c["periods"], c["stop_reason"])
+    for key in ("omega", "max_x", "min_x", "harmonics_x"):
+        np.testing.assert_allclose(a[key], c[key], rtol=RELATIVE, atol=0, err_msg=key)
+    cli_settings = {k: v for k, v in c["options"]["simulation"].items() if k not in ("from", "point")}  # the CLI's flags
+    assert a["options"]["simulation"] == cli_settings
+    for key in ("omega", "max_x", "harmonics_x"):  # the HBM orbit it started from
+        np.testing.assert_allclose(a["start"][key], c["start"][key], rtol=RELATIVE, atol=0, err_msg=key)
+
+
+def test_blade_frc_matches_cli(results_dir):
+    api = hbtrack.frc(hbtrack.load_case(BLADE, set=BLADE_CHEAP))
+    folder = str(results_dir / "blade")
+    run_cli("frc", BLADE, "-o", folder, *set_flags(BLADE_CHEAP))
+    cli = read_result(folder)
+    assert "stable" in cli["branch"] and len(cli["branch"]["omega"]) > 5
+    assert cli["summary"]["stop_reason"] == "reached_end"
+    assert (cli["branch"]["max_le"] > BLADE_CLEARANCE).all()  # in contact at every point
+    assert_same_columns(api["branch"], cli["branch"])
+    assert_same_special_points(api["special_points"], cli["special_points"])
+
+
+def test_api_starts_from_a_cli_result_folder(duffing_case, duffing_frc_cli, duffing_track_cli):
+    # read_result gives the API's dict: tracking from the CLI's frc folder is the CLI's tracking.
+    api = hbtrack.track(duffing_case, duffing_frc_cli, lp=1, param="amplitude", range=(0.1, 2.0))
+    assert_same_columns(api["branch"], duffing_track_cli["branch"])

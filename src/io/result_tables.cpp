@@ -1,0 +1,216 @@
+#include "hbtrack/io/result_tables.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace hbtrack {
+
+using nlohmann::json;
+
+json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
+  json params = json::object();
+  for (int i = 0; i < hbm.parameters().size(); ++i) params[hbm.parameters().names()[static_cast<size_t>(i)]] = hbm.parameters().value(i);
+  const auto& co = c.nfrc.continuation;
+  return {{"case", c.path},
+          {"parameters", params},
+          {"harmonic_balance",
+           {{"harmonics", c.harmonic_balance.harmonics},
+            {"samples", hbm.basis().samples()},
+            {"condensation", hbm.condensation_method()},
+            {"unknowns", hbm.unknowns()}}},
+          {"continuation",
+           {{"omega_start", c.nfrc.omega_start},
+            {"omega_end", c.nfrc.omega_end},
+            {"length_scale", c.nfrc.length_scale},
+            {"step", co.step},
+            {"step_min", co.step_min},
+            {"step_max", co.step_max},
+            {"max_points", co.max_points},
+            {"max_iterations", co.max_iterations},
+            {"target_iterations", co.target_iterations},
+            {"tolerance", co.tolerance},
+            {"max_angle", co.max_angle},
+            {"predictor", co.predictor},
+            {"corrector", co.corrector},
+            {"wall_time_limit", co.wall_time_limit},
+            {"locate", co.locate}}},
+          {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", c.nfrc.stability.hill_solver}}}};
+}
+
+json outputs_json(const CaseDefinition& c) {
+  json outputs = json::array();
+  for (const auto& out : c.outputs) outputs.push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
+  return outputs;
+}
+
+void add_outputs(json& j, const CaseDefinition& c, const RecordedPoint& p) {
+  for (size_t i = 0; i < c.outputs.size() && i < p.outputs.size(); ++i) {
+    j["max_" + c.outputs[i].name] = p.outputs[i].max;
+    j["min_" + c.outputs[i].name] = p.outputs[i].min;
+    j["h1_" + c.outputs[i].name] = p.outputs[i].h1;
+  }
+}
+
+namespace {
+void add_output_columns(std::vector<std::string>& header, const CaseDefinition& c) {
+  for (const auto& o : c.outputs)
+    for (const char* kind : {"max_", "min_", "h1_"}) {
+      std::string column = kind;  // appended, not operator+: GCC 12's false -Wrestrict at -O3
+      column += o.name;
+      header.push_back(column);
+    }
+}
+
+void add_output_values(std::vector<double>& row, const RecordedPoint& p) {
+  for (const auto& v : p.outputs) row.insert(row.end(), {v.max, v.min, v.h1});
+}
+}  // namespace
+
+std::vector<std::string> branch_header(const CaseDefinition& c) {
+  std::vector<std::string> h{"omega"};
+  if (c.nfrc.stability.enabled()) h.push_back("stable");
+  add_output_columns(h, c);
+  return h;
+}
+
+std::vector<double> branch_row(const RecordedPoint& p) {
+  std::vector<double> row{p.omega};
+  if (p.stable >= 0) row.push_back(p.stable);
+  add_output_values(row, p);
+  return row;
+}
+
+std::vector<std::string> state_header(int unknowns) {
+  std::vector<std::string> h{"omega"};
+  for (int i = 0; i < unknowns; ++i) {
+    std::string column = "x";  // appended, not operator+: GCC 12's false -Wstringop-overflow at -O3
+    column += std::to_string(i);
+    h.push_back(column);
+  }
+  return h;
+}
+
+std::vector<double> state_row(double omega, const Eigen::VectorXd& x) {
+  std::vector<double> row{omega};
+  row.insert(row.end(), x.data(), x.data() + x.size());
+  return row;
+}
+
+void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r) {
+  const auto& s = r.continuation.summary;
+  summary["stop_reason"] = s.stop_reason;
+  summary["points"] = s.points;
+  summary["newton_iterations"] = s.newton_iterations;
+  summary["failed_steps"] = s.failed_steps;
+  summary["step_halvings"] = s.step_halvings;
+  summary["jacobian_evaluations"] = s.jacobian_evaluations;
+  summary["options"]["continuation"]["length_scale"] = r.length_scale;
+  summary["outputs"] = outputs_json(c);
+  json special = json::array();
+  for (const auto& sp : r.continuation.special_points) {
+    json j = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
+    j["parameters"] = summary["options"]["parameters"];
+    // Outputs of the special point itself (a located one lies between two rows of branch.csv).
+    add_outputs(j, c, record_point(hbm, sp.u, sp.lambda, c.outputs));
+    special.push_back(j);
+  }
+  summary["special_points"] = special;
+}
+
+std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter) {
+  std::vector<std::string> h{"leg", "omega", parameter};
+  add_output_columns(h, c);
+  return h;
+}
+
+std::vector<double> tracking_row(const FoldCurvePoint& p) {
+  std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
+  add_output_values(row, p.recorded);
+  return row;
+}
+
+void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter) {
+  json legs = json::array();
+  int newton = 0, jacobians = 0;
+  for (size_t i = 0; i < r.legs.size(); ++i) {
+    const ContinuationSummary& s = r.legs[i];
+    legs.push_back({{"leg", i + 1}, {"towards", i == 0 ? "min" : "max"}, {"stop_reason", s.stop_reason}, {"points", s.points},
+                    {"newton_iterations", s.newton_iterations}, {"failed_steps", s.failed_steps},
+                    {"jacobian_evaluations", s.jacobian_evaluations}, {"wall_s", s.wall_s}});
+    newton += s.newton_iterations;
+    jacobians += s.jacobian_evaluations;
+  }
+  json special = json::array();
+  for (const FoldExtremum& e : r.extrema) {
+    json j = {{"type", e.type}, {"index", e.index}, {"omega", e.omega}, {parameter, e.parameter}, {"located", e.located}};
+    add_outputs(j, c, e.recorded);
+    special.push_back(j);
+  }
+  summary["stop_reason"] = r.success() ? (r.closed ? "closed" : "completed") : r.failure();
+  summary["closed"] = r.closed;
+  summary["legs"] = legs;
+  summary["points"] = r.points.size();
+  summary["newton_iterations"] = newton;
+  summary["jacobian_evaluations"] = jacobians;
+  summary["special_points"] = special;
+  summary["outputs"] = outputs_json(c);
+}
+
+json simulation_options_json(const std::string& method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady) {
+  return {{"method", method},
+          {"initial_state", from_hbm ? "hbm" : "rest"},
+          {"steps_per_period", steps_per_period},
+          {"max_periods", steady.max_periods},
+          {"record_periods", steady.record_periods},
+          {"tolerance", steady.tolerance},
+          {"confirmations", steady.confirmations},
+          {"harmonics", steady.harmonics}};
+}
+
+std::vector<std::string> signals_header(const CaseDefinition& c) {
+  std::vector<std::string> header{"time"};
+  for (const OutputDof& out : c.outputs) header.push_back(out.name);
+  return header;
+}
+
+std::vector<std::vector<double>> signals_rows(const SteadyStateResult& r) {
+  std::vector<std::vector<double>> rows;
+  for (Eigen::Index i = 0; i < r.time.size(); ++i) {
+    std::vector<double> row{r.time(i)};
+    for (Eigen::Index j = 0; j < r.signals.cols(); ++j) row.push_back(r.signals(i, j));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+void add_simulation_summary(json& summary, const CaseDefinition& c, const SteadyStateResult& r) {
+  summary["converged"] = r.converged;
+  summary["periods"] = r.periods;
+  summary["stop_reason"] = r.stop_reason;
+  if (!r.message.empty()) summary["message"] = r.message;
+  summary["last_change"] = r.last_change;
+  summary["steps"] = r.statistics.steps;
+  summary["force_evaluations"] = r.statistics.force_evaluations;
+  summary["newton_iterations"] = r.statistics.newton_iterations;
+  RecordedPoint last_period;
+  for (const PeriodSummary& s : r.outputs) last_period.outputs.push_back({s.max, s.min, s.first_harmonic()});
+  add_outputs(summary, c, last_period);
+  for (size_t i = 0; i < c.outputs.size() && i < r.outputs.size(); ++i) {
+    const Eigen::VectorXd& h = r.outputs[i].harmonics;
+    std::string key = "harmonics_";
+    key += c.outputs[i].name;
+    summary[key] = std::vector<double>(h.data(), h.data() + h.size());
+  }
+}
+
+FoldScales tracking_scales(HarmonicBalance& hbm, const NfrcOptions& n, double parameter_span) {
+  const double reference = n.length_scale > 0 ? n.length_scale : automatic_length_scale(hbm, n.omega_start, n.omega_end);
+  FoldScales s;
+  s.length = n.length_scale > 0 ? n.length_scale : 0.01 * reference;
+  s.omega = std::abs(n.omega_end - n.omega_start);
+  s.force = force_scale(hbm, reference);
+  s.parameter = parameter_span;
+  return s;
+}
+
+}  // namespace hbtrack
