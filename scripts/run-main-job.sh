@@ -14,7 +14,7 @@ mkdir -p results
 # point tracked in amplitude, friction coefficient and clearance, validation NFRCs, isolas,
 # a time-integration check, figures and results/blade_study/index.md.
 $hbtrack modes examples/blade/nominal.toml --count 6 -o results/blade_modes
-$hbtrack study examples/blade/nominal.toml -o results/blade_study
+$hbtrack study examples/blade/nominal.toml --units m -o results/blade_study
 
 # The small examples.
 for example in duffing two_dof_contact coupled_duffing chain_contact nltva; do

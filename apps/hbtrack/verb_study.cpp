@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <thread>
 
@@ -30,6 +31,7 @@ struct StudyOptions {
   CommonOptions common;
   std::vector<std::string> only;  // restrict the tracked parameters
   int jobs = 0;                   // steps side by side; 0: one per core
+  std::string units;              // the model's length unit, for the figures' labels
 };
 
 // A limit point of a validation NFRC lies on a tracking curve when the located crossing agrees
@@ -335,29 +337,19 @@ class Study {
   // Figures are a convenience: a missing matplotlib costs the pictures, not the study.
   void figures() {
     ensure_directory(dir_ + "/figures");
-    std::vector<ChildTask> tasks;
-    std::vector<std::string> names;
-    auto plot = [&](const std::string& name, const std::string& script, std::vector<std::string> args) {
-      args.insert(args.end(), {"-o", dir_ + "/figures/" + name});
-      tasks.push_back(python_script_task(script, args, dir_ + "/figures/log.txt"));
-      names.push_back("figures/" + name);
-    };
-    if (summary_.contains("nfrc")) plot("nfrc.png", "plot_branch.py", {dir_ + "/nfrc"});
-    for (const auto& t : summary_["tracking"]) {
-      std::vector<std::string> folders;
-      for (const auto& c : t["curves"])
-        if (c.contains("folder")) folders.push_back(dir_ + "/" + c["folder"].get<std::string>());
-      if (!folders.empty()) plot("tracking_" + t["parameter"].get<std::string>() + ".png", "plot_tracking.py", folders);
-      for (const auto& v : t["validations"]) {
-        std::vector<std::string> overlay{dir_ + "/" + v["folder"].get<std::string>()};
-        for (const auto& i : v.value("isola_branches", json::array())) overlay.insert(overlay.end(), {"--also", dir_ + "/" + i["folder"].get<std::string>()});
-        plot(v["folder"].get<std::string>() + ".png", "plot_branch.py", overlay);
-      }
-    }
-    const std::vector<int> codes = run_tasks(tasks, jobs_);
+    std::vector<std::string> args{dir_};
+    if (!o_.units.empty()) args.insert(args.end(), {"--units", o_.units});
+    const int code = run_tasks({python_script_task("plot_study.py", args, dir_ + "/figures/log.txt")}, 1).front();
     json made = json::array();
-    for (size_t i = 0; i < codes.size(); ++i)
-      if (codes[i] == 0) made.push_back(names[i]);
+    if (code == 0) {
+      std::vector<std::string> files;
+      for (const auto& f : std::filesystem::directory_iterator(dir_ + "/figures"))
+        if (f.path().extension() == ".png") files.push_back("figures/" + f.path().filename().string());
+      std::sort(files.begin(), files.end());
+      for (const auto& f : files) made.push_back(f);
+    } else if (!o_.common.quiet) {
+      std::fprintf(stderr, "study: no figures (exit %d, see %s/figures/log.txt)\n", code, dir_.c_str());
+    }
     summary_["figures"] = made;
   }
 
@@ -391,6 +383,7 @@ void add_study_verb(CLI::App& app, VerbList& verbs) {
   CLI::App* s = app.add_subcommand("study", "the whole analysis of a case: NFRC, tracking of every limit point, isolas, validation, figures");
   add_common_options(s, options.common);
   s->add_option("--only", options.only, "track only this parameter of [study] (repeatable)")->type_name("NAME");
+  s->add_option("--units", options.units, "the model's length unit, for the figures' labels (e.g. m)")->type_name("UNIT");
   s->add_option("--jobs", options.jobs, "independent steps run side by side (0: one per core)")->type_name("INT")->capture_default_str();
   verbs.push_back({s, [] { return run_study(options); }});
 }

@@ -179,6 +179,11 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None):
         value = nfrc["summary"]["options"]["parameters"][param]
         stable, unstable = _stable_masks(nfrc["branch"])
         _plot_split(ax, nfrc["branch"]["omega"], nfrc["branch"][f"max_{name}"], stable, unstable, f"C{j}", f"NFRC, {param} = {value:g}")
+    # The folds are what is checked: show the frequencies the tracking curves span, not the
+    # NFRCs' whole range where the resonance would be a spike.
+    omegas = np.concatenate([np.asarray(tracking_curve(t)["omega"]) for t in tracks])
+    span = max(omegas.max() - omegas.min(), 1e-3 * abs(omegas.max()))
+    ax.set_xlim(omegas.min() - 0.25 * span, omegas.max() + 0.25 * span)
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(length_label(f"max {name} over a period", length_unit))
     ax.set_title("tracking curves and NFRCs (folds on the curves)", fontsize=10)

@@ -59,20 +59,24 @@ std::string extremum_type(const std::vector<BranchPoint>& leg, int index) {
 
 LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
                         const ContinuationOptions& options, const FoldScales& fallback) {
-  BorderedFoldSystem system(hbm, parameter, scales);
-  VectorXd u = start_unknowns(system, hbm, x, omega);
-  LocatedFold f;
+  // First to the case's own tolerance (`fallback`), then a few iterations toward the stricter
+  // `scales`: round-off on a stiff model may deny those extra digits, and then the fold located
+  // to the case tolerance stands.
   const double value = hbm.parameters().value(parameter);
-  f.converged = newton_at_fixed_parameter(system, u, value, options.tolerance, 3 * options.max_iterations) >= 0;
-  if (!f.converged && scales.force < fallback.force) {
-    // The extra digits asked for may lie below the round-off of a stiff model: a fold located
-    // to the case's own tolerance is still located.
-    BorderedFoldSystem plain(hbm, parameter, fallback);
-    u = start_unknowns(plain, hbm, system.harmonics(u), system.omega(u));
-    f.converged = newton_at_fixed_parameter(plain, u, value, options.tolerance, options.max_iterations) >= 0;
+  BorderedFoldSystem plain(hbm, parameter, fallback);
+  VectorXd u = start_unknowns(plain, hbm, x, omega);
+  LocatedFold f;
+  f.converged = newton_at_fixed_parameter(plain, u, value, options.tolerance, 3 * options.max_iterations) >= 0;
+  f.x = plain.harmonics(u);
+  f.omega = plain.omega(u);
+  if (f.converged && scales.force < fallback.force) {
+    BorderedFoldSystem system(hbm, parameter, scales);
+    VectorXd strict = start_unknowns(system, hbm, f.x, f.omega);
+    if (newton_at_fixed_parameter(system, strict, value, options.tolerance, 4) >= 0) {
+      f.x = system.harmonics(strict);
+      f.omega = system.omega(strict);
+    }
   }
-  f.x = system.harmonics(u);
-  f.omega = system.omega(u);
   return f;
 }
 
