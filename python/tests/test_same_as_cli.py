@@ -90,7 +90,9 @@ def test_blade_frc_matches_cli(results_dir):
     cli = read_result(folder)
     assert "stable" in cli["branch"] and len(cli["branch"]["omega"]) > 5
     assert cli["summary"]["stop_reason"] == "reached_end"
-    assert (cli["branch"]["max_le"] > BLADE_CLEARANCE).all()  # in contact at every point
+    # Up the resonance into contact: the second half of the branch rubs.
+    in_contact = cli["branch"]["max_le"] > BLADE_CLEARANCE
+    assert not in_contact[0] and in_contact[len(in_contact) // 2:].all()
     assert_same_columns(api["branch"], cli["branch"])
     assert_same_special_points(api["special_points"], cli["special_points"])
 
