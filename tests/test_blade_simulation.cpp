@@ -35,6 +35,7 @@ std::vector<std::vector<double>> read_rows(const fs::path& p) {
 }
 
 TEST(BladeSimulation, NewmarkStaysOnTheHbmOrbitAtTheContactResonance) {
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers; run by the Release pass";
   const fs::path dir = fs::temp_directory_path() / ("hbtrack_blade_simulation_" + std::to_string(getpid()));
   fs::remove_all(dir);
   const std::string blade = hbtrack::test::source_path("examples/blade/nominal.toml");

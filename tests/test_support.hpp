@@ -20,6 +20,16 @@ inline std::string source_path(const std::string& relative) {
   return path;
 }
 
+// True in the AddressSanitizer/UndefinedBehaviorSanitizer build. The few tests that integrate or
+// continue the full blade for minutes skip themselves there: the Release pass runs them, and the
+// same code paths run under the sanitizers on the small models of the other tests.
+constexpr bool kSanitizedBuild =
+#ifdef HBTRACK_SANITIZED_BUILD
+    true;
+#else
+    false;
+#endif
+
 // Central-difference derivative of a vector function along one scalar.
 inline Eigen::VectorXd central_difference(const std::function<Eigen::VectorXd(double)>& f, double at, double h) {
   return (f(at + h) - f(at - h)) / (2.0 * h);
