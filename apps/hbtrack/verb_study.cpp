@@ -79,6 +79,7 @@ class Study {
     save();
     const bool ok = nominal() && tracking() && validation_and_simulation() && isolas();
     for (const StudyTrack& t : tracked_) summary_["tracking"].push_back(entries_[t.parameter]);
+    save();  // the figures script reads it
     figures();
     summary_["stop_reason"] = ok ? "completed" : stop_reason_;
     summary_["timings"] = {{"wall_s", seconds_since(t0)}};
