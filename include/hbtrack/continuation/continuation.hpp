@@ -116,8 +116,9 @@ struct ParameterWindow {
 };
 
 // Everything the engine's next step depends on, taken between two steps (after a point was
-// accepted and the step size adapted). Restarting from it continues the branch exactly as the
-// run it was taken from would have: same points, bit for bit (`hbtrack frc --resume`).
+// accepted and the step size adapted, or after a rejected step was halved). Restarting from it
+// continues the branch exactly as the run it was taken from would have: same points, bit for
+// bit (`hbtrack frc --resume`).
 struct ContinuationState {
   int points = 0;                // points accepted so far; the next one gets this index
   Eigen::VectorXd x, x_before;   // last point and the one before it, scaled ([u ./ scale; lambda / sl])
