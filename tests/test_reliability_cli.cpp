@@ -83,6 +83,13 @@ TEST(Reliability, ResumeRefusesOtherSettingsAndFinishedRuns) {
   EXPECT_EQ(other.exit_code, 2);
   EXPECT_NE(other.err.find("checkpoint.json was computed with other settings"), std::string::npos) << other.err;
   EXPECT_EQ(count_lines(dir / "branch.csv"), 1 + 5) << "a refused resume must leave the folder alone";
+  // A states.csv shorter than the checkpoint (a folder edited by hand) cannot be continued.
+  const std::string states = file_bytes(dir / "states.csv");
+  std::ofstream(dir / "states.csv", std::ios::trunc) << states.substr(0, states.find('\n') + 1);
+  const CliRun short_states = run_cli("frc " + duffing() + " -q --resume " + dir.string());
+  EXPECT_EQ(short_states.exit_code, 2);
+  EXPECT_NE(short_states.err.find("states.csv: holds 0 rows, the checkpoint 5"), std::string::npos) << short_states.err;
+  std::ofstream(dir / "states.csv", std::ios::trunc) << states;
   ASSERT_EQ(run_cli("frc " + duffing() + " -q --resume " + dir.string()).exit_code, 0);
   const CliRun again = run_cli("frc " + duffing() + " -q --resume " + dir.string());
   EXPECT_EQ(again.exit_code, 2);

@@ -68,10 +68,17 @@ int run_frc(const FrcOptions& options) {
   if (!options.resume.empty()) resumed = checkpoint_to_resume(dir, settings);
   ensure_directory(dir);
   const int rows_kept = resumed ? resumed->state.points : 0;
-  CsvAppender branch = resumed ? CsvAppender::continuing(dir + "/branch.csv", branch_header(c), rows_kept)
-                               : CsvAppender(dir + "/branch.csv", branch_header(c));
-  CsvAppender states = resumed ? CsvAppender::continuing(dir + "/states.csv", state_header(hbm.unknowns()), rows_kept)
-                               : CsvAppender(dir + "/states.csv", state_header(hbm.unknowns()));
+  // A resumed run appends to its CSVs; a folder that does not fit its checkpoint is bad input.
+  auto open_csv = [&](const std::string& path, const std::vector<std::string>& header) {
+    if (!resumed) return CsvAppender(path, header);
+    try {
+      return CsvAppender::continuing(path, header, rows_kept);
+    } catch (const std::runtime_error& e) {
+      throw CaseError(std::string("--resume: ") + e.what());
+    }
+  };
+  CsvAppender branch = open_csv(dir + "/branch.csv", branch_header(c));
+  CsvAppender states = open_csv(dir + "/states.csv", state_header(hbm.unknowns()));
   if (resumed) summary["resumed_at_point"] = rows_kept;
   write_json_atomically(dir + "/summary.json", summary);
 
