@@ -601,10 +601,64 @@ TEST_F(MatFileTest, ImplausibleSizeInHeaderIsRejected) {
   const std::string dims_element("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x03\0\0\0", 16);
   const std::size_t at = bytes.find(dims_element);
   ASSERT_NE(at, std::string::npos);
-  const std::string fifty_million("\x80\xf0\xfa\x02", 4);  // 50'000'000 little-endian
-  bytes.replace(at + 12, 4, fifty_million);
+  const std::string four_million("\x00\x09\x3d\x00", 4);  // 4'000'000 little-endian, within the dimension limit
+  bytes.replace(at + 12, 4, four_million);
   write_text("corrupt_dims.mat", bytes);
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': header claims 2 x 50000000");
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': header claims 2 x 4000000");
+}
+
+// Fuzzing finding (build-fuzz/findings/mat_file/oom-1145...): a dims tag claiming 4 GB made
+// libmatio's Mat_VarReadInfo allocate 8 GB before any check of ours could run.
+TEST_F(MatFileTest, TagClaimingMoreBytesThanTheFileIsRejectedBeforeMatio) {
+  const std::string path = path_for("huge_tag.mat");
+  {
+    MatWriter writer(path);
+    writer.dense("K", Eigen::MatrixXd::Ones(2, 2));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  const std::string dims_element("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x02\0\0\0", 16);
+  const std::size_t at = bytes.find(dims_element);
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at + 4, 4, std::string("\x07\xff\xff\xff", 4));  // 4294967047 bytes, as the fuzzer wrote
+  write_text("huge_tag.mat", bytes);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the element at byte");
+}
+
+// Fuzzing finding (timeout-95af...): a header of 1e8 columns made the reader zero index arrays
+// for over 30 s under the sanitizers; the dimension limit is now 5e6.
+TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {
+  const std::string path = path_for("wide.mat");
+  {
+    MatWriter writer(path);
+    writer.dense("K", Eigen::MatrixXd::Ones(2, 3));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  const std::string dims_element("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x03\0\0\0", 16);
+  const std::size_t at = bytes.find(dims_element);
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at + 12, 4, std::string("\x00\xe1\xf5\x05", 4));  // 100'000'000 little-endian
+  write_text("wide.mat", bytes);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "size 2 x 100000000 exceeds the limit of 5000000 per dimension");
+}
+
+// Fuzzing finding (oom-1e5f...): a v4 record whose name length claims 1.7 GB.
+TEST_F(MatFileTest, V4NameLengthBeyondTheFileIsRejectedBeforeMatio) {
+  const std::string path = path_for("huge_name.mat");
+  {
+    MatWriter writer(path, MAT_FT_MAT4);
+    writer.dense("K", Eigen::MatrixXd::Ones(2, 2));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  ASSERT_GE(bytes.size(), 20u);
+  bytes.replace(16, 4, std::string("\x78\x61\x62\x69", 4));  // name length 1768055160
+  write_text("huge_name.mat", bytes);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the v4 record at byte 0 claims 1768055160");
 }
 
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {

@@ -27,9 +27,10 @@ namespace {
 using Triplet = Eigen::Triplet<double>;
 
 // Building an Eigen sparse matrix allocates (and zeroes) an index per row and per column, so a
-// corrupt size field could demand gigabytes without a single entry behind it. 1e8 is far above
-// any model hbtrack solves and keeps dimensions well inside Eigen's int storage index.
-constexpr std::int64_t kMaxDimension = 100'000'000;
+// corrupt size field could demand gigabytes without a single entry behind it, and seconds of
+// zeroing (fuzzing: a .mat header of 1e8 columns took over 30 s under the sanitizers). 5e6 is
+// far above any model hbtrack solves and keeps dimensions well inside Eigen's int storage index.
+constexpr std::int64_t kMaxDimension = 5'000'000;
 static_assert(kMaxDimension < std::numeric_limits<int>::max());
 // A corrupt or hostile header must not be able to request an absurd allocation.
 constexpr std::int64_t kMaxEntries = 1'000'000'000;
@@ -472,6 +473,92 @@ ElementLoader loader_for(matio_types data_type) {
   }
 }
 
+// libmatio allocates what a header claims before checking it against the file: a v5 dims tag
+// of 4 GB made Mat_VarReadInfo ask for 8 GB, a v4 name length of 1.7 GB as much. So the
+// headers are walked first and a size claiming more bytes than the file (or, in v5, than the
+// enclosing element) holds is refused. Compressed (v7) elements keep their tags inside the
+// zlib stream: those are left to matio.
+class MatHeaderCheck {
+ public:
+  explicit MatHeaderCheck(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+    in_.seekg(0, std::ios::end);
+    size_ = in_ ? static_cast<std::uint64_t>(in_.tellg()) : 0;
+  }
+
+  void run() {
+    unsigned char header[4];
+    if (size_ >= 128 && read_at(124, header, 4) && ((header[2] == 'I' && header[3] == 'M') || (header[2] == 'M' && header[3] == 'I'))) {
+      swap_ = header[2] == 'M';
+      if (word16(header) == 0x0100) check_elements(128, size_, 0);  // 0x0200: v7.3, an HDF5 file
+      return;
+    }
+    check_v4_records();
+  }
+
+ private:
+  static constexpr std::uint32_t kMatrix = 14;
+
+  bool read_at(std::uint64_t offset, unsigned char* out, std::size_t n) {
+    in_.clear();
+    in_.seekg(static_cast<std::streamoff>(offset));
+    in_.read(reinterpret_cast<char*>(out), static_cast<std::streamsize>(n));
+    return static_cast<std::size_t>(in_.gcount()) == n;
+  }
+  std::uint32_t word16(const unsigned char* b) const { return swap_ ? (b[0] << 8u) | b[1] : (b[1] << 8u) | b[0]; }
+  std::uint32_t word32(const unsigned char* b) const {
+    return swap_ ? (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | b[3]
+                 : (std::uint32_t{b[3]} << 24) | (std::uint32_t{b[2]} << 16) | (std::uint32_t{b[1]} << 8) | b[0];
+  }
+
+  // The elements in [begin, end): each must fit; a matrix's sub-elements must fit in it.
+  void check_elements(std::uint64_t begin, std::uint64_t end, int depth) {
+    std::uint64_t at = begin;
+    while (at + 8 <= end) {
+      unsigned char tag[8];
+      if (!read_at(at, tag, 8)) return;
+      const std::uint32_t type = word32(tag), bytes = word32(tag + 4);
+      if (type >> 16) {  // small data element: up to 4 bytes inside the tag
+        at += 8;
+        continue;
+      }
+      if (bytes > end - at - 8)
+        fail(path_, "corrupt MAT file: the element at byte " + std::to_string(at) + " claims " + std::to_string(bytes) + " bytes, " +
+                        std::to_string(end - at - 8) + " remain");
+      if (type == kMatrix && depth < 8) check_elements(at + 8, at + 8 + bytes, depth + 1);
+      // Sub-elements are padded to 8 bytes; top-level elements (compressed ones) are not.
+      at += 8 + (depth > 0 ? (bytes + 7u) / 8u * 8u : bytes);
+    }
+  }
+
+  // v4: records of a 20-byte header (type MOPT, rows, columns, imaginary flag, name length),
+  // the name, then rows x columns elements (twice when complex).
+  void check_v4_records() {
+    std::uint64_t at = 0;
+    while (at + 20 <= size_) {
+      unsigned char h[20];
+      if (!read_at(at, h, 20)) return;
+      swap_ = false;
+      if (word32(h) >= 5000) swap_ = true;  // M digit 1: big-endian
+      const std::uint32_t type = word32(h);
+      const std::uint32_t precision = type / 10 % 10;
+      static constexpr std::uint64_t kWidth[] = {8, 4, 4, 2, 2, 1};
+      if (type >= 5000 || precision > 5) return;  // not a v4 record: matio decides
+      const std::uint64_t name = word32(h + 16);
+      const std::uint64_t data = std::uint64_t{word32(h + 4)} * word32(h + 8) * kWidth[precision] * (word32(h + 12) ? 2 : 1);
+      const std::uint64_t remain = size_ - at - 20;
+      if (name > remain || data > remain - name)
+        fail(path_, "corrupt MAT file: the v4 record at byte " + std::to_string(at) + " claims " + std::to_string(name) + " + " +
+                        std::to_string(data) + " bytes, " + std::to_string(remain) + " remain");
+      at += 20 + name + data;
+    }
+  }
+
+  const std::string& path_;
+  std::ifstream in_;
+  std::uint64_t size_ = 0;
+  bool swap_ = false;
+};
+
 class MatVariableReader {
  public:
   MatVariableReader(const std::string& path, const std::string& name) : path_(path), name_(name) {}
@@ -479,6 +566,7 @@ class MatVariableReader {
   Eigen::SparseMatrix<double> read() {
     require_readable_file(path_);
     if (name_.empty()) fail(path_, "variable name is empty");
+    MatHeaderCheck(path_).run();
     const MatFile file{Mat_Open(path_.c_str(), MAT_ACC_RDONLY)};
     if (!file) fail(path_, "not a readable MAT file (v4, v5, v7 or v7.3)");
 
