@@ -645,6 +645,21 @@ TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "size 2 x 100000000 exceeds the limit of 5000000 per dimension");
 }
 
+// Fuzzing finding (oom-0338...): inside a compressed (v7) element, a tag claiming 2.5 GB that
+// libmatio allocated on inflating. The element as the fuzzer wrote it, after a v5 header.
+TEST_F(MatFileTest, CompressedTagBeyondZlibsExpansionIsRejectedBeforeMatio) {
+  std::string header(128, ' ');
+  header.replace(0, 10, "MATLAB 5.0");
+  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string element(
+      "\x0f\x00\x00\x00\x2e\x00\x00\x00\x78\x9c\xe3\x63\x60\x60\x08\x00\x62\x35\x20\xe6\x80\xd2\x20\xc0"
+      "\x0a\xe5\x32\x41\x31\x23\x10\x7a\x03\x69\x4e\x20\x56\x60\x80\x03\x07\x08\xf5\x61\x3f\x2a\xcd\xe0"
+      "\x00\x00\x70\xa0\x04\xd8\x0f\x00\x00\x78\x00\x2c\x00\x00\x00\x9c\x5d\x78\x03\x5a",
+      68);
+  const std::string path = write_text("compressed_tag.mat", header + element);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the compressed element at byte 128 holds a tag of");
+}
+
 // Fuzzing finding (oom-1e5f...): a v4 record whose name length claims 1.7 GB.
 TEST_F(MatFileTest, V4NameLengthBeyondTheFileIsRejectedBeforeMatio) {
   const std::string path = path_for("huge_name.mat");

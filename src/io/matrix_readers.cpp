@@ -1,6 +1,7 @@
 #include "hbtrack/io/matrix_readers.hpp"
 
 #include <matio.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <array>
@@ -474,10 +475,10 @@ ElementLoader loader_for(matio_types data_type) {
 }
 
 // libmatio allocates what a header claims before checking it against the file: a v5 dims tag
-// of 4 GB made Mat_VarReadInfo ask for 8 GB, a v4 name length of 1.7 GB as much. So the
-// headers are walked first and a size claiming more bytes than the file (or, in v5, than the
-// enclosing element) holds is refused. Compressed (v7) elements keep their tags inside the
-// zlib stream: those are left to matio.
+// of 4 GB made Mat_VarReadInfo ask for 8 GB, a v4 name length of 1.7 GB as much, a tag inside
+// a compressed (v7) element 2.5 GB. So the headers are walked first and a size claiming more
+// bytes than the file (or the enclosing element) holds is refused; inside a compressed element,
+// whose true size is unknown until inflated, more than zlib's maximal expansion (1032:1) of it.
 class MatHeaderCheck {
  public:
   explicit MatHeaderCheck(const std::string& path) : path_(path), in_(path, std::ios::binary) {
@@ -497,6 +498,43 @@ class MatHeaderCheck {
 
  private:
   static constexpr std::uint32_t kMatrix = 14;
+  static constexpr std::uint32_t kCompressed = 15;
+  static constexpr std::uint64_t kMaxZlibRatio = 1032;
+
+  // Inflates the first 4 KB of a compressed element (the matrix tag and its header
+  // sub-elements) and checks their sizes against the element's largest possible expansion.
+  void check_compressed(std::uint64_t begin, std::uint32_t bytes) {
+    std::string packed(std::min<std::uint32_t>(bytes, 1u << 16), '\0');
+    if (!read_at(begin, reinterpret_cast<unsigned char*>(packed.data()), packed.size())) return;
+    unsigned char plain[4096];
+    z_stream z{};
+    if (inflateInit(&z) != Z_OK) return;
+    z.next_in = reinterpret_cast<Bytef*>(packed.data());
+    z.avail_in = static_cast<uInt>(packed.size());
+    z.next_out = plain;
+    z.avail_out = sizeof plain;
+    inflate(&z, Z_SYNC_FLUSH);  // whatever came out; a corrupt stream is matio's to report
+    const std::size_t have = sizeof plain - z.avail_out;
+    inflateEnd(&z);
+    if (have < 8) return;
+    const std::uint64_t limit = std::uint64_t{bytes} * kMaxZlibRatio;
+    const std::uint32_t matrix_bytes = word32(plain + 4);
+    if (word32(plain) != kMatrix) return;
+    if (matrix_bytes > limit) fail_compressed(begin, matrix_bytes, limit);
+    for (std::size_t at = 8; at + 8 <= have;) {
+      const std::uint32_t type = word32(plain + at), sub_bytes = word32(plain + at + 4);
+      if (type >> 16) {
+        at += 8;
+        continue;
+      }
+      if (sub_bytes > matrix_bytes - (at - 8)) fail_compressed(begin, sub_bytes, matrix_bytes - (at - 8));
+      at += 8 + (sub_bytes + 7u) / 8u * 8u;
+    }
+  }
+  [[noreturn]] void fail_compressed(std::uint64_t begin, std::uint64_t claimed, std::uint64_t room) const {
+    fail(path_, "corrupt MAT file: the compressed element at byte " + std::to_string(begin - 8) + " holds a tag of " + std::to_string(claimed) +
+                    " bytes, at most " + std::to_string(room) + " fit");
+  }
 
   bool read_at(std::uint64_t offset, unsigned char* out, std::size_t n) {
     in_.clear();
@@ -525,6 +563,7 @@ class MatHeaderCheck {
         fail(path_, "corrupt MAT file: the element at byte " + std::to_string(at) + " claims " + std::to_string(bytes) + " bytes, " +
                         std::to_string(end - at - 8) + " remain");
       if (type == kMatrix && depth < 8) check_elements(at + 8, at + 8 + bytes, depth + 1);
+      if (type == kCompressed && depth == 0) check_compressed(at + 8, bytes);
       // Sub-elements are padded to 8 bytes; top-level elements (compressed ones) are not.
       at += 8 + (depth > 0 ? (bytes + 7u) / 8u * 8u : bytes);
     }
