@@ -16,9 +16,9 @@ namespace hbtrack {
 namespace {
 
 // A matrix is sized by its largest index (or the dof map): one line "20000000 1 6" would
-// otherwise allocate index arrays for 20 million rows. Five million dofs is far beyond any model
+// otherwise allocate index arrays for 20 million rows. A million dofs is far beyond any model
 // this tool reduces (the blade has a few thousand).
-constexpr int kMaxDofs = 5'000'000;
+constexpr int kMaxDofs = 1'000'000;
 
 [[noreturn]] void fail(const std::string& path, long line, const std::string& rule) {
   throw std::runtime_error(path + ": line " + std::to_string(line) + ": " + rule);

@@ -490,10 +490,10 @@ class MatHeaderCheck {
     unsigned char header[4];
     if (size_ >= 128 && read_at(124, header, 4) && ((header[2] == 'I' && header[3] == 'M') || (header[2] == 'M' && header[3] == 'I'))) {
       swap_ = header[2] == 'M';
-      if (word16(header) == 0x0100) check_elements(128, size_, 0);  // 0x0200: v7.3, an HDF5 file
-      return;
+      if (word16(header) == 0x0100) return check_elements(128, size_, 0);
+      if (word16(header) == 0x0200) return;  // v7.3, an HDF5 file
     }
-    check_v4_records();
+    check_v4_records();  // libmatio reads any other file as v4
   }
 
  private:
@@ -576,12 +576,18 @@ class MatHeaderCheck {
     while (at + 20 <= size_) {
       unsigned char h[20];
       if (!read_at(at, h, 20)) return;
-      swap_ = false;
-      if (word32(h) >= 5000) swap_ = true;  // M digit 1: big-endian
+      if (at == 0) {
+        swap_ = false;
+        if (word32(h) >= 5000) swap_ = true;  // M digit 1: big-endian; libmatio keeps the first record's order
+      }
       const std::uint32_t type = word32(h);
       const std::uint32_t precision = type / 10 % 10;
       static constexpr std::uint64_t kWidth[] = {8, 4, 4, 2, 2, 1};
-      if (type >= 5000 || precision > 5) return;  // not a v4 record: matio decides
+      if (type >= 5000 || precision > 5) {
+        if (at == 0) return;  // not a v4 file: matio decides
+        // libmatio would still allocate the name length this garbage claims, record after record.
+        fail(path_, "corrupt MAT file: the v4 record at byte " + std::to_string(at) + " has the invalid type " + std::to_string(type));
+      }
       const std::uint64_t name = word32(h + 16);
       const std::uint64_t data = std::uint64_t{word32(h + 4)} * word32(h + 8) * kWidth[precision] * (word32(h + 12) ? 2 : 1);
       const std::uint64_t remain = size_ - at - 20;
