@@ -442,7 +442,29 @@ TEST_F(MatrixMarketTest, TruncatedOrCorruptedInputNeverCrashes) {
 // ---------------------------------------------------------------------------------------------
 // MATLAB .mat files
 
-using MatFileTest = TempDirTest;
+class MatFileTest : public TempDirTest {
+ protected:
+  // A v5 file of a dense `rows` x `cols` variable K whose dims sub-element (tag miINT32 = 5, 8
+  // bytes, then int32 rows, cols) gets `replacement` written at `offset` from the tag's start.
+  std::string mat_with_patched_dims(const std::string& filename, int rows, int cols, std::size_t offset,
+                                    const std::string& replacement) const {
+    const std::string path = path_for(filename);
+    {
+      MatWriter writer(path);
+      writer.dense("K", Eigen::MatrixXd::Ones(rows, cols));
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    std::string dims_element("\x05\0\0\0\x08\0\0\0", 8);
+    dims_element += std::string(reinterpret_cast<const char*>(&rows), 4);
+    dims_element += std::string(reinterpret_cast<const char*>(&cols), 4);
+    const std::size_t at = bytes.find(dims_element);
+    EXPECT_NE(at, std::string::npos);
+    if (at != std::string::npos) bytes.replace(at + offset, replacement.size(), replacement);
+    return write_text(filename, bytes);
+  }
+};
 
 TEST_F(MatFileTest, ReadsDenseAndSparseIdenticallyToMatrixMarket) {
   const Eigen::MatrixXd dense = example_matrix();
@@ -589,59 +611,23 @@ TEST_F(MatFileTest, NonFiniteValueIsRejected) {
 
 // A corrupt dimension must be caught from the header, before libmatio allocates what it claims.
 TEST_F(MatFileTest, ImplausibleSizeInHeaderIsRejected) {
-  const std::string path = path_for("corrupt_dims.mat");
-  {
-    MatWriter writer(path);
-    writer.dense("K", Eigen::MatrixXd::Ones(2, 3));
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  in.close();
-  // v5 dimensions sub-element: tag (miINT32 = 5, 8 bytes) followed by int32 rows = 2, cols = 3.
-  const std::string dims_element("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x03\0\0\0", 16);
-  const std::size_t at = bytes.find(dims_element);
-  ASSERT_NE(at, std::string::npos);
   const std::string four_million("\x00\x09\x3d\x00", 4);  // 4'000'000 little-endian, within the dimension limit
-  bytes.replace(at + 12, 4, four_million);
-  write_text("corrupt_dims.mat", bytes);
+  const std::string path = mat_with_patched_dims("corrupt_dims.mat", 2, 3, 12, four_million);
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': header claims 2 x 4000000");
 }
 
 // Fuzzing finding (build-fuzz/findings/mat_file/oom-1145...): a dims tag claiming 4 GB made
 // libmatio's Mat_VarReadInfo allocate 8 GB before any check of ours could run.
 TEST_F(MatFileTest, TagClaimingMoreBytesThanTheFileIsRejectedBeforeMatio) {
-  const std::string path = path_for("huge_tag.mat");
-  {
-    MatWriter writer(path);
-    writer.dense("K", Eigen::MatrixXd::Ones(2, 2));
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  in.close();
-  const std::string dims_element("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x02\0\0\0", 16);
-  const std::size_t at = bytes.find(dims_element);
-  ASSERT_NE(at, std::string::npos);
-  bytes.replace(at + 4, 4, std::string("\x07\xff\xff\xff", 4));  // 4294967047 bytes, as the fuzzer wrote
-  write_text("huge_tag.mat", bytes);
+  // 4294967047 bytes in the dims tag, as the fuzzer wrote it.
+  const std::string path = mat_with_patched_dims("huge_tag.mat", 2, 2, 4, std::string("\x07\xff\xff\xff", 4));
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the element at byte");
 }
 
 // Fuzzing finding (timeout-95af...): a header of 1e8 columns made the reader zero index arrays
 // for over 30 s under the sanitizers; the dimension limit is now 5e6.
 TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {
-  const std::string path = path_for("wide.mat");
-  {
-    MatWriter writer(path);
-    writer.dense("K", Eigen::MatrixXd::Ones(2, 3));
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  in.close();
-  const std::string dims_element("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x03\0\0\0", 16);
-  const std::size_t at = bytes.find(dims_element);
-  ASSERT_NE(at, std::string::npos);
-  bytes.replace(at + 12, 4, std::string("\x00\xe1\xf5\x05", 4));  // 100'000'000 little-endian
-  write_text("wide.mat", bytes);
+  const std::string path = mat_with_patched_dims("wide.mat", 2, 3, 12, std::string("\x00\xe1\xf5\x05", 4));  // 100'000'000
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "size 2 x 100000000 exceeds the limit of 5000000 per dimension");
 }
 
