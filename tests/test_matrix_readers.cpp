@@ -621,7 +621,7 @@ TEST_F(MatFileTest, ImplausibleSizeInHeaderIsRejected) {
 TEST_F(MatFileTest, TagClaimingMoreBytesThanTheFileIsRejectedBeforeMatio) {
   // 4294967047 bytes in the dims tag, as the fuzzer wrote it.
   const std::string path = mat_with_patched_dims("huge_tag.mat", 2, 2, 4, std::string("\x07\xff\xff\xff", 4));
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the element at byte");
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the matrix at byte 128 claims dims of 4294967047 bytes");
 }
 
 // Fuzzing finding (timeout-95af...): a header of 1e8 columns made the reader zero index arrays
@@ -644,6 +644,22 @@ TEST_F(MatFileTest, CompressedTagBeyondZlibsExpansionIsRejectedBeforeMatio) {
       68);
   const std::string path = write_text("compressed_tag.mat", header + element);
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the compressed element at byte 128 holds a tag of");
+}
+
+// Fuzzing finding (oom-dcc1...): the same, but with tags that libmatio does not read as tags:
+// it takes the dims size at a fixed place after the array flags.
+TEST_F(MatFileTest, CompressedDimsSizeAtItsFixedPlaceIsChecked) {
+  std::string header(128, ' ');
+  header.replace(0, 10, "MATLAB 5.0");
+  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string element(
+      "\x0f\x00\x00\x00\x2e\x00\x00\x00\x78\x9c\xe3\x63\x60\x60\x08\x00\x62\x35\x20\xe6\x80\xd2\x20\xc0"
+      "\x0a\xe5\x32\x41\x31\x23\x10\x7a\x03\x69\xab\xdf\xa9\x9f\x7f\xfc\xf8\xf7\xf5\x61\x3f\x2a\xcd\xe0"
+      "\x00\x00\x70\xa0\x04\xd8\x0f\x00\x00\x78\x00\x2c\x00\xcb\xcb\xcb\xcb\xcb\xcb\xd4\x00\x00\x9c\x32"
+      "\x5d\x78\x03\x5a",
+      76);
+  const std::string path = write_text("compressed_dims.mat", header + element);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the compressed element at byte 128 holds a tag of 637534208");
 }
 
 // Fuzzing finding (timeout-0d48...): a valid v4 record followed by garbage whose bytes 124-127

@@ -500,6 +500,8 @@ class MatHeaderCheck {
   static constexpr std::uint32_t kMatrix = 14;
   static constexpr std::uint32_t kCompressed = 15;
   static constexpr std::uint64_t kMaxZlibRatio = 1032;
+  // From a matrix element's tag: its tag (8), the array flags (8 + 8), the dims tag's type (4).
+  static constexpr std::size_t kDimsSizeAt = 28;
 
   // Inflates the first 4 KB of a compressed element (the matrix tag and its header
   // sub-elements) and checks their sizes against the element's largest possible expansion.
@@ -521,6 +523,10 @@ class MatHeaderCheck {
     const std::uint32_t matrix_bytes = word32(plain + 4);
     if (word32(plain) != kMatrix) return;
     if (matrix_bytes > limit) fail_compressed(begin, matrix_bytes, limit);
+    // libmatio reads the dims size at a fixed place (after the 16 bytes of array flags) whatever
+    // the tags before it say, so check it there too.
+    if (have >= kDimsSizeAt + 4 && word32(plain + kDimsSizeAt) > matrix_bytes)
+      fail_compressed(begin, word32(plain + kDimsSizeAt), matrix_bytes);
     for (std::size_t at = 8; at + 8 <= have;) {
       const std::uint32_t type = word32(plain + at), sub_bytes = word32(plain + at + 4);
       if (type >> 16) {
@@ -562,7 +568,13 @@ class MatHeaderCheck {
       if (bytes > end - at - 8)
         fail(path_, "corrupt MAT file: the element at byte " + std::to_string(at) + " claims " + std::to_string(bytes) + " bytes, " +
                         std::to_string(end - at - 8) + " remain");
-      if (type == kMatrix && depth < 8) check_elements(at + 8, at + 8 + bytes, depth + 1);
+      if (type == kMatrix && depth < 8) {
+        unsigned char dims_size[4];
+        if (bytes >= kDimsSizeAt - 4 && read_at(at + kDimsSizeAt, dims_size, 4) && word32(dims_size) > bytes)
+          fail(path_, "corrupt MAT file: the matrix at byte " + std::to_string(at) + " claims dims of " + std::to_string(word32(dims_size)) +
+                          " bytes in " + std::to_string(bytes));
+        check_elements(at + 8, at + 8 + bytes, depth + 1);
+      }
       if (type == kCompressed && depth == 0) check_compressed(at + 8, bytes);
       // Sub-elements are padded to 8 bytes; top-level elements (compressed ones) are not.
       at += 8 + (depth > 0 ? (bytes + 7u) / 8u * 8u : bytes);
