@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev     # summary.json
   libtoml11-dev          # case files
   libmatio-dev           # MATLAB .mat matrices
+  zlib1g-dev             # inflates compressed .mat headers before libmatio sizes them
   calculix-ccx           # cross-checks the hex20 element against CalculiX (test skipped without it)
   libspectra-dev         # sparse/shift-invert eigensolvers (Hill, Craig-Bampton)
   libboost-dev           # Boost.odeint (header-only): the Dormand-Prince time integrator

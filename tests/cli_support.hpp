@@ -1,5 +1,7 @@
 #pragma once
 // Runs the hbtrack executable as a user would, for the command-line tests.
+#include <fcntl.h>
+#include <spawn.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -30,6 +32,46 @@ inline CliRun run_cli(const std::string& args) {
   std::error_code ignored;
   std::filesystem::remove(err, ignored);
   return {WEXITSTATUS(status), ss.str()};
+}
+
+// `hbtrack ARGS...` started in the background (output discarded), for tests that signal it.
+inline pid_t spawn_cli(const std::vector<std::string>& args) {
+  std::vector<std::string> argv_storage{HBTRACK_CLI};
+  argv_storage.insert(argv_storage.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_storage) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = -1;
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+// The exit code of a spawned run (waits for it); -1 when it did not exit normally.
+inline int wait_for_exit(pid_t pid) {
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status)) return -1;
+  return WEXITSTATUS(status);
+}
+
+// Lines of a text file (0 when it does not exist).
+inline int count_lines(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  int n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+// A whole file as a string, for byte-for-byte comparisons.
+inline std::string file_bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 // The column names of a CSV file's header line.

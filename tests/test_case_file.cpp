@@ -155,7 +155,41 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"duplicate_dof", variant("dofs = [\"a\", \"b\"]", "dofs = [\"a\", \"a\"]"), "dof name 'a' appears twice"},
       {"negative_lanczos", variant("lanczos = 1", "lanczos = -1"), "elements[0].lanczos: must be >= 0"},
       {"forcing_above_truncation", variant("cos = 0.5", "cos = 0.5\nharmonic = 4"), "forcing[0].harmonic: must be <= harmonic_balance.harmonics = 3"},
+      // Continuation settings: positive, finite, ordered.
+      {"zero_tolerance", variant("omega_end = 2.0", "omega_end = 2.0\ntolerance = 0.0"), "continuation.tolerance: must be > 0 and finite"},
+      {"nan_tolerance", variant("omega_end = 2.0", "omega_end = 2.0\ntolerance = nan"), "continuation.tolerance: must be finite"},
+      {"tolerance_one", variant("omega_end = 2.0", "omega_end = 2.0\ntolerance = 1.0"), "continuation.tolerance: must be < 1"},
+      {"step_min_above_step", variant("omega_end = 2.0", "omega_end = 2.0\nstep = 0.01\nstep_min = 0.1"), "continuation.step_min: must be <= step"},
+      {"step_above_step_max", variant("omega_end = 2.0", "omega_end = 2.0\nstep = 0.5\nstep_max = 0.1"), "continuation.step: must be <= step_max"},
+      {"zero_max_points", variant("omega_end = 2.0", "omega_end = 2.0\nmax_points = 0"), "continuation.max_points: must be >= 1"},
+      {"zero_max_iterations", variant("omega_end = 2.0", "omega_end = 2.0\nmax_iterations = 0"), "continuation.max_iterations: must be in [1, 1000]"},
+      {"negative_omega", variant("omega_start = 0.1", "omega_start = -0.1"), "continuation.omega_start: must be finite and >= 0"},
+      {"infinite_omega", variant("omega_end = 2.0", "omega_end = inf"), "continuation.omega_end: must be finite"},
+      {"negative_time_limit", variant("omega_end = 2.0", "omega_end = 2.0\nwall_time_limit = -1"), "continuation.wall_time_limit: must be >= 0"},
+      {"bad_corrector", variant("omega_end = 2.0", "omega_end = 2.0\ncorrector = \"newton\""), "continuation.corrector: must be pseudo_arclength or hypersphere"},
+      {"locate_not_boolean", variant("omega_end = 2.0", "omega_end = 2.0\nlocate = 1"), "continuation.locate: expected true or false"},
+      {"bad_stability_method", variant("", "[stability]\nmethod = \"floquet\""), "stability.method: must be hill, monodromy or none"},
+      {"bad_condensation", variant("harmonics = 3", "harmonics = 3\ncondensation = \"guyan\""), "harmonic_balance.condensation: must be auto, schur, modal or none"},
+      // Model, damping, forcing, elements, outputs.
+      {"nan_in_matrix", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0, nan], [nan, 1.0]]"), "model.K[0][1]: must be finite"},
+      {"huge_chain", variant("dofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 2.0]]\nK = [[3.0, -1.0], [-1.0, 1.0]]", "chain = { count = 100000 }"),
+       "model.chain.count: must be in [1, 4000]"},
+      {"matrix_file_is_directory", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \".\" }"), "model.K.file: '"},
+      {"matrix_file_wrong_shape", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"K3.mtx\" }"), "model.K: expected 2x2 (one row per dof), got 3x3"},
+      {"matrix_file_malformed", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"garbage.mtx\" }"), "missing '%%MatrixMarket' banner"},
+      {"mat_file_without_variable", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"empty.mat\" }"), "model.K.variable: missing (required for a .mat file)"},
+      {"rayleigh_one_number", variant("rayleigh = [0.0, 0.01]", "rayleigh = [0.01]"), "damping.rayleigh: expected [alpha, beta]"},
+      {"forcing_vector_length", variant("dof = \"a\"\ncos = 0.5", "cos = [0.5]"), "forcing[0].cos: expected 2 entries (one per dof), got 1"},
+      {"zero_weights", variant("lanczos = 1", "lanczos = 1\nweights = [0.0]"), "elements[0].weights: must not all be zero"},
+      {"negative_friction", variant("", "[[elements]]\ntype = \"tanh_friction\"\ndofs = [\"a\"]\nmu = -0.2\nnormal_load = 1.0\nregularization_velocity = 0.01"),
+       "elements[1].mu: must be >= 0"},
+      {"output_name_with_comma", variant("name = \"tip\"", "name = \"tip,x\""), "outputs[0].name: must be non-empty without commas"},
   };
+  // Side files the matrix rows refer to (relative paths resolve next to the case file).
+  fs::create_directories(test_dir());
+  std::ofstream(test_dir() / "K3.mtx") << "%%MatrixMarket matrix coordinate real general\n3 3 3\n1 1 1\n2 2 1\n3 3 1\n";
+  std::ofstream(test_dir() / "garbage.mtx") << "not a matrix\n";
+  std::ofstream(test_dir() / "empty.mat") << "";
   for (const BadCase& bad : cases) {
     const fs::path p = write_case(bad.name, bad.text);
     try {

@@ -67,10 +67,14 @@ TEST(Cli, SolveAndSetOverride) {
 TEST(Cli, BadInputFailsWithOneLineReason) {
   const fs::path bad = fs::temp_directory_path() / "hbtrack_cli_bad.toml";
   std::ofstream(bad) << "[model]\ndofs = [\"x\"]\nM = [[1.0]]\n";
-  const CliRun r = run_cli("frc " + bad.string() + " -o " + (fs::temp_directory_path() / "hbtrack_cli_bad_out").string());
-  EXPECT_NE(r.exit_code, 0);
+  const fs::path bad_out = fs::temp_directory_path() / "hbtrack_cli_bad_out";
+  fs::remove_all(bad_out);
+  const CliRun r = run_cli("frc " + bad.string() + " -o " + bad_out.string());
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("model.K: missing"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  // Input is checked before the output folder is made: nothing that looks like a result.
+  EXPECT_FALSE(fs::exists(bad_out));
 
   const CliRun missing = run_cli("frc /nonexistent/case.toml -o /tmp/x");
   EXPECT_NE(missing.exit_code, 0);
@@ -100,6 +104,22 @@ TEST(Cli, FailedContinuationKeepsItsPointsAndExitsNonZero) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("continuation stopped"), std::string::npos) << r.err;
   const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
-  EXPECT_NE(s["stop_reason"], "reached_end");
-  EXPECT_NE(s["stop_reason"], "running");
+  EXPECT_EQ(s["stop_reason"], "no_convergence_at_start");
+  EXPECT_EQ(hbtrack::test::count_lines(out / "branch.csv"), 1) << "a header and no point";
+
+  // A failure part-way: two Newton iterations per step cannot reach 1e-12 once the response
+  // grows nonlinear (near omega = 1), and step_min = step leaves no room to halve. It fails after
+  // about 60 points (between 59 and 72 for tolerances 1e-10 to 1e-13), so at least 10 is safe.
+  fs::remove_all(out);
+  const CliRun mid = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") +
+                             " --set continuation.max_iterations=2 --set continuation.step_min=0.02 --set continuation.tolerance=1e-12 -o " +
+                             out.string() + " -q");
+  EXPECT_EQ(mid.exit_code, 1);
+  EXPECT_NE(mid.err.find("continuation stopped: step_size_underflow"), std::string::npos) << mid.err;
+  const nlohmann::json m = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(m["stop_reason"], "step_size_underflow");
+  EXPECT_GE(m["points"].get<int>(), 10);
+  // The points accepted before the failure are on disk, one row each.
+  EXPECT_EQ(hbtrack::test::count_lines(out / "branch.csv"), 1 + m["points"].get<int>());
+  EXPECT_EQ(hbtrack::test::count_lines(out / "states.csv"), 1 + m["points"].get<int>());
 }

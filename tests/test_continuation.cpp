@@ -70,6 +70,45 @@ TEST(Continuation, ObserverCanInterrupt) {
   EXPECT_EQ(r.points.size(), 5u);
 }
 
+TEST(Continuation, ResumingFromASavedStateRepeatsTheRunExactly) {
+  // Secant predictor: the resumed run also needs the point before the last one.
+  CubicFold problem;
+  ContinuationOptions o;
+  o.predictor = "secant";
+  o.step_max = 0.05;
+  const ParameterWindow window{-1.0, 1.0, -1, false};
+  std::vector<ContinuationState> states;
+  ContinuationRestart saving;
+  saving.on_state = [&](const ContinuationState& s) { states.push_back(s); };
+  const ContinuationResult whole = continue_within(problem, VectorXd::Constant(1, -1.3), 1.0, window, o, {}, nullptr, saving);
+  ASSERT_EQ(whole.summary.stop_reason, "reached_end");
+  ASSERT_EQ(whole.special_points.size(), 2u);
+  // A state taken before both limit points: the resumed run must find them as the whole run did.
+  const int k = 5;
+  ASSERT_LT(k, whole.special_points[0].index);
+  ASSERT_EQ(states[static_cast<size_t>(k - 1)].points, k);
+  ContinuationRestart resuming;
+  resuming.resume_from = &states[static_cast<size_t>(k - 1)];
+  std::vector<int> indices;
+  const ContinuationResult rest = continue_within(problem, VectorXd::Zero(1), 1.0, window, o,
+                                                  [&](const BranchPoint&, int index) { indices.push_back(index); return true; }, nullptr, resuming);
+  ASSERT_EQ(rest.points.size() + static_cast<size_t>(k), whole.points.size());
+  EXPECT_EQ(indices.front(), k);
+  // Exact equality: the state holds every double the next step reads.
+  for (size_t i = 0; i < rest.points.size(); ++i) {
+    EXPECT_EQ(rest.points[i].lambda, whole.points[i + static_cast<size_t>(k)].lambda) << i;
+    EXPECT_EQ(rest.points[i].u(0), whole.points[i + static_cast<size_t>(k)].u(0)) << i;
+  }
+  ASSERT_EQ(rest.special_points.size(), whole.special_points.size());
+  for (size_t i = 0; i < rest.special_points.size(); ++i) {
+    EXPECT_EQ(rest.special_points[i].lambda, whole.special_points[i].lambda);
+    EXPECT_EQ(rest.special_points[i].index, whole.special_points[i].index);
+  }
+  EXPECT_EQ(rest.summary.points, whole.summary.points);
+  EXPECT_EQ(rest.summary.newton_iterations, whole.summary.newton_iterations);
+  EXPECT_EQ(rest.summary.jacobian_evaluations, whole.summary.jacobian_evaluations);
+}
+
 TEST(Continuation, FailsCleanlyWhenNewtonCannotStart) {
   CubicFold problem;
   ContinuationOptions o;

@@ -442,7 +442,29 @@ TEST_F(MatrixMarketTest, TruncatedOrCorruptedInputNeverCrashes) {
 // ---------------------------------------------------------------------------------------------
 // MATLAB .mat files
 
-using MatFileTest = TempDirTest;
+class MatFileTest : public TempDirTest {
+ protected:
+  // A v5 file of a dense `rows` x `cols` variable K whose dims sub-element (tag miINT32 = 5, 8
+  // bytes, then int32 rows, cols) gets `replacement` written at `offset` from the tag's start.
+  std::string mat_with_patched_dims(const std::string& filename, int rows, int cols, std::size_t offset,
+                                    const std::string& replacement) const {
+    const std::string path = path_for(filename);
+    {
+      MatWriter writer(path);
+      writer.dense("K", Eigen::MatrixXd::Ones(rows, cols));
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    std::string dims_element("\x05\0\0\0\x08\0\0\0", 8);
+    dims_element += std::string(reinterpret_cast<const char*>(&rows), 4);
+    dims_element += std::string(reinterpret_cast<const char*>(&cols), 4);
+    const std::size_t at = bytes.find(dims_element);
+    EXPECT_NE(at, std::string::npos);
+    if (at != std::string::npos) bytes.replace(at + offset, replacement.size(), replacement);
+    return write_text(filename, bytes);
+  }
+};
 
 TEST_F(MatFileTest, ReadsDenseAndSparseIdenticallyToMatrixMarket) {
   const Eigen::MatrixXd dense = example_matrix();
@@ -589,22 +611,93 @@ TEST_F(MatFileTest, NonFiniteValueIsRejected) {
 
 // A corrupt dimension must be caught from the header, before libmatio allocates what it claims.
 TEST_F(MatFileTest, ImplausibleSizeInHeaderIsRejected) {
-  const std::string path = path_for("corrupt_dims.mat");
+  const std::string four_million("\x00\x09\x3d\x00", 4);  // 4'000'000 little-endian, within the dimension limit
+  const std::string path = mat_with_patched_dims("corrupt_dims.mat", 2, 3, 12, four_million);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': header claims 2 x 4000000");
+}
+
+// Fuzzing finding (build-fuzz/findings/mat_file/oom-1145...): a dims tag claiming 4 GB made
+// libmatio's Mat_VarReadInfo allocate 8 GB before any check of ours could run.
+TEST_F(MatFileTest, TagClaimingMoreBytesThanTheFileIsRejectedBeforeMatio) {
+  // 4294967047 bytes in the dims tag, as the fuzzer wrote it.
+  const std::string path = mat_with_patched_dims("huge_tag.mat", 2, 2, 4, std::string("\x07\xff\xff\xff", 4));
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the matrix at byte 128 claims dims of 4294967047 bytes");
+}
+
+// Fuzzing finding (timeout-95af...): a header of 1e8 columns made the reader zero index arrays
+// for over 30 s under the sanitizers; the dimension limit is now 5e6.
+TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {
+  const std::string path = mat_with_patched_dims("wide.mat", 2, 3, 12, std::string("\x00\xe1\xf5\x05", 4));  // 100'000'000
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "size 2 x 100000000 exceeds the limit of 5000000 per dimension");
+}
+
+// Fuzzing finding (oom-0338...): inside a compressed (v7) element, a tag claiming 2.5 GB that
+// libmatio allocated on inflating. The element as the fuzzer wrote it, after a v5 header.
+TEST_F(MatFileTest, CompressedTagBeyondZlibsExpansionIsRejectedBeforeMatio) {
+  std::string header(128, ' ');
+  header.replace(0, 10, "MATLAB 5.0");
+  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string element(
+      "\x0f\x00\x00\x00\x2e\x00\x00\x00\x78\x9c\xe3\x63\x60\x60\x08\x00\x62\x35\x20\xe6\x80\xd2\x20\xc0"
+      "\x0a\xe5\x32\x41\x31\x23\x10\x7a\x03\x69\x4e\x20\x56\x60\x80\x03\x07\x08\xf5\x61\x3f\x2a\xcd\xe0"
+      "\x00\x00\x70\xa0\x04\xd8\x0f\x00\x00\x78\x00\x2c\x00\x00\x00\x9c\x5d\x78\x03\x5a",
+      68);
+  const std::string path = write_text("compressed_tag.mat", header + element);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the compressed element at byte 128 holds a tag of");
+}
+
+// Fuzzing finding (oom-dcc1...): the same, but with tags that libmatio does not read as tags:
+// it takes the dims size at a fixed place after the array flags.
+TEST_F(MatFileTest, CompressedDimsSizeAtItsFixedPlaceIsChecked) {
+  std::string header(128, ' ');
+  header.replace(0, 10, "MATLAB 5.0");
+  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string element(
+      "\x0f\x00\x00\x00\x2e\x00\x00\x00\x78\x9c\xe3\x63\x60\x60\x08\x00\x62\x35\x20\xe6\x80\xd2\x20\xc0"
+      "\x0a\xe5\x32\x41\x31\x23\x10\x7a\x03\x69\xab\xdf\xa9\x9f\x7f\xfc\xf8\xf7\xf5\x61\x3f\x2a\xcd\xe0"
+      "\x00\x00\x70\xa0\x04\xd8\x0f\x00\x00\x78\x00\x2c\x00\xcb\xcb\xcb\xcb\xcb\xcb\xd4\x00\x00\x9c\x32"
+      "\x5d\x78\x03\x5a",
+      76);
+  const std::string path = write_text("compressed_dims.mat", header + element);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the compressed element at byte 128 holds a tag of 637534208");
+}
+
+// Fuzzing finding (timeout-0d48...): a valid v4 record followed by garbage whose bytes 124-127
+// look like a v5 header of an unknown version; libmatio reads it as v4 and allocated the name
+// lengths the garbage claims, record after record (over 30 s). The input as the fuzzer wrote it.
+TEST_F(MatFileTest, GarbageAfterAV4RecordIsRejectedBeforeMatio) {
+  const std::string bytes(
+      "\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x00\x00\x00\x00\x1e\x00\x00\x00\x01\x00\x00\x00"
+      "\x00\x00\x00\x00\x00\x40\x00\xc9\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff"
+      "\xff\xff\xff\xff\xff\xff\xff\xdf\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff\xff"
+      "\xff\xff\xff\xff\xff\xff\xff\xff\x00\x00\x00\x00\x00\x00\x01\x65\x00\x00\x00\x00\x00\x00\x01\x00"
+      "\x00\x00\x05\x00\x00\x00\x0c\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\x04\x00\x00\x00\x00\x00"
+      "\x00\x00\x09\x00\x40\x01\x49\x4d\x0e\x00\x00\x00\x80\x00\x00\x00\x06\x00\x00\x00\x08\x00\x00\x00"
+      "\x05\x00\x00\x00\x04\x00\x00\x00\x05\x00\x00\x00\x08\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00"
+      "\x01\x00\x01\x00\x4b\x00\x00\x00\x05\x00\x00\x00\x10\x00\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00"
+      "\x00\x72\x72\x72\x72\x00\x00\x00\x01\x00\x02\x00\x05\x00\x00\x00\x0c\x00\x00\x00\x00\x00\x00\x00"
+      "\x00\x00\x00\x02\x04\x00\x00\x00\x00\x00\x00\x00\x09\x00\x00\x00\x20\x00\x00\x00\x00\x00\x00\x00"
+      "\x00\x00\x00\x40\x00\x00\x00\x00\x00\x00\xf0\xbf\x00\x00\x00\x00\x00\x00\xf0\xbf\x00\x00\x00\x00"
+      "\x00\x00\x00\x40",
+      268);
+  const std::string path = write_text("v4_garbage.mat", bytes);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the v4 record at byte 107 has the invalid type");
+}
+
+// Fuzzing finding (oom-1e5f...): a v4 record whose name length claims 1.7 GB.
+TEST_F(MatFileTest, V4NameLengthBeyondTheFileIsRejectedBeforeMatio) {
+  const std::string path = path_for("huge_name.mat");
   {
-    MatWriter writer(path);
-    writer.dense("K", Eigen::MatrixXd::Ones(2, 3));
+    MatWriter writer(path, MAT_FT_MAT4);
+    writer.dense("K", Eigen::MatrixXd::Ones(2, 2));
   }
   std::ifstream in(path, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   in.close();
-  // v5 dimensions sub-element: tag (miINT32 = 5, 8 bytes) followed by int32 rows = 2, cols = 3.
-  const std::string dims_element("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x03\0\0\0", 16);
-  const std::size_t at = bytes.find(dims_element);
-  ASSERT_NE(at, std::string::npos);
-  const std::string fifty_million("\x80\xf0\xfa\x02", 4);  // 50'000'000 little-endian
-  bytes.replace(at + 12, 4, fifty_million);
-  write_text("corrupt_dims.mat", bytes);
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': header claims 2 x 50000000");
+  ASSERT_GE(bytes.size(), 20u);
+  bytes.replace(16, 4, std::string("\x78\x61\x62\x69", 4));  // name length 1768055160
+  write_text("huge_name.mat", bytes);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the v4 record at byte 0 claims 1768055160");
 }
 
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {

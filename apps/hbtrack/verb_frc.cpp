@@ -3,8 +3,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include <filesystem>
+#include <optional>
+
 #include "cli_common.hpp"
+#include "hbtrack/io/continuation_state_file.hpp"
 #include "hbtrack/io/results_writer.hpp"
+#include "result_folder.hpp"
+#include "stop_request.hpp"
 
 namespace hbtrack::cli {
 
@@ -12,36 +18,104 @@ namespace {
 
 using nlohmann::json;
 
+struct FrcOptions {
+  CommonOptions common;
+  std::string resume;     // a stopped frc result folder to continue
+  double time_limit = 0;  // seconds, 0 for none
+};
 
-int run_frc(const CommonOptions& o) {
+// The settings that decide the branch, for checking a resumed run against its checkpoint: the
+// case's options without its path and without what only decides when to stop (max_points,
+// wall_time_limit), which a resumed run may change.
+json branch_settings(json options) {
+  options.erase("case");
+  options["continuation"].erase("max_points");
+  options["continuation"].erase("wall_time_limit");
+  return options;
+}
+
+// The checkpoint of the stopped run in dir, checked against this run's settings.
+SavedContinuation checkpoint_to_resume(const std::string& dir, const json& settings) {
+  if (std::filesystem::exists(dir + "/summary.json")) {
+    const std::string reason = read_summary(dir).value("stop_reason", "");
+    if (reason == "reached_end" || reason == "left_range" || reason == "closed")
+      throw CaseError("--resume: " + dir + " finished (" + reason + "), nothing to resume");
+  }
+  SavedContinuation saved;
+  try {
+    saved = read_continuation_state(dir + "/checkpoint.json");
+  } catch (const std::runtime_error& e) {
+    throw CaseError(std::string("--resume: ") + e.what());
+  }
+  if (saved.settings != settings)
+    throw CaseError("--resume: " + dir + "/checkpoint.json was computed with other settings (case or --set differ): " +
+                    json::diff(saved.settings, settings).dump());
+  return saved;
+}
+
+int run_frc(const FrcOptions& options) {
+  const CommonOptions& o = options.common;
   const auto t0 = Clock::now();
+  if (o.out_dir.empty() && options.resume.empty()) throw CaseError("--output is required (or --resume DIR)");
+  if (!o.out_dir.empty() && !options.resume.empty() && o.out_dir != options.resume)
+    throw CaseError("--resume: continues in its own folder, give no other -o");
+  const std::string dir = options.resume.empty() ? o.out_dir : options.resume;
   const CaseDefinition c = load_case(o.case_path, o.sets);
   HarmonicBalance hbm = make_system(c);
-  ensure_directory(o.out_dir);
-  CsvAppender branch(o.out_dir + "/branch.csv", branch_header(c));
-  CsvAppender states(o.out_dir + "/states.csv", state_header(hbm.unknowns()));
   json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
-  write_json_atomically(o.out_dir + "/summary.json", summary);
+  const json settings = branch_settings(summary["options"]);
+  std::optional<SavedContinuation> resumed;
+  if (!options.resume.empty()) resumed = checkpoint_to_resume(dir, settings);
+  ensure_directory(dir);
+  const int rows_kept = resumed ? resumed->state.points : 0;
+  // A resumed run appends to its CSVs; a folder that does not fit its checkpoint is bad input.
+  auto open_csv = [&](const std::string& path, const std::vector<std::string>& header) {
+    if (!resumed) return CsvAppender(path, header);
+    try {
+      return CsvAppender::continuing(path, header, rows_kept);
+    } catch (const std::runtime_error& e) {
+      throw CaseError(std::string("--resume: ") + e.what());
+    }
+  };
+  CsvAppender branch = open_csv(dir + "/branch.csv", branch_header(c));
+  CsvAppender states = open_csv(dir + "/states.csv", state_header(hbm.unknowns()));
+  if (resumed) summary["resumed_at_point"] = rows_kept;
+  write_json_atomically(dir + "/summary.json", summary);
 
   Progress progress(o.quiet);
-  const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs, [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
-    branch.append(branch_row(rec));
-    states.append(state_row(p.lambda, p.u));
-    progress.update(index, p.lambda, rec, c.outputs);
-    return !interrupted();
-  });
-  add_nfrc_summary(summary, c, hbm, r);
-  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", r.continuation.summary.wall_s}};
-  // The state of each special point, in summary order: `track` starts from a limit point's.
-  CsvAppender special_states(o.out_dir + "/special_states.csv", state_header(hbm.unknowns()));
-  for (const auto& sp : r.continuation.special_points) special_states.append(state_row(sp.lambda, sp.u));
-  write_json_atomically(o.out_dir + "/summary.json", summary);
+  StopRequest stop(options.time_limit);
+  ContinuationRestart restart;
+  if (resumed) restart.resume_from = &resumed->state;
+  // After every accepted point (and step-size update): what --resume needs to go on from there.
+  restart.on_state = [&](const ContinuationState& state) { write_continuation_state(dir + "/checkpoint.json", state, settings); };
+  const NfrcResult r = compute_nfrc(
+      hbm, c.nfrc, c.outputs,
+      [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
+        branch.append(branch_row(rec));
+        states.append(state_row(p.lambda, p.u));
+        progress.update(index, p.lambda, rec, c.outputs);
+        return !stop.requested();
+      },
+      restart);
   const auto& s = r.continuation.summary;
-  if (!r.continuation.success())
-    throw RunFailed{"continuation stopped: " + s.stop_reason + " after " + std::to_string(s.points) + " points (kept in " + o.out_dir + ")"};
+  const std::string stop_reason = stop.reason(s.stop_reason);
+  add_nfrc_summary(summary, c, hbm, r);
+  summary["stop_reason"] = stop_reason;
+  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};
+  // The state of each special point, in summary order: `track` starts from a limit point's.
+  CsvAppender special_states(dir + "/special_states.csv", state_header(hbm.unknowns()));
+  for (const auto& sp : r.continuation.special_points) special_states.append(state_row(sp.lambda, sp.u));
+  write_json_atomically(dir + "/summary.json", summary);
+  if (!r.continuation.success()) {
+    std::string reason = "continuation stopped: ";
+    reason += stop_reason;
+    reason += " after " + std::to_string(s.points);
+    reason += " points (kept in " + dir + ")";
+    throw RunFailed{reason};
+  }
   if (!o.quiet)
     std::fprintf(stderr, "frc: %d points, %d special points, %d Newton iterations, %.3f s -> %s\n", s.points,
-                 static_cast<int>(r.continuation.special_points.size()), s.newton_iterations, summary["timings"]["wall_s"].get<double>(), o.out_dir.c_str());
+                 static_cast<int>(r.continuation.special_points.size()), s.newton_iterations, summary["timings"]["wall_s"].get<double>(), dir.c_str());
   return 0;
 }
 
@@ -87,10 +161,14 @@ int run_solve(const CommonOptions& o, double omega) {
 }
 
 void add_frc_verbs(CLI::App& app, VerbList& verbs) {
-  static CommonOptions frc_options, solve_options;
+  static FrcOptions frc_options;
+  static CommonOptions solve_options;
   static double omega = 0;
   CLI::App* frc = app.add_subcommand("frc", "nonlinear frequency response curve by arc-length continuation in omega");
-  add_common_options(frc, frc_options);
+  add_common_options(frc, frc_options.common);
+  frc->get_option("--output")->required(false);  // --resume DIR names the folder instead
+  frc->add_option("--resume", frc_options.resume, "continue the stopped frc run in this folder (same case and --set)");
+  add_time_limit_option(frc, frc_options.time_limit);
   verbs.push_back({frc, [] { return run_frc(frc_options); }});
   CLI::App* solve = app.add_subcommand("solve", "one periodic solution at a fixed frequency");
   add_common_options(solve, solve_options);

@@ -8,6 +8,7 @@
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
+#include "stop_request.hpp"
 
 namespace hbtrack::cli {
 
@@ -19,6 +20,7 @@ using nlohmann::json;
 struct TrackOptions {
   CommonOptions common;
   std::string from, lp, param, range, method = "bordered";
+  double time_limit = 0;  // seconds, 0 for none
 };
 
 struct IsolaOptions {
@@ -119,6 +121,7 @@ int run_track(const TrackOptions& o) {
 
   const FoldScales scales = fold_scales(hbm, c, tracking.parameter_max - tracking.parameter_min);
   Progress progress(o.common.quiet);
+  StopRequest stop(o.time_limit);
   FoldTrackingResult r;
   try {
     r = track_fold(hbm, parameter, start.x, start.omega, scales, tracking, c.outputs, [&](const FoldCurvePoint& p, int index) {
@@ -127,7 +130,7 @@ int run_track(const TrackOptions& o) {
       row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
       states.append(row);
       progress.update(index, p.omega, p.recorded, c.outputs);
-      return !interrupted();
+      return !stop.requested();
     });
   } catch (const std::runtime_error& e) {
     throw RunFailed{e.what()};
@@ -149,7 +152,7 @@ int run_track(const TrackOptions& o) {
     special.push_back(j);
   }
   const bool ok = r.success();
-  const std::string failure = r.failure();
+  const std::string failure = stop.reason(r.failure());
   summary["stop_reason"] = ok ? (r.closed ? "closed" : "completed") : failure;
   summary["closed"] = r.closed;
   summary["legs"] = legs;
@@ -285,6 +288,7 @@ void add_track_verbs(CLI::App& app, VerbList& verbs) {
   t->add_option("--param", track.param, "the parameter to vary (a name of the case's [parameters], or amplitude)")->required();
   t->add_option("--range", track.range, "LO:HI, the parameter's interval")->required();
   t->add_option("--method", track.method, "bordered (minimally augmented, default) or extended (the paper's system)");
+  add_time_limit_option(t, track.time_limit);
   verbs.push_back({t, [] { return run_track(track); }});
   CLI::App* i = app.add_subcommand("isolas", "isolated branches at one parameter value, from tracking curves");
   add_common_options(i, isolas.common);

@@ -51,15 +51,16 @@ double force_scale(HarmonicBalance& hbm, double length_scale) {
 }
 
 NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
-                        const RecordedObserver& observer) {
+                        const RecordedObserver& observer, const ContinuationRestart& restart) {
   const ParameterWindow window{std::min(options.omega_start, options.omega_end), std::max(options.omega_start, options.omega_end),
                                options.omega_end >= options.omega_start ? 1 : -1, false};
-  return compute_branch(hbm, options, outputs, hbm.linear_solution(options.omega_start), options.omega_start, window, observer);
+  return compute_branch(hbm, options, outputs, hbm.linear_solution(options.omega_start), options.omega_start, window, observer,
+                        restart);
 }
 
 NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
                           const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window,
-                          const RecordedObserver& observer) {
+                          const RecordedObserver& observer, const ContinuationRestart& restart) {
   options.validate();
   NfrcResult result;
   const bool adaptive = options.length_scale == 0;
@@ -80,7 +81,7 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
         result.recorded.push_back(std::move(rec));
         return !observer || observer(p, result.recorded.back(), index);
       },
-      options.stability.enabled() ? &monitor : nullptr);
+      options.stability.enabled() ? &monitor : nullptr, restart);
   return result;
 }
 

@@ -231,7 +231,7 @@ ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd&
 
 ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
                                    const ParameterWindow& window, const ContinuationOptions& options,
-                                   const PointObserver& observer, BranchMonitor* monitor) {
+                                   const PointObserver& observer, BranchMonitor* monitor, const ContinuationRestart& restart) {
   options.validate();
   if (!(window.lambda_min <= lambda_start && lambda_start <= window.lambda_max))
     throw std::invalid_argument("continuation: the start " + std::to_string(lambda_start) + " lies outside the parameter window");
@@ -251,9 +251,12 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     for (const auto& t : monitor->types()) types.push_back(t);
   Locator locator{s, options, monitor};
 
+  // A resumed run numbers its points after those of the state it resumes from.
+  const int points_before = restart.resume_from ? restart.resume_from->points : 0;
+  auto accepted_points = [&] { return points_before + static_cast<int>(result.points.size()); };
   auto finish = [&](const std::string& reason) {
     summary.stop_reason = reason;
-    summary.points = static_cast<int>(result.points.size());
+    summary.points = accepted_points();
     summary.jacobian_evaluations = s.jacobian_evaluations;
     summary.newton_iterations += s.newton_iterations;
     summary.wall_s = elapsed();
@@ -269,34 +272,69 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
   };
   auto accept = [&](BranchPoint p) {
     result.points.push_back(std::move(p));
-    const int index = static_cast<int>(result.points.size()) - 1;
+    const int index = accepted_points() - 1;
     return !observer || observer(result.points.back(), index);
   };
 
-  // First point: Newton at fixed lambda_start.
-  VectorXd u = u0;
-  const int first_iterations = newton_at_fixed_parameter(problem, u, lambda_start, options.tolerance, 3 * options.max_iterations);
-  if (first_iterations < 0) return finish("no_convergence_at_start");
-  summary.newton_iterations += first_iterations;
-  s.su = problem.unknown_scale(u);
-  VectorXd x = s.pack(u, lambda_start);
-  s.evaluate(x);
-  VectorXd lambda_axis = VectorXd::Zero(m + 1);
-  lambda_axis(m) = direction;
-  Tangent tan = s.tangent(lambda_axis);
-  if (tan.t(m) * direction < 0) tan.t = -tan.t;
-  VectorXd t = tan.t;
-  BranchPoint first{u, lambda_start, t, first_iterations, 0.0};
-  TestValues previous = test_values(first, tan);
-  if (!accept(first)) return finish("interrupted");
-
+  VectorXd x, t;
   double ds = options.step;
-  double farthest = 0;   // scaled distance from the first point, for closure
-  const VectorXd first_scale = s.su;  // the scaling the first point's tangent was computed in
-  const double first_parameter_scale = s.sl;
-  VectorXd x_prev_prev;  // for the secant predictor
+  double farthest = 0;      // scaled distance from the first point, for closure
+  BranchPoint first_point;  // for closure
+  VectorXd first_scale;     // the scaling the first point's tangent was computed in
+  double first_parameter_scale = s.sl;
+  VectorXd x_prev_prev;     // for the secant predictor
+  TestValues previous;
+  if (const ContinuationState* state = restart.resume_from) {
+    // Resume: restore every variable the loop below reads, as the state recorded them.
+    if (state->x.size() != m + 1 || state->tangent.size() != m + 1 || state->unknown_scale.size() != m)
+      throw std::invalid_argument("continuation: the state to resume from has " + std::to_string(state->x.size() - 1) +
+                                  " unknowns, the problem " + std::to_string(m));
+    x = state->x;
+    x_prev_prev = state->x_before;
+    t = state->tangent;
+    s.su = state->unknown_scale;
+    ds = state->step;
+    farthest = state->farthest;
+    previous.values = state->test_values;
+    previous.bp_log_det = state->bp_log_det;
+    first_point = state->first;
+    first_scale = state->first_scale;
+    first_parameter_scale = state->first_parameter_scale;
+    result.special_points = state->special_points;
+    summary = state->summary;
+    s.jacobian_evaluations = summary.jacobian_evaluations;
+  } else {
+    // First point: Newton at fixed lambda_start.
+    VectorXd u = u0;
+    const int first_iterations = newton_at_fixed_parameter(problem, u, lambda_start, options.tolerance, 3 * options.max_iterations);
+    if (first_iterations < 0) return finish("no_convergence_at_start");
+    summary.newton_iterations += first_iterations;
+    s.su = problem.unknown_scale(u);
+    x = s.pack(u, lambda_start);
+    s.evaluate(x);
+    VectorXd lambda_axis = VectorXd::Zero(m + 1);
+    lambda_axis(m) = direction;
+    Tangent tan = s.tangent(lambda_axis);
+    if (tan.t(m) * direction < 0) tan.t = -tan.t;
+    t = tan.t;
+    first_point = BranchPoint{u, lambda_start, t, first_iterations, 0.0};
+    previous = test_values(first_point, tan);
+    first_scale = s.su;
+    if (!accept(first_point)) return finish("interrupted");
+  }
+  // The state between two steps, for restart.on_state; counters as finish() would report them.
+  auto state_now = [&] {
+    ContinuationState state{accepted_points(), x, x_prev_prev, t, s.su, ds, farthest, previous.values, previous.bp_log_det,
+                            first_point, first_scale, first_parameter_scale, result.special_points, summary};
+    state.summary.jacobian_evaluations = s.jacobian_evaluations;
+    state.summary.newton_iterations += s.newton_iterations;
+    state.summary.points = accepted_points();
+    return state;
+  };
+
   while (true) {
-    if (static_cast<int>(result.points.size()) >= options.max_points) return finish("max_points");
+    if (restart.on_state) restart.on_state(state_now());
+    if (accepted_points() >= options.max_points) return finish("max_points");
     if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return finish("wall_time_limit");
 
     VectorXd direction_vec = t;
@@ -333,7 +371,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     BranchPoint point{s.unknowns(y), s.parameter(y), tan_new.t, iterations, arc};
     const TestValues current = test_values(point, tan_new);
     // Bracket and locate special points between x and y.
-    const int index_new = static_cast<int>(result.points.size());
+    const int index_new = accepted_points();
     for (size_t k = 0; k < types.size(); ++k) {
       const double f0 = k == 1 ? previous.values[1] : previous.values[k];
       const double f1 = k == 1 ? current.values[1] * std::exp(std::min(current.bp_log_det - previous.bp_log_det, 600.0))
@@ -381,7 +419,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     // passes within a quarter step of it after the branch went well away from it. A closed
     // curve ends on a copy of its first point.
     if (window.stop_when_closed) {
-      const VectorXd first_x = s.pack(result.points.front().u, result.points.front().lambda);
+      const VectorXd first_x = s.pack(first_point.u, first_point.lambda);
       const VectorXd chord = y - x_prev_prev;
       const double length = chord.norm();
       farthest = std::max(farthest, (y - first_x).norm());
@@ -389,12 +427,12 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
       const double off = (first_x - x_prev_prev - along * chord / std::max(length, 1e-300)).norm();
       // A loop arrives with the orientation it left with; a branch that turned back on itself
       // (a sharp corner taken at the smallest step) passes the start going the other way.
-      const VectorXd first_t = s.pack(result.points.front().u + result.points.front().tangent.head(m).cwiseProduct(first_scale),
-                                      result.points.front().lambda + result.points.front().tangent(m) * first_parameter_scale) -
+      const VectorXd first_t = s.pack(first_point.u + first_point.tangent.head(m).cwiseProduct(first_scale),
+                                      first_point.lambda + first_point.tangent(m) * first_parameter_scale) -
                                first_x;
       const bool same_orientation = first_t.dot(t) > 0;
       if (farthest > 4 * length && along >= 0 && along <= length && off <= 0.25 * length && same_orientation) {
-        BranchPoint closing = result.points.front();
+        BranchPoint closing = first_point;
         closing.step = (first_x - x_prev_prev).norm();
         if (!accept(closing)) return finish("interrupted");
         return finish("closed");

@@ -15,6 +15,11 @@ namespace hbtrack {
 
 namespace {
 
+// A matrix is sized by its largest index (or the dof map): one line "20000000 1 6" would
+// otherwise allocate index arrays for 20 million rows. A million dofs is far beyond any model
+// this tool reduces (the blade has a few thousand).
+constexpr int kMaxDofs = 1'000'000;
+
 [[noreturn]] void fail(const std::string& path, long line, const std::string& rule) {
   throw std::runtime_error(path + ": line " + std::to_string(line) + ": " + rule);
 }
@@ -96,6 +101,8 @@ Eigen::SparseMatrix<double> read_calculix_matrix(const std::string& path, int ro
     if (!parse_int(f[0], row) || !parse_int(f[1], column) || row < 1 || column < 1)
       fail(path, line, "row and column must be integers >= 1");
     if (!parse_finite(f[2], value)) fail(path, line, "value must be a finite number");
+    if (std::max(row, column) > kMaxDofs)
+      fail(path, line, "index " + std::to_string(std::max(row, column)) + " exceeds the limit of " + std::to_string(kMaxDofs) + " dofs");
     if (rows >= 0 && std::max(row, column) > rows)
       fail(path, line, "index " + std::to_string(std::max(row, column)) + " exceeds the " + std::to_string(rows) + " dofs of the dof map");
     if (row != column) {

@@ -22,6 +22,8 @@ namespace fs = std::filesystem;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
+constexpr int kMaxChainCount = 4000;
+
 size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
   for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
@@ -155,6 +157,8 @@ class Reader {
       } else if (const toml::value* f = find(v, "file")) {
         const fs::path path = resolve(string(*f, field + ".file"));
         if (!fs::exists(path)) fail(f, field + ".file", "file '" + path.string() + "' does not exist");
+        // A directory, a device (/dev/zero never ends) or a pipe is not a matrix file.
+        if (!fs::is_regular_file(path)) fail(f, field + ".file", "'" + path.string() + "' is not a regular file");
         try {
           if (path.extension() == ".mat") {
             const toml::value* var = find(v, "variable");
@@ -192,7 +196,8 @@ void read_model(const Reader& in, const toml::value& root, CaseDefinition& c) {
     in.table(*chain, "model.chain");
     in.check_keys(*chain, "model.chain", {"count", "mass", "stiffness"});
     const int n = in.integer(in.require(*chain, "count", "model.chain.count"), "model.chain.count");
-    if (n < 1 || n > 100000) in.fail(chain, "model.chain.count", "must be in [1, 100000]");
+    // The model's matrices are dense: 4000 dofs already take 128 MB each.
+    if (n < 1 || n > kMaxChainCount) in.fail(chain, "model.chain.count", "must be in [1, " + std::to_string(kMaxChainCount) + "]");
     const double mass = in.number_or(*chain, "mass", "model.chain.mass", 1.0);
     const double k = in.number_or(*chain, "stiffness", "model.chain.stiffness", 1.0);
     if (mass <= 0) in.fail(chain, "model.chain.mass", "must be > 0");
@@ -414,6 +419,7 @@ void read_elements(const Reader& in, const toml::value& root, CaseDefinition& c)
       if (const toml::value* w = in.find(e, "weights")) {
         s->weights = in.vector(*w, field + ".weights");
         if (s->weights.size() != k) in.fail(w, field + ".weights", "expected one weight per dof (" + std::to_string(k) + ")");
+        if (s->weights.isZero(0.0)) in.fail(w, field + ".weights", "must not all be zero (the element would act on nothing)");
       } else if (k == 1) {
         s->weights = VectorXd::Ones(1);
       } else if (k == 2) {
@@ -494,6 +500,8 @@ void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c)
     // The message already names the field.
     in.fail(&cont, "", e.what());
   }
+  // Relative to the force scale: at 1 the zero response already passes for a solution.
+  if (co.tolerance >= 1) in.fail(in.find(cont, "tolerance"), "continuation.tolerance", "must be < 1 (it is relative to the forcing)");
 }
 
 // A forcing harmonic above the truncation would silently vanish from the balance.

@@ -72,15 +72,16 @@ struct NfrcResult {
 // Called for each accepted point with its recorded outputs; return false to stop.
 using RecordedObserver = std::function<bool(const BranchPoint&, const RecordedPoint&, int)>;
 
+// restart: resume from a saved state and/or save it between steps (see continue_within).
 NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
-                        const RecordedObserver& observer = {});
+                        const RecordedObserver& observer = {}, const ContinuationRestart& restart = {});
 
 // The branch through a given solution (x0, omega0), within a window of omega: e.g. an isolated
 // branch from one of its limit points, until it closes (window.stop_when_closed). Scales and
 // stability as compute_nfrc, from options (its omega range sets the arc-length units).
 NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
                           const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window,
-                          const RecordedObserver& observer = {});
+                          const RecordedObserver& observer = {}, const ContinuationRestart& restart = {});
 
 // One periodic solution at fixed omega, by Newton from the linear solution (or from `guess`).
 struct FixedFrequencySolution {

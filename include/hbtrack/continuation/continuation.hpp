@@ -115,11 +115,40 @@ struct ParameterWindow {
   bool stop_when_closed = false;  // stop ("closed") when the branch returns to its first point
 };
 
+// Everything the engine's next step depends on, taken between two steps (after a point was
+// accepted and the step size adapted, or after a rejected step was halved). Restarting from it
+// continues the branch exactly as the run it was taken from would have: same points, bit for
+// bit (`hbtrack frc --resume`).
+struct ContinuationState {
+  int points = 0;                // points accepted so far; the next one gets this index
+  Eigen::VectorXd x, x_before;   // last point and the one before it, scaled ([u ./ scale; lambda / sl])
+  Eigen::VectorXd tangent;       // unit tangent at x, scaled
+  Eigen::VectorXd unknown_scale; // the scale x, x_before and tangent are expressed in
+  double step = 0;               // arc length of the next step
+  double farthest = 0;           // farthest scaled distance from the first point (closure test)
+  std::vector<double> test_values;  // special-point test functions at x (brackets the next step)
+  double bp_log_det = 0;            // the BP test function's reference
+  BranchPoint first;                // the first point and its scaling (closure test)
+  Eigen::VectorXd first_scale;
+  double first_parameter_scale = 0;
+  std::vector<SpecialPoint> special_points;  // found so far
+  ContinuationSummary summary;               // counters so far
+};
+
+// Optional restart and checkpoint hooks of continue_within.
+struct ContinuationRestart {
+  const ContinuationState* resume_from = nullptr;  // continue from here instead of u0 (indices go on)
+  std::function<void(const ContinuationState&)> on_state;  // called between steps, to save the state
+};
+
 // Follows the branch from u0 at lambda_start (inside the window) in the window's direction
 // until it crosses the bound it headed for ("reached_end"), the other bound ("left_range"),
-// or, when asked, closes on itself ("closed", last point = first point).
+// or, when asked, closes on itself ("closed", last point = first point). With
+// restart.resume_from, u0 is not used and result.points holds only the points after the state,
+// while the summary and special points include those before it.
 ContinuationResult continue_within(ContinuationProblem& problem, const Eigen::VectorXd& u0, double lambda_start,
                                    const ParameterWindow& window, const ContinuationOptions& options,
-                                   const PointObserver& observer = {}, BranchMonitor* monitor = nullptr);
+                                   const PointObserver& observer = {}, BranchMonitor* monitor = nullptr,
+                                   const ContinuationRestart& restart = {});
 
 }  // namespace hbtrack

@@ -13,10 +13,14 @@ namespace hbtrack {
 class CsvAppender {
  public:
   CsvAppender(const std::string& path, const std::vector<std::string>& header);
+  // Appends to an existing file of a stopped run: checks its header, keeps its first `rows`
+  // rows and drops any after them (written after the checkpoint the run resumes from).
+  static CsvAppender continuing(const std::string& path, const std::vector<std::string>& header, int rows);
   void append(const std::vector<double>& row);
   const std::string& path() const { return path_; }
 
  private:
+  CsvAppender(const std::string& path, size_t columns);  // opens path for appending
   std::string path_;
   std::ofstream out_;
   size_t columns_;

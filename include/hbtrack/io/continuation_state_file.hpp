@@ -1,0 +1,23 @@
+#pragma once
+// The checkpoint of a continuation run (DIR/checkpoint.json): the engine's state between two
+// steps and the settings it was computed with, so `--resume DIR` can go on exactly where the run
+// stopped. Numbers are stored as JSON's shortest round-trip decimals: reading gives back the
+// same doubles, bit for bit.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "hbtrack/continuation/continuation.hpp"
+
+namespace hbtrack {
+
+// Writes {"format", "settings", "state"} to path atomically (temp file + rename).
+void write_continuation_state(const std::string& path, const ContinuationState& state, const nlohmann::json& settings);
+
+struct SavedContinuation {
+  ContinuationState state;
+  nlohmann::json settings;
+};
+// Throws std::runtime_error "<path>: <what is wrong>" for a missing or malformed file.
+SavedContinuation read_continuation_state(const std::string& path);
+
+}  // namespace hbtrack
