@@ -46,24 +46,6 @@ int parameter_index(const HarmonicBalance& hbm, const std::string& name) {
   throw CaseError("--param: unknown parameter '" + name + "' (the case has: " + known + ")");
 }
 
-// Units of the tracking systems, from the case's frequency range (as the NFRC's).
-FoldScales fold_scales(HarmonicBalance& hbm, const CaseDefinition& c, double parameter_span) {
-  const NfrcOptions& n = c.nfrc;
-  const double reference = n.length_scale > 0 ? n.length_scale : automatic_length_scale(hbm, n.omega_start, n.omega_end);
-  FoldScales s;
-  s.length = n.length_scale > 0 ? n.length_scale : 0.01 * reference;
-  s.omega = std::abs(n.omega_end - n.omega_start);
-  s.force = force_scale(hbm, reference);
-  s.parameter = parameter_span;
-  return s;
-}
-
-std::vector<double> curve_row(const FoldCurvePoint& p) {
-  std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
-  for (const auto& v : p.recorded.outputs) row.insert(row.end(), {v.max, v.min, v.h1});
-  return row;
-}
-
 // The starting limit point: the lp-th (from 1) LP of DIR/summary.json and its state.
 HbmState starting_fold(const std::string& dir, long lp) {
   const json summary = read_summary(dir);
@@ -107,10 +89,7 @@ int run_track(const TrackOptions& o) {
   tracking.continuation = c.nfrc.continuation;
 
   ensure_directory(o.common.out_dir);
-  std::vector<std::string> header{"leg", "omega", o.param};
-  for (const auto& out : c.outputs)
-    for (const char* kind : {"max_", "min_", "h1_"}) header.push_back(kind + out.name);
-  CsvAppender branch(o.common.out_dir + "/branch.csv", header);
+  CsvAppender branch(o.common.out_dir + "/branch.csv", tracking_header(c, o.param));
   std::vector<std::string> state_cols{"leg", "omega", o.param};
   for (int i = 0; i < hbm.unknowns(); ++i) state_cols.push_back("x" + std::to_string(i));
   CsvAppender states(o.common.out_dir + "/states.csv", state_cols);
@@ -119,13 +98,13 @@ int run_track(const TrackOptions& o) {
                                     {"range", {tracking.parameter_min, tracking.parameter_max}}};
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
 
-  const FoldScales scales = fold_scales(hbm, c, tracking.parameter_max - tracking.parameter_min);
+  const FoldScales scales = tracking_scales(hbm, c.nfrc, tracking.parameter_max - tracking.parameter_min);
   Progress progress(o.common.quiet);
   StopRequest stop(o.time_limit);
   FoldTrackingResult r;
   try {
     r = track_fold(hbm, parameter, start.x, start.omega, scales, tracking, c.outputs, [&](const FoldCurvePoint& p, int index) {
-      branch.append(curve_row(p));
+      branch.append(tracking_row(p));
       std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
       row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
       states.append(row);
@@ -135,34 +114,11 @@ int run_track(const TrackOptions& o) {
   } catch (const std::runtime_error& e) {
     throw RunFailed{e.what()};
   }
-  json legs = json::array();
-  int newton = 0, jacobians = 0;
-  for (size_t i = 0; i < r.legs.size(); ++i) {
-    const ContinuationSummary& s = r.legs[i];
-    legs.push_back({{"leg", i + 1}, {"towards", i == 0 ? "min" : "max"}, {"stop_reason", s.stop_reason}, {"points", s.points},
-                    {"newton_iterations", s.newton_iterations}, {"failed_steps", s.failed_steps},
-                    {"jacobian_evaluations", s.jacobian_evaluations}, {"wall_s", s.wall_s}});
-    newton += s.newton_iterations;
-    jacobians += s.jacobian_evaluations;
-  }
-  json special = json::array();
-  for (const FoldExtremum& e : r.extrema) {
-    json j = {{"type", e.type}, {"index", e.index}, {"omega", e.omega}, {o.param, e.parameter}, {"located", e.located}};
-    add_outputs(j, c, e.recorded);
-    special.push_back(j);
-  }
+  add_tracking_summary(summary, c, r, o.param);
   const bool ok = r.success();
   const std::string failure = stop.reason(r.failure());
-  summary["stop_reason"] = ok ? (r.closed ? "closed" : "completed") : failure;
-  summary["closed"] = r.closed;
-  summary["legs"] = legs;
-  summary["points"] = r.points.size();
-  summary["newton_iterations"] = newton;
-  summary["jacobian_evaluations"] = jacobians;
+  if (!ok) summary["stop_reason"] = failure;
   summary["start"] = {{"omega", start.omega}, {o.param, start_value}};
-  summary["special_points"] = special;
-  summary["outputs"] = json::array();
-  for (const auto& out : c.outputs) summary["outputs"].push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
   if (!ok)
@@ -215,7 +171,7 @@ int run_isolas(const IsolaOptions& o) {
   for (const auto& curve : curves)
     for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
   hbm.parameters().value(parameter) = value;
-  const FoldScales scales = fold_scales(hbm, c, std::max(hi - lo, 1e-300));
+  const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
 
   ensure_directory(o.common.out_dir);
   json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
