@@ -128,6 +128,9 @@ std::vector<std::string> smooth_two_dof(double width, int harmonics) {
 }  // namespace
 
 TEST(Stability, HillAgreesWithMonodromyOnTheTwoDofContactExample) {
+  // Monodromy over thousands of steps per point: minutes under the sanitizers. The Duffing
+  // comparison above runs the same Hill and monodromy code there.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers; run by the Release pass";
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
   // A wide regularisation (2.0) keeps even the in-contact points resolved to 1e-8 at H = 30.
@@ -155,6 +158,9 @@ TEST(Stability, HillAgreesWithMonodromyOnTheTwoDofContactExample) {
 }
 
 TEST(Stability, PeriodDoublingFoundWhereTheMonodromyMultipliersShowIt) {
+  // Monodromy over thousands of steps per point: minutes under the sanitizers. The Duffing
+  // comparison above runs the same Hill and monodromy code there.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers; run by the Release pass";
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
   const NfrcResult r = nfrc_of("examples/two_dof_contact.toml", smooth_two_dof(0.05, 20), c, hbm);
