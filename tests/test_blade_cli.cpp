@@ -170,6 +170,7 @@ TEST_F(BladeCli, ModesOfTheShippedBladeCase) {
 // follow the same curve as the shipped H = 10, N = 1024 (peak within 0.2 %), and the per-point
 // stability (Hill's method, which would triple the time) is not what this test is about.
 TEST_F(BladeCli, NominalContactCaseRunsEndToEndAboveTheLinearResonance) {
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers; run by the Release pass";
   const std::string coarser = " --set harmonic_balance.harmonics=5 --set harmonic_balance.samples=256 --set stability.method=none";
   const CliRun r = run("frc " + hbtrack::test::source_path("examples/blade/nominal.toml") + coarser + " -q -o " + path("nominal"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
