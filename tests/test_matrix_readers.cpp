@@ -624,6 +624,40 @@ TEST_F(MatFileTest, TagClaimingMoreBytesThanTheFileIsRejectedBeforeMatio) {
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the matrix at byte 128 claims dims of 4294967047 bytes");
 }
 
+// Fuzzing finding (oom-377bc906): a sparse matrix whose row-index array has a reserved data type
+// (or a size that is no whole number of indices) moved libmatio's reading position off the
+// file's layout, and it sized a 4 GB calloc from data bytes. Both are refused from the header.
+TEST_F(MatFileTest, SparseIndexArrayOfUnknownTypeOrPartialSizeIsRejected) {
+  Eigen::SparseMatrix<double> matrix(2, 2);
+  matrix.insert(0, 0) = 2.0;
+  matrix.insert(1, 1) = -1.0;
+  const std::string clean_path = path_for("sparse_clean.mat");
+  {
+    MatWriter writer(clean_path);
+    writer.sparse("K", matrix);
+  }
+  std::ifstream in(clean_path, std::ios::binary);
+  const std::string clean((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The row-index tag (libmatio writes uint32) follows the dims (2 x 2, int32) and the name 'K' (one small element).
+  const std::string dims("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x02\0\0\0", 16);
+  const std::size_t dims_at = clean.find(dims);
+  ASSERT_NE(dims_at, std::string::npos);
+  const std::size_t index_tag_at = dims_at + dims.size() + 8;
+  ASSERT_EQ(clean.substr(index_tag_at, 8), std::string("\x06\0\0\0\x08\0\0\0", 8)) << "two uint32 row indices expected";
+
+  std::string reserved_type = clean;
+  reserved_type[index_tag_at] = '\x08';  // miRESERVED, as the fuzzer wrote it
+  const std::string reserved_path = write_text("sparse_reserved_type.mat", reserved_type);
+  expect_error([&] { hbtrack::read_mat_variable(reserved_path, "K"); }, reserved_path,
+               "corrupt MAT file: the sub-element at byte " + std::to_string(index_tag_at) + " has the unknown data type 8");
+
+  std::string partial = clean;
+  partial[index_tag_at + 4] = '\x06';  // 6 bytes: one and a half uint32 indices
+  const std::string partial_path = write_text("sparse_partial_index.mat", partial);
+  expect_error([&] { hbtrack::read_mat_variable(partial_path, "K"); }, partial_path,
+               "holds 6 bytes, not a whole number of 4-byte elements");
+}
+
 // Fuzzing finding (timeout-95af...): a header of 1e8 columns made the reader zero index arrays
 // for over 30 s under the sanitizers; the dimension limit is now 5e6.
 TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {

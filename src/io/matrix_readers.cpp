@@ -1,7 +1,8 @@
 #include "hbtrack/io/matrix_readers.hpp"
 
+#include "mat_header_check.hpp"
+
 #include <matio.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <array>
@@ -474,148 +475,6 @@ ElementLoader loader_for(matio_types data_type) {
   }
 }
 
-// libmatio allocates what a header claims before checking it against the file: a v5 dims tag
-// of 4 GB made Mat_VarReadInfo ask for 8 GB, a v4 name length of 1.7 GB as much, a tag inside
-// a compressed (v7) element 2.5 GB. So the headers are walked first and a size claiming more
-// bytes than the file (or the enclosing element) holds is refused; inside a compressed element,
-// whose true size is unknown until inflated, more than zlib's maximal expansion (1032:1) of it.
-class MatHeaderCheck {
- public:
-  explicit MatHeaderCheck(const std::string& path) : path_(path), in_(path, std::ios::binary) {
-    in_.seekg(0, std::ios::end);
-    size_ = in_ ? static_cast<std::uint64_t>(in_.tellg()) : 0;
-  }
-
-  void run() {
-    unsigned char header[4];
-    if (size_ >= 128 && read_at(124, header, 4) && ((header[2] == 'I' && header[3] == 'M') || (header[2] == 'M' && header[3] == 'I'))) {
-      swap_ = header[2] == 'M';
-      if (word16(header) == 0x0100) return check_elements(128, size_, 0);
-      if (word16(header) == 0x0200) return;  // v7.3, an HDF5 file
-    }
-    check_v4_records();  // libmatio reads any other file as v4
-  }
-
- private:
-  static constexpr std::uint32_t kMatrix = 14;
-  static constexpr std::uint32_t kCompressed = 15;
-  static constexpr std::uint64_t kMaxZlibRatio = 1032;
-  // From a matrix element's tag: its tag (8), the array flags (8 + 8), the dims tag's type (4).
-  static constexpr std::size_t kDimsSizeAt = 28;
-
-  // Inflates the first 4 KB of a compressed element (the matrix tag and its header
-  // sub-elements) and checks their sizes against the element's largest possible expansion.
-  void check_compressed(std::uint64_t begin, std::uint32_t bytes) {
-    std::string packed(std::min<std::uint32_t>(bytes, 1u << 16), '\0');
-    if (!read_at(begin, reinterpret_cast<unsigned char*>(packed.data()), packed.size())) return;
-    unsigned char plain[4096];
-    z_stream z{};
-    if (inflateInit(&z) != Z_OK) return;
-    z.next_in = reinterpret_cast<Bytef*>(packed.data());
-    z.avail_in = static_cast<uInt>(packed.size());
-    z.next_out = plain;
-    z.avail_out = sizeof plain;
-    inflate(&z, Z_SYNC_FLUSH);  // whatever came out; a corrupt stream is matio's to report
-    const std::size_t have = sizeof plain - z.avail_out;
-    inflateEnd(&z);
-    if (have < 8) return;
-    const std::uint64_t limit = std::uint64_t{bytes} * kMaxZlibRatio;
-    const std::uint32_t matrix_bytes = word32(plain + 4);
-    if (word32(plain) != kMatrix) return;
-    if (matrix_bytes > limit) fail_compressed(begin, matrix_bytes, limit);
-    // libmatio reads the dims size at a fixed place (after the 16 bytes of array flags) whatever
-    // the tags before it say, so check it there too.
-    if (have >= kDimsSizeAt + 4 && word32(plain + kDimsSizeAt) > matrix_bytes)
-      fail_compressed(begin, word32(plain + kDimsSizeAt), matrix_bytes);
-    for (std::size_t at = 8; at + 8 <= have;) {
-      const std::uint32_t type = word32(plain + at), sub_bytes = word32(plain + at + 4);
-      if (type >> 16) {
-        at += 8;
-        continue;
-      }
-      if (sub_bytes > matrix_bytes - (at - 8)) fail_compressed(begin, sub_bytes, matrix_bytes - (at - 8));
-      at += 8 + (sub_bytes + 7u) / 8u * 8u;
-    }
-  }
-  [[noreturn]] void fail_compressed(std::uint64_t begin, std::uint64_t claimed, std::uint64_t room) const {
-    fail(path_, "corrupt MAT file: the compressed element at byte " + std::to_string(begin - 8) + " holds a tag of " + std::to_string(claimed) +
-                    " bytes, at most " + std::to_string(room) + " fit");
-  }
-
-  bool read_at(std::uint64_t offset, unsigned char* out, std::size_t n) {
-    in_.clear();
-    in_.seekg(static_cast<std::streamoff>(offset));
-    in_.read(reinterpret_cast<char*>(out), static_cast<std::streamsize>(n));
-    return static_cast<std::size_t>(in_.gcount()) == n;
-  }
-  std::uint32_t word16(const unsigned char* b) const { return swap_ ? (b[0] << 8u) | b[1] : (b[1] << 8u) | b[0]; }
-  std::uint32_t word32(const unsigned char* b) const {
-    return swap_ ? (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | b[3]
-                 : (std::uint32_t{b[3]} << 24) | (std::uint32_t{b[2]} << 16) | (std::uint32_t{b[1]} << 8) | b[0];
-  }
-
-  // The elements in [begin, end): each must fit; a matrix's sub-elements must fit in it.
-  void check_elements(std::uint64_t begin, std::uint64_t end, int depth) {
-    std::uint64_t at = begin;
-    while (at + 8 <= end) {
-      unsigned char tag[8];
-      if (!read_at(at, tag, 8)) return;
-      const std::uint32_t type = word32(tag), bytes = word32(tag + 4);
-      if (type >> 16) {  // small data element: up to 4 bytes inside the tag
-        at += 8;
-        continue;
-      }
-      if (bytes > end - at - 8)
-        fail(path_, "corrupt MAT file: the element at byte " + std::to_string(at) + " claims " + std::to_string(bytes) + " bytes, " +
-                        std::to_string(end - at - 8) + " remain");
-      if (type == kMatrix && depth < 8) {
-        unsigned char dims_size[4];
-        if (bytes >= kDimsSizeAt - 4 && read_at(at + kDimsSizeAt, dims_size, 4) && word32(dims_size) > bytes)
-          fail(path_, "corrupt MAT file: the matrix at byte " + std::to_string(at) + " claims dims of " + std::to_string(word32(dims_size)) +
-                          " bytes in " + std::to_string(bytes));
-        check_elements(at + 8, at + 8 + bytes, depth + 1);
-      }
-      if (type == kCompressed && depth == 0) check_compressed(at + 8, bytes);
-      // Sub-elements are padded to 8 bytes; top-level elements (compressed ones) are not.
-      at += 8 + (depth > 0 ? (bytes + 7u) / 8u * 8u : bytes);
-    }
-  }
-
-  // v4: records of a 20-byte header (type MOPT, rows, columns, imaginary flag, name length),
-  // the name, then rows x columns elements (twice when complex).
-  void check_v4_records() {
-    std::uint64_t at = 0;
-    while (at + 20 <= size_) {
-      unsigned char h[20];
-      if (!read_at(at, h, 20)) return;
-      if (at == 0) {
-        swap_ = false;
-        if (word32(h) >= 5000) swap_ = true;  // M digit 1: big-endian; libmatio keeps the first record's order
-      }
-      const std::uint32_t type = word32(h);
-      const std::uint32_t precision = type / 10 % 10;
-      static constexpr std::uint64_t kWidth[] = {8, 4, 4, 2, 2, 1};
-      if (type >= 5000 || precision > 5) {
-        if (at == 0) return;  // not a v4 file: matio decides
-        // libmatio would still allocate the name length this garbage claims, record after record.
-        fail(path_, "corrupt MAT file: the v4 record at byte " + std::to_string(at) + " has the invalid type " + std::to_string(type));
-      }
-      const std::uint64_t name = word32(h + 16);
-      const std::uint64_t data = std::uint64_t{word32(h + 4)} * word32(h + 8) * kWidth[precision] * (word32(h + 12) ? 2 : 1);
-      const std::uint64_t remain = size_ - at - 20;
-      if (name > remain || data > remain - name)
-        fail(path_, "corrupt MAT file: the v4 record at byte " + std::to_string(at) + " claims " + std::to_string(name) + " + " +
-                        std::to_string(data) + " bytes, " + std::to_string(remain) + " remain");
-      at += 20 + name + data;
-    }
-  }
-
-  const std::string& path_;
-  std::ifstream in_;
-  std::uint64_t size_ = 0;
-  bool swap_ = false;
-};
-
 class MatVariableReader {
  public:
   MatVariableReader(const std::string& path, const std::string& name) : path_(path), name_(name) {}
@@ -623,7 +482,7 @@ class MatVariableReader {
   Eigen::SparseMatrix<double> read() {
     require_readable_file(path_);
     if (name_.empty()) fail(path_, "variable name is empty");
-    MatHeaderCheck(path_).run();
+    check_mat_headers(path_);
     const MatFile file{Mat_Open(path_.c_str(), MAT_ACC_RDONLY)};
     if (!file) fail(path_, "not a readable MAT file (v4, v5, v7 or v7.3)");
 
