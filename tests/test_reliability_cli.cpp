@@ -135,3 +135,82 @@ TEST(Reliability, TimeLimitStopsFrcWithItsReason) {
   EXPECT_GE(s["points"].get<int>(), 1);
   EXPECT_EQ(count_lines(dir / "branch.csv"), 1 + s["points"].get<int>());
 }
+
+namespace {
+
+// `track` on the absorber (examples/nltva.toml) at a tenth of its step: 532 curve points, the
+// first leg (towards small amplitudes) 190 of them with the minimum that gives birth to the
+// isola at point 42, the second a maximum (239) and a minimum (348). Half a second in Release.
+std::vector<std::string> nltva_track_args(const std::string& from) {
+  return {"track", hbtrack::test::source_path("examples/nltva.toml"), "-q", "--set", "continuation.step=0.01", "--set",
+          "continuation.step_max=0.01", "--from", from, "--lp", "1", "--param", "amplitude", "--range", "0.01:0.4"};
+}
+
+// Runs `args -o dir`, sends SIGINT once `rows` curve points are on disk, returns the exit code.
+int track_interrupted_after(std::vector<std::string> args, const fs::path& dir, int rows) {
+  args.insert(args.end(), {"-o", dir.string()});
+  const pid_t pid = hbtrack::test::spawn_cli(args);
+  if (pid <= 0) return -1;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (count_lines(dir / "branch.csv") < 1 + rows && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  kill(pid, SIGINT);
+  return hbtrack::test::wait_for_exit(pid);
+}
+
+std::string command_line(const std::vector<std::string>& args) {
+  std::string line;
+  for (const std::string& a : args) line += (line.empty() ? "" : " ") + a;
+  return line;
+}
+
+}  // namespace
+
+// Stopped in the first leg (after its extremum was detected, before the leg ended and typed it)
+// and in the second (after the first leg's extremum and one of its own): the resumed curve, its
+// extrema and their types equal the uninterrupted run's, byte for byte.
+TEST(Reliability, InterruptedTrackResumesToTheSameCurveInEitherLeg) {
+  const fs::path root = fresh_dir("track");
+  const std::string frc = (root / "frc").string();
+  ASSERT_EQ(run_cli("frc " + hbtrack::test::source_path("examples/nltva.toml") + " -q -o " + frc).exit_code, 0);
+  const std::vector<std::string> args = nltva_track_args(frc);
+  const fs::path whole = root / "whole";
+  ASSERT_EQ(run_cli(command_line(args) + " -o " + whole.string()).exit_code, 0);
+  const nlohmann::json w = summary_of(whole);
+  ASSERT_EQ(w["legs"][0]["points"], 190) << "the case changed: pick new stopping points";
+  ASSERT_EQ(w["special_points"].size(), 3u);
+
+  for (const int rows : {100, 300}) {
+    const fs::path dir = root / ("stopped_at_" + std::to_string(rows));
+    EXPECT_EQ(track_interrupted_after(args, dir, rows), 1);
+    const nlohmann::json s = summary_of(dir);
+    ASSERT_EQ(s["stop_reason"], "interrupted") << "the run ended before the signal: make the case slower";
+    EXPECT_EQ(count_lines(dir / "branch.csv"), 1 + s["points"].get<int>());
+    // --resume takes --from, --lp, --param, --range and --method from the stopped run.
+    const std::string resume = "track " + hbtrack::test::source_path("examples/nltva.toml") +
+                               " -q --set continuation.step=0.01 --set continuation.step_max=0.01 --resume " + dir.string();
+    const CliRun resumed = run_cli(resume);
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+    // The checkpoint is written between steps: the point whose observer saw the stop is on disk
+    // but after the last checkpoint, so the resumed run recomputes it (and drops the row first).
+    const int resumed_at = summary_of(dir)["resumed_at_point"];
+    EXPECT_GE(resumed_at, s["points"].get<int>() - 1);
+    EXPECT_LE(resumed_at, s["points"].get<int>());
+    for (const char* file : {"branch.csv", "states.csv"}) EXPECT_EQ(file_bytes(whole / file), file_bytes(dir / file)) << file << " differs";
+    const nlohmann::json r = summary_of(dir);
+    for (const char* key : {"points", "stop_reason", "special_points", "newton_iterations", "jacobian_evaluations"})
+      EXPECT_EQ(r[key], w[key]) << key;
+    // Finished now: a second resume is refused, as is one with other settings.
+    const CliRun again = run_cli(resume);
+    EXPECT_EQ(again.exit_code, 2);
+    EXPECT_NE(again.err.find("finished (completed), nothing to resume"), std::string::npos) << again.err;
+  }
+  const fs::path other = root / "other";
+  ASSERT_EQ(track_interrupted_after(args, other, 100), 1);
+  const CliRun extended = run_cli(command_line(args) + " --method extended --resume " + other.string());
+  EXPECT_EQ(extended.exit_code, 2);
+  EXPECT_NE(extended.err.find("checkpoint.json was computed with other settings"), std::string::npos) << extended.err;
+  const CliRun no_from = run_cli("track " + hbtrack::test::source_path("examples/nltva.toml") + " -q --lp 1 -o " + other.string());
+  EXPECT_EQ(no_from.exit_code, 2);
+  EXPECT_NE(no_from.err.find("--from is required (or --resume DIR)"), std::string::npos) << no_from.err;
+}

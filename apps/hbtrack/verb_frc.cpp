@@ -10,6 +10,7 @@
 #include "hbtrack/io/continuation_state_file.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
+#include "resume_checkpoint.hpp"
 #include "stop_request.hpp"
 
 namespace hbtrack::cli {
@@ -24,35 +25,6 @@ struct FrcOptions {
   double time_limit = 0;  // seconds, 0 for none
 };
 
-// The settings that decide the branch, for checking a resumed run against its checkpoint: the
-// case's options without its path and without what only decides when to stop (max_points,
-// wall_time_limit), which a resumed run may change.
-json branch_settings(json options) {
-  options.erase("case");
-  options["continuation"].erase("max_points");
-  options["continuation"].erase("wall_time_limit");
-  return options;
-}
-
-// The checkpoint of the stopped run in dir, checked against this run's settings.
-SavedContinuation checkpoint_to_resume(const std::string& dir, const json& settings) {
-  if (std::filesystem::exists(dir + "/summary.json")) {
-    const std::string reason = read_summary(dir).value("stop_reason", "");
-    if (reason == "reached_end" || reason == "left_range" || reason == "closed")
-      throw CaseError("--resume: " + dir + " finished (" + reason + "), nothing to resume");
-  }
-  SavedContinuation saved;
-  try {
-    saved = read_continuation_state(dir + "/checkpoint.json");
-  } catch (const std::runtime_error& e) {
-    throw CaseError(std::string("--resume: ") + e.what());
-  }
-  if (saved.settings != settings)
-    throw CaseError("--resume: " + dir + "/checkpoint.json was computed with other settings (case or --set differ): " +
-                    json::diff(saved.settings, settings).dump());
-  return saved;
-}
-
 int run_frc(const FrcOptions& options) {
   const CommonOptions& o = options.common;
   const auto t0 = Clock::now();
@@ -65,20 +37,12 @@ int run_frc(const FrcOptions& options) {
   json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedContinuation> resumed;
-  if (!options.resume.empty()) resumed = checkpoint_to_resume(dir, settings);
+  if (!options.resume.empty()) resumed = checkpoint_to_resume(dir, {"reached_end", "left_range", "closed"}, settings, read_continuation_state);
   ensure_directory(dir);
   const int rows_kept = resumed ? resumed->state.points : 0;
   // A resumed run appends to its CSVs; a folder that does not fit its checkpoint is bad input.
-  auto open_csv = [&](const std::string& path, const std::vector<std::string>& header) {
-    if (!resumed) return CsvAppender(path, header);
-    try {
-      return CsvAppender::continuing(path, header, rows_kept);
-    } catch (const std::runtime_error& e) {
-      throw CaseError(std::string("--resume: ") + e.what());
-    }
-  };
-  CsvAppender branch = open_csv(dir + "/branch.csv", branch_header(c));
-  CsvAppender states = open_csv(dir + "/states.csv", state_header(hbm.unknowns()));
+  CsvAppender branch = open_result_csv(dir + "/branch.csv", branch_header(c), resumed.has_value(), rows_kept);
+  CsvAppender states = open_result_csv(dir + "/states.csv", state_header(hbm.unknowns()), resumed.has_value(), rows_kept);
   if (resumed) summary["resumed_at_point"] = rows_kept;
   write_json_atomically(dir + "/summary.json", summary);
 

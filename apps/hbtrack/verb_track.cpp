@@ -3,11 +3,15 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <utility>
 
 #include "cli_common.hpp"
 #include "hbtrack/analysis/fold_tracking.hpp"
+#include "hbtrack/io/continuation_state_file.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
+#include "resume_checkpoint.hpp"
 #include "stop_request.hpp"
 
 namespace hbtrack::cli {
@@ -19,9 +23,34 @@ using nlohmann::json;
 
 struct TrackOptions {
   CommonOptions common;
-  std::string from, lp, param, range, method = "bordered";
-  double time_limit = 0;  // seconds, 0 for none
+  std::string from, lp, param, range, method;  // method: bordered unless given (or resumed)
+  std::string resume;                          // a stopped track result folder to continue
+  double time_limit = 0;                       // seconds, 0 for none
 };
+
+std::string exact_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// --resume DIR: the stopped run's --from, --lp, --param, --range and --method, where not given
+// again (given ones must agree: the checkpoint's settings are compared later).
+void take_options_of_stopped_run(TrackOptions& o) {
+  const json summary = read_summary(o.resume);
+  if (!summary.contains("options") || !summary["options"].contains("tracking") || !summary["options"]["tracking"].is_object())
+    throw CaseError("--resume: " + o.resume + "/summary.json: options.tracking missing (is it a track result?)");
+  const json& t = summary["options"]["tracking"];
+  try {
+    if (o.from.empty()) o.from = t.at("from").get<std::string>();
+    if (o.lp.empty()) o.lp = std::to_string(t.at("lp").get<long>());
+    if (o.param.empty()) o.param = t.at("parameter").get<std::string>();
+    if (o.method.empty()) o.method = t.at("method").get<std::string>();
+    if (o.range.empty()) o.range = exact_text(t.at("range").at(0).get<double>()) + ":" + exact_text(t.at("range").at(1).get<double>());
+  } catch (const json::exception& e) {
+    throw CaseError("--resume: " + o.resume + "/summary.json: options.tracking: " + e.what());
+  }
+}
 
 struct IsolaOptions {
   CommonOptions common;
@@ -64,8 +93,17 @@ HbmState starting_fold(const std::string& dir, long lp) {
   return read_hbm_state(dir + "/special_states.csv", row);
 }
 
-int run_track(const TrackOptions& o) {
+int run_track(TrackOptions o) {
   const auto t0 = Clock::now();
+  if (!o.resume.empty()) {
+    if (!o.common.out_dir.empty() && o.common.out_dir != o.resume) throw CaseError("--resume: continues in its own folder, give no other -o");
+    o.common.out_dir = o.resume;
+    take_options_of_stopped_run(o);
+  }
+  if (o.common.out_dir.empty()) throw CaseError("--output is required (or --resume DIR)");
+  for (const auto& [flag, value] : {std::pair{"--from", &o.from}, {"--lp", &o.lp}, {"--param", &o.param}, {"--range", &o.range}})
+    if (value->empty()) throw CaseError(std::string(flag) + " is required (or --resume DIR)");
+  if (o.method.empty()) o.method = "bordered";
   const long lp = parse_integer("--lp", o.lp, 1);
   const size_t colon = o.range.find(':');
   if (colon == std::string::npos) throw CaseError("--range: expected LO:HI, got '" + o.range + "'");
@@ -88,29 +126,42 @@ int run_track(const TrackOptions& o) {
                     std::to_string(hbm.unknowns()) + " (results of another case?)");
   tracking.continuation = c.nfrc.continuation;
 
-  ensure_directory(o.common.out_dir);
-  CsvAppender branch(o.common.out_dir + "/branch.csv", tracking_header(c, o.param));
-  std::vector<std::string> state_cols{"leg", "omega", o.param};
-  for (int i = 0; i < hbm.unknowns(); ++i) state_cols.push_back("x" + std::to_string(i));
-  CsvAppender states(o.common.out_dir + "/states.csv", state_cols);
+  const std::string& dir = o.common.out_dir;
   json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
   summary["options"]["tracking"] = {{"from", o.from}, {"lp", lp}, {"parameter", o.param}, {"method", o.method},
                                     {"range", {tracking.parameter_min, tracking.parameter_max}}};
-  write_json_atomically(o.common.out_dir + "/summary.json", summary);
+  const json settings = branch_settings(summary["options"]);
+  std::optional<SavedTracking> resumed;
+  if (!o.resume.empty()) resumed = checkpoint_to_resume(dir, {"completed", "closed"}, settings, read_tracking_state);
+  ensure_directory(dir);
+  const int rows_kept = resumed ? resumed->state.curve_points : 0;
+  std::vector<std::string> state_cols{"leg", "omega", o.param};
+  for (int i = 0; i < hbm.unknowns(); ++i) state_cols.push_back("x" + std::to_string(i));
+  CsvAppender branch = open_result_csv(dir + "/branch.csv", tracking_header(c, o.param), resumed.has_value(), rows_kept);
+  CsvAppender states = open_result_csv(dir + "/states.csv", state_cols, resumed.has_value(), rows_kept);
+  if (resumed) summary["resumed_at_point"] = rows_kept;
+  write_json_atomically(dir + "/summary.json", summary);
 
   const FoldScales scales = tracking_scales(hbm, c.nfrc, tracking.parameter_max - tracking.parameter_min);
   Progress progress(o.common.quiet);
   StopRequest stop(o.time_limit);
+  FoldTrackingRestart restart;
+  if (resumed) restart.resume_from = &resumed->state;
+  // Between two steps: what --resume needs to go on from there.
+  restart.on_state = [&](const FoldTrackingState& state) { write_tracking_state(dir + "/checkpoint.json", state, settings); };
   FoldTrackingResult r;
   try {
-    r = track_fold(hbm, parameter, start.x, start.omega, scales, tracking, c.outputs, [&](const FoldCurvePoint& p, int index) {
-      branch.append(tracking_row(p));
-      std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
-      row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
-      states.append(row);
-      progress.update(index, p.omega, p.recorded, c.outputs);
-      return !stop.requested();
-    });
+    r = track_fold(
+        hbm, parameter, start.x, start.omega, scales, tracking, c.outputs,
+        [&](const FoldCurvePoint& p, int index) {
+          branch.append(tracking_row(p));
+          std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
+          row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
+          states.append(row);
+          progress.update(index, p.omega, p.recorded, c.outputs);
+          return !stop.requested();
+        },
+        restart);
   } catch (const std::runtime_error& e) {
     throw RunFailed{e.what()};
   }
@@ -120,13 +171,12 @@ int run_track(const TrackOptions& o) {
   if (!ok) summary["stop_reason"] = failure;
   summary["start"] = {{"omega", start.omega}, {o.param, start_value}};
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
-  write_json_atomically(o.common.out_dir + "/summary.json", summary);
+  write_json_atomically(dir + "/summary.json", summary);
   if (!ok)
-    throw RunFailed{"tracking stopped: " + failure + " after " + std::to_string(r.points.size()) + " points (kept in " + o.common.out_dir +
-                    ")"};
+    throw RunFailed{"tracking stopped: " + failure + " after " + std::to_string(r.curve_points()) + " points (kept in " + dir + ")"};
   if (!o.common.quiet)
-    std::fprintf(stderr, "track: %zu points, %zu extrema of %s, %s, %.3f s -> %s\n", r.points.size(), r.extrema.size(), o.param.c_str(),
-                 r.closed ? "closed" : "both ways to the range", summary["timings"]["wall_s"].get<double>(), o.common.out_dir.c_str());
+    std::fprintf(stderr, "track: %d points, %zu extrema of %s, %s, %.3f s -> %s\n", r.curve_points(), r.extrema.size(), o.param.c_str(),
+                 r.closed ? "closed" : "both ways to the range", summary["timings"]["wall_s"].get<double>(), dir.c_str());
   return 0;
 }
 
@@ -239,11 +289,14 @@ void add_track_verbs(CLI::App& app, VerbList& verbs) {
   static IsolaOptions isolas;
   CLI::App* t = app.add_subcommand("track", "follow a limit point of a frc result in a second parameter");
   add_common_options(t, track.common);
-  t->add_option("--from", track.from, "frc result folder holding the limit point")->required();
-  t->add_option("--lp", track.lp, "which limit point of --from, counting from 1")->required();
-  t->add_option("--param", track.param, "the parameter to vary (a name of the case's [parameters], or amplitude)")->required();
-  t->add_option("--range", track.range, "LO:HI, the parameter's interval")->required();
+  t->get_option("--output")->required(false);  // --resume DIR names the folder instead
+  // Required unless --resume DIR, which takes them from the stopped run (checked in run_track).
+  t->add_option("--from", track.from, "frc result folder holding the limit point");
+  t->add_option("--lp", track.lp, "which limit point of --from, counting from 1");
+  t->add_option("--param", track.param, "the parameter to vary (a name of the case's [parameters], or amplitude)");
+  t->add_option("--range", track.range, "LO:HI, the parameter's interval");
   t->add_option("--method", track.method, "bordered (minimally augmented, default) or extended (the paper's system)");
+  t->add_option("--resume", track.resume, "continue the stopped track run in this folder (same case and --set)");
   add_time_limit_option(t, track.time_limit);
   verbs.push_back({t, [] { return run_track(track); }});
   CLI::App* i = app.add_subcommand("isolas", "isolated branches at one parameter value, from tracking curves");

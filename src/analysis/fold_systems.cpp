@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <stdexcept>
+#include <string>
 
 namespace hbtrack {
 
@@ -177,6 +178,15 @@ void BorderedFoldSystem::accepted(const VectorXd& u, double gamma) {
   }
   c_ = v_.normalized();
   b_ = w_.normalized();
+}
+
+void BorderedFoldSystem::restore_borders(const std::vector<VectorXd>& borders) {
+  if (borders.size() != 2 || borders[0].size() != q_ || borders[1].size() != q_)
+    throw std::invalid_argument("bordered fold system: the saved borders do not fit its " + std::to_string(q_) + " unknowns");
+  b_ = borders[0];
+  c_ = borders[1];
+  last_u_.resize(0);  // v and w are recomputed with these borders at the next evaluation
+  has_left_ = false;
 }
 
 }  // namespace hbtrack

@@ -46,10 +46,11 @@ VectorXd start_unknowns(FoldSystem& system, HarmonicBalance& hbm, const VectorXd
 
 // A located extremum of lambda near point `index` of a leg: a minimum when lambda was falling
 // along the leg just before it. The bracket is the pair of neighbours whose tangents' lambda
-// components differ in sign (the engine reports the nearer of the two as `index`).
-std::string extremum_type(const std::vector<BranchPoint>& leg, int index) {
-  auto rising = [&](int k) { return leg[static_cast<size_t>(k)].tangent(leg[static_cast<size_t>(k)].tangent.size() - 1) > 0; };
-  const int last = static_cast<int>(leg.size()) - 1;
+// components (`slopes`, one per leg point) differ in sign (the engine reports the nearer of the
+// two as `index`).
+std::string extremum_type(const std::vector<double>& slopes, int index) {
+  auto rising = [&](int k) { return slopes[static_cast<size_t>(k)] > 0; };
+  const int last = static_cast<int>(slopes.size()) - 1;
   int before = index;
   if (index + 1 > last || rising(index) == rising(index + 1)) before = std::max(index - 1, 0);
   return rising(before) ? "max" : "min";
@@ -82,34 +83,61 @@ LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, 
 
 FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
                               const FoldTrackingOptions& options, const std::vector<OutputDof>& outputs,
-                              const FoldObserver& observer) {
+                              const FoldObserver& observer, const FoldTrackingRestart& restart) {
   options.validate();
   const double gamma0 = hbm.parameters().value(parameter);
   if (!(options.parameter_min <= gamma0 && gamma0 <= options.parameter_max))
     throw std::invalid_argument("range: must contain the parameter's value at the limit point, " + std::to_string(gamma0));
   std::unique_ptr<FoldSystem> system = make_fold_system(options.method, hbm, parameter, scales);
   FoldTrackingResult result;
-  for (int leg = 1; leg <= 2; ++leg) {
+  const FoldTrackingState* resumed = restart.resume_from;
+  if (resumed) {
+    if (resumed->leg < 1 || resumed->leg > 2) throw std::invalid_argument("tracking state: leg must be 1 or 2");
+    result.legs = resumed->finished_legs;
+    result.extrema = resumed->extrema;
+    for (FoldExtremum& e : result.extrema) {  // their outputs, as the finished legs recorded them
+      hbm.parameters().value(parameter) = e.parameter;
+      e.recorded = record_point(hbm, e.x, e.omega, outputs);
+    }
+    result.points_before = resumed->curve_points;
+  }
+  for (int leg = resumed ? resumed->leg : 1; leg <= 2; ++leg) {
+    const bool resuming = resumed && leg == resumed->leg;
     hbm.parameters().value(parameter) = gamma0;
-    const VectorXd u0 = start_unknowns(*system, hbm, x, omega);
+    VectorXd u0;
+    if (resuming)
+      system->restore_borders(resumed->borders);
+    else
+      u0 = start_unknowns(*system, hbm, x, omega);
     const ParameterWindow window{options.parameter_min, options.parameter_max, leg == 1 ? -1 : 1, leg == 1};
-    const int offset = static_cast<int>(result.points.size()) - (leg == 2 ? 1 : 0);
+    const int offset = resuming ? resumed->leg_offset : result.curve_points() - (leg == 2 ? 1 : 0);
+    std::vector<double> slopes = resuming ? resumed->lambda_slopes : std::vector<double>{};
+    ContinuationRestart leg_restart;
+    if (resuming) leg_restart.resume_from = &resumed->continuation;
+    if (restart.on_state)
+      leg_restart.on_state = [&](const ContinuationState& state) {
+        restart.on_state(FoldTrackingState{leg, offset, result.curve_points(), state, system->borders(), slopes, result.legs, result.extrema});
+      };
     bool stopped = false;
-    const ContinuationResult c = continue_within(*system, u0, gamma0, window, options.continuation, [&](const BranchPoint& p, int index) {
-      system->accepted(p.u, p.lambda);
-      if (leg == 2 && index == 0) return true;  // the start, already the first point of leg 1
-      FoldCurvePoint point{system->harmonics(p.u), system->omega(p.u), p.lambda, leg, {}};
-      hbm.parameters().value(parameter) = p.lambda;  // the recovery of condensed dofs depends on it
-      point.recorded = record_point(hbm, point.x, point.omega, outputs);
-      result.points.push_back(std::move(point));
-      stopped = observer && !observer(result.points.back(), static_cast<int>(result.points.size()) - 1);
-      return !stopped;
-    });
+    const ContinuationResult c = continue_within(
+        *system, u0, gamma0, window, options.continuation,
+        [&](const BranchPoint& p, int index) {
+          system->accepted(p.u, p.lambda);
+          slopes.push_back(p.tangent(p.tangent.size() - 1));
+          if (leg == 2 && index == 0) return true;  // the start, already the first point of leg 1
+          FoldCurvePoint point{system->harmonics(p.u), system->omega(p.u), p.lambda, leg, {}};
+          hbm.parameters().value(parameter) = p.lambda;  // the recovery of condensed dofs depends on it
+          point.recorded = record_point(hbm, point.x, point.omega, outputs);
+          result.points.push_back(std::move(point));
+          stopped = observer && !observer(result.points.back(), result.curve_points() - 1);
+          return !stopped;
+        },
+        nullptr, leg_restart);
     result.legs.push_back(c.summary);
     for (const SpecialPoint& sp : c.special_points) {
       if (sp.type != "LP") continue;  // the extrema of gamma; the engine's BP is not a fold event
       FoldExtremum e;
-      e.type = extremum_type(c.points, sp.index);
+      e.type = extremum_type(slopes, sp.index);
       e.located = sp.located;
       e.x = system->harmonics(sp.u);
       e.omega = system->omega(sp.u);

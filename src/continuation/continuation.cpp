@@ -335,7 +335,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
   while (true) {
     if (restart.on_state) restart.on_state(state_now());
     if (accepted_points() >= options.max_points) return finish("max_points");
-    if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return finish("wall_time_limit");
+    if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return finish("time_limit");
 
     VectorXd direction_vec = t;
     if (options.predictor == "secant" && x_prev_prev.size() == m + 1) {

@@ -11,7 +11,8 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kFormat = 1;
+constexpr int kFormat = 1;          // an NFRC (frc) checkpoint
+constexpr int kTrackingFormat = 101; // a tracking (track) checkpoint: not resumable as an NFRC
 
 json vector_json(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
@@ -32,9 +33,7 @@ json summary_json(const ContinuationSummary& s) {
           {"jacobian_evaluations", s.jacobian_evaluations}};
 }
 
-}  // namespace
-
-void write_continuation_state(const std::string& path, const ContinuationState& state, const nlohmann::json& settings) {
+json state_json(const ContinuationState& state) {
   json special = json::array();
   for (const SpecialPoint& sp : state.special_points) {
     json j = point_json(sp.u, sp.lambda, sp.tangent);
@@ -45,68 +44,143 @@ void write_continuation_state(const std::string& path, const ContinuationState& 
   }
   json first = point_json(state.first.u, state.first.lambda, state.first.tangent);
   first["newton_iterations"] = state.first.newton_iterations;
-  const json document = {{"format", kFormat},
-                         {"settings", settings},
-                         {"state",
-                          {{"points", state.points},
-                           {"x", vector_json(state.x)},
-                           {"x_before", vector_json(state.x_before)},
-                           {"tangent", vector_json(state.tangent)},
-                           {"unknown_scale", vector_json(state.unknown_scale)},
-                           {"step", state.step},
-                           {"farthest", state.farthest},
-                           {"test_values", state.test_values},
-                           {"bp_log_det", state.bp_log_det},
-                           {"first", first},
-                           {"first_scale", vector_json(state.first_scale)},
-                           {"first_parameter_scale", state.first_parameter_scale},
-                           {"special_points", special},
-                           {"summary", summary_json(state.summary)}}}};
-  write_json_atomically(path, document);
+  return {{"points", state.points},
+          {"x", vector_json(state.x)},
+          {"x_before", vector_json(state.x_before)},
+          {"tangent", vector_json(state.tangent)},
+          {"unknown_scale", vector_json(state.unknown_scale)},
+          {"step", state.step},
+          {"farthest", state.farthest},
+          {"test_values", state.test_values},
+          {"bp_log_det", state.bp_log_det},
+          {"first", first},
+          {"first_scale", vector_json(state.first_scale)},
+          {"first_parameter_scale", state.first_parameter_scale},
+          {"special_points", special},
+          {"summary", summary_json(state.summary)}};
 }
 
-SavedContinuation read_continuation_state(const std::string& path) {
+ContinuationSummary summary_from_json(const json& summary) {
+  ContinuationSummary s;
+  s.points = summary.at("points").get<int>();
+  s.newton_iterations = summary.at("newton_iterations").get<int>();
+  s.failed_steps = summary.at("failed_steps").get<int>();
+  s.step_halvings = summary.at("step_halvings").get<int>();
+  s.jacobian_evaluations = summary.at("jacobian_evaluations").get<int>();
+  return s;
+}
+
+ContinuationState state_from_json(const json& j) {
+  ContinuationState s;
+  s.points = j.at("points").get<int>();
+  s.x = json_vector(j.at("x"));
+  s.x_before = json_vector(j.at("x_before"));
+  s.tangent = json_vector(j.at("tangent"));
+  s.unknown_scale = json_vector(j.at("unknown_scale"));
+  s.step = j.at("step").get<double>();
+  s.farthest = j.at("farthest").get<double>();
+  s.test_values = j.at("test_values").get<std::vector<double>>();
+  s.bp_log_det = j.at("bp_log_det").get<double>();
+  const json& first = j.at("first");
+  s.first = BranchPoint{json_vector(first.at("u")), first.at("lambda").get<double>(), json_vector(first.at("tangent")),
+                        first.at("newton_iterations").get<int>(), 0.0};
+  s.first_scale = json_vector(j.at("first_scale"));
+  s.first_parameter_scale = j.at("first_parameter_scale").get<double>();
+  for (const json& sp : j.at("special_points"))
+    s.special_points.push_back(SpecialPoint{sp.at("type").get<std::string>(), sp.at("index").get<int>(), sp.at("located").get<bool>(),
+                                            sp.at("lambda").get<double>(), json_vector(sp.at("u")), json_vector(sp.at("tangent"))});
+  s.summary = summary_from_json(j.at("summary"));
+  if (s.points < 1 || s.x.size() < 1 || s.x.size() != s.tangent.size() || s.unknown_scale.size() + 1 != s.x.size())
+    throw std::runtime_error("inconsistent state");
+  return s;
+}
+
+// Parses path as a checkpoint of `format`; read(document) builds the result. Errors name the path.
+template <class Read>
+auto read_checkpoint(const std::string& path, int format, Read read) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open (no checkpoint: the run stopped before its first step)");
   try {
     const json document = json::parse(in);
-    if (document.at("format").get<int>() != kFormat)
-      throw std::runtime_error("format " + document.at("format").dump() + " is not " + std::to_string(kFormat));
-    const json& j = document.at("state");
-    SavedContinuation saved;
-    saved.settings = document.at("settings");
-    ContinuationState& s = saved.state;
-    s.points = j.at("points").get<int>();
-    s.x = json_vector(j.at("x"));
-    s.x_before = json_vector(j.at("x_before"));
-    s.tangent = json_vector(j.at("tangent"));
-    s.unknown_scale = json_vector(j.at("unknown_scale"));
-    s.step = j.at("step").get<double>();
-    s.farthest = j.at("farthest").get<double>();
-    s.test_values = j.at("test_values").get<std::vector<double>>();
-    s.bp_log_det = j.at("bp_log_det").get<double>();
-    const json& first = j.at("first");
-    s.first = BranchPoint{json_vector(first.at("u")), first.at("lambda").get<double>(), json_vector(first.at("tangent")),
-                          first.at("newton_iterations").get<int>(), 0.0};
-    s.first_scale = json_vector(j.at("first_scale"));
-    s.first_parameter_scale = j.at("first_parameter_scale").get<double>();
-    for (const json& sp : j.at("special_points"))
-      s.special_points.push_back(SpecialPoint{sp.at("type").get<std::string>(), sp.at("index").get<int>(), sp.at("located").get<bool>(),
-                                              sp.at("lambda").get<double>(), json_vector(sp.at("u")), json_vector(sp.at("tangent"))});
-    const json& summary = j.at("summary");
-    s.summary.points = summary.at("points").get<int>();
-    s.summary.newton_iterations = summary.at("newton_iterations").get<int>();
-    s.summary.failed_steps = summary.at("failed_steps").get<int>();
-    s.summary.step_halvings = summary.at("step_halvings").get<int>();
-    s.summary.jacobian_evaluations = summary.at("jacobian_evaluations").get<int>();
-    if (s.points < 1 || s.x.size() < 1 || s.x.size() != s.tangent.size() || s.unknown_scale.size() + 1 != s.x.size())
-      throw std::runtime_error("inconsistent state");
-    return saved;
+    if (document.at("format").get<int>() != format)
+      throw std::runtime_error("format " + document.at("format").dump() + " is not " + std::to_string(format));
+    return read(document);
   } catch (const json::exception& e) {
     throw std::runtime_error(path + ": not a checkpoint: " + e.what());
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
+}
+
+}  // namespace
+
+void write_continuation_state(const std::string& path, const ContinuationState& state, const nlohmann::json& settings) {
+  write_json_atomically(path, {{"format", kFormat}, {"settings", settings}, {"state", state_json(state)}});
+}
+
+SavedContinuation read_continuation_state(const std::string& path) {
+  return read_checkpoint(path, kFormat, [](const json& document) {
+    return SavedContinuation{state_from_json(document.at("state")), document.at("settings")};
+  });
+}
+
+void write_tracking_state(const std::string& path, const FoldTrackingState& state, const nlohmann::json& settings) {
+  json borders = json::array();
+  for (const Eigen::VectorXd& b : state.borders) borders.push_back(vector_json(b));
+  json legs = json::array();
+  for (const ContinuationSummary& leg : state.finished_legs) {
+    json j = summary_json(leg);
+    j["stop_reason"] = leg.stop_reason;
+    j["wall_s"] = leg.wall_s;
+    legs.push_back(j);
+  }
+  json extrema = json::array();
+  for (const FoldExtremum& e : state.extrema)
+    extrema.push_back({{"type", e.type}, {"located", e.located}, {"x", vector_json(e.x)}, {"omega", e.omega},
+                       {"parameter", e.parameter}, {"index", e.index}});
+  const json tracking = {{"leg", state.leg},
+                         {"leg_offset", state.leg_offset},
+                         {"curve_points", state.curve_points},
+                         {"borders", borders},
+                         {"lambda_slopes", state.lambda_slopes},
+                         {"finished_legs", legs},
+                         {"extrema", extrema}};
+  write_json_atomically(path, {{"format", kTrackingFormat}, {"settings", settings}, {"tracking", tracking}, {"state", state_json(state.continuation)}});
+}
+
+SavedTracking read_tracking_state(const std::string& path) {
+  return read_checkpoint(path, kTrackingFormat, [](const json& document) {
+    SavedTracking saved;
+    saved.settings = document.at("settings");
+    FoldTrackingState& s = saved.state;
+    const json& t = document.at("tracking");
+    s.leg = t.at("leg").get<int>();
+    s.leg_offset = t.at("leg_offset").get<int>();
+    s.curve_points = t.at("curve_points").get<int>();
+    for (const json& b : t.at("borders")) s.borders.push_back(json_vector(b));
+    s.lambda_slopes = t.at("lambda_slopes").get<std::vector<double>>();
+    for (const json& leg : t.at("finished_legs")) {
+      ContinuationSummary summary = summary_from_json(leg);
+      summary.stop_reason = leg.at("stop_reason").get<std::string>();
+      summary.wall_s = leg.at("wall_s").get<double>();
+      s.finished_legs.push_back(summary);
+    }
+    for (const json& e : t.at("extrema")) {
+      FoldExtremum x;
+      x.type = e.at("type").get<std::string>();
+      x.located = e.at("located").get<bool>();
+      x.x = json_vector(e.at("x"));
+      x.omega = e.at("omega").get<double>();
+      x.parameter = e.at("parameter").get<double>();
+      x.index = e.at("index").get<int>();
+      s.extrema.push_back(std::move(x));
+    }
+    s.continuation = state_from_json(document.at("state"));
+    if (s.leg < 1 || s.leg > 2 || s.curve_points < 0 || s.lambda_slopes.size() != static_cast<size_t>(s.continuation.points) ||
+        s.finished_legs.size() != static_cast<size_t>(s.leg - 1))
+      throw std::runtime_error("inconsistent tracking state");
+    return saved;
+  });
 }
 
 }  // namespace hbtrack

@@ -149,7 +149,7 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   summary["stop_reason"] = r.success() ? (r.closed ? "closed" : "completed") : r.failure();
   summary["closed"] = r.closed;
   summary["legs"] = legs;
-  summary["points"] = r.points.size();
+  summary["points"] = r.curve_points();
   summary["newton_iterations"] = newton;
   summary["jacobian_evaluations"] = jacobians;
   summary["special_points"] = special;

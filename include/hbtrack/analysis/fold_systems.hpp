@@ -15,6 +15,7 @@
 // Jacobian; the residual (the fold condition itself) is exact. The amplitude enters R
 // linearly and independently of x, so its mixed derivative is exactly zero and skipped.
 #include <Eigen/Dense>
+#include <vector>
 
 #include "hbtrack/continuation/continuation.hpp"
 #include "hbtrack/hbm/harmonic_balance.hpp"
@@ -42,6 +43,10 @@ class FoldSystem : public ContinuationProblem {
                                 const Eigen::VectorXd& left) = 0;
   // After each accepted point (the bordered system renews its borders there).
   virtual void accepted(const Eigen::VectorXd& /*u*/, double /*gamma*/) {}
+  // What the system carries from point to point besides the unknowns (the bordered system's
+  // borders), for a checkpoint; restore_borders puts it back before a resumed continuation.
+  virtual std::vector<Eigen::VectorXd> borders() const { return {}; }
+  virtual void restore_borders(const std::vector<Eigen::VectorXd>& /*borders*/) {}
   Eigen::VectorXd unknown_scale(const Eigen::VectorXd& u) const override;
   double parameter_scale() const override { return scales_.parameter; }
   double residual_scale() const override { return scales_.force; }
@@ -89,6 +94,8 @@ class BorderedFoldSystem final : public FoldSystem {
   Eigen::VectorXd start(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& right,
                         const Eigen::VectorXd& left) override;
   void accepted(const Eigen::VectorXd& u, double gamma) override;
+  std::vector<Eigen::VectorXd> borders() const override { return {b_, c_}; }
+  void restore_borders(const std::vector<Eigen::VectorXd>& borders) override;
 
  private:
   // Solves the bordered systems at the current Jacobian: v (right), w (left), g.

@@ -39,7 +39,11 @@ struct FoldExtremum {
 };
 
 struct FoldTrackingResult {
-  std::vector<FoldCurvePoint> points;  // leg 1 from the start, then leg 2 from the start (not repeated)
+  // Leg 1 from the start, then leg 2 from the start (not repeated). A resumed run holds only
+  // the points after its checkpoint: the first has curve index points_before.
+  std::vector<FoldCurvePoint> points;
+  int points_before = 0;
+  int curve_points() const { return points_before + static_cast<int>(points.size()); }
   std::vector<FoldExtremum> extrema;
   std::vector<ContinuationSummary> legs;
   bool closed = false;  // leg 1 came back to the start: the curve is a loop
@@ -51,11 +55,30 @@ struct FoldTrackingResult {
 
 using FoldObserver = std::function<bool(const FoldCurvePoint&, int index)>;
 
+// A tracking run between two steps: enough to go on exactly as the uninterrupted run would.
+struct FoldTrackingState {
+  int leg = 1;                                  // the leg under way
+  int leg_offset = 0;                           // curve index of its point k is leg_offset + k (k >= 1)
+  int curve_points = 0;                         // curve points accepted so far, all legs
+  ContinuationState continuation;               // the leg's continuation engine
+  std::vector<Eigen::VectorXd> borders;         // the fold system's (FoldSystem::borders)
+  std::vector<double> lambda_slopes;            // the leg's tangents' parameter components, per point
+  std::vector<ContinuationSummary> finished_legs;
+  std::vector<FoldExtremum> extrema;            // of the finished legs (recorded outputs not kept)
+};
+
+// Optional checkpoint hooks of track_fold, as ContinuationRestart for one branch.
+struct FoldTrackingRestart {
+  const FoldTrackingState* resume_from = nullptr;
+  std::function<void(const FoldTrackingState&)> on_state;  // between two steps
+};
+
 // Follows the limit point near (x, omega) (an LP located on an NFRC at the parameter's current
 // value) while parameter `parameter` of hbm moves within [parameter_min, parameter_max].
 FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
                               const FoldScales& scales, const FoldTrackingOptions& options,
-                              const std::vector<OutputDof>& outputs, const FoldObserver& observer = {});
+                              const std::vector<OutputDof>& outputs, const FoldObserver& observer = {},
+                              const FoldTrackingRestart& restart = {});
 
 // A limit point of the NFRC at the parameter's current value, from an approximation: Newton on
 // the minimally augmented system in `scales`, or, when round-off keeps it from that tolerance, in

@@ -39,7 +39,7 @@ struct ContinuationOptions {
   double max_angle = 0.3;
   std::string predictor = "tangent";           // tangent | secant (paper eq 12)
   std::string corrector = "pseudo_arclength";  // pseudo_arclength | hypersphere (paper eq 14)
-  double wall_time_limit = 0;  // seconds, 0 for none
+  double wall_time_limit = 0;  // seconds, 0 for none; stops with "time_limit" (as --time-limit does)
   // Refine each bracketed special point onto the zero of its test function (secant along the
   // branch); false leaves it at the bracketing point.
   bool locate = true;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/continuation/continuation.hpp"
 
 namespace hbtrack {
@@ -19,5 +20,13 @@ struct SavedContinuation {
 };
 // Throws std::runtime_error "<path>: <what is wrong>" for a missing or malformed file.
 SavedContinuation read_continuation_state(const std::string& path);
+
+// The same for a limit-point tracking run (`track`): its leg, borders and finished legs too.
+void write_tracking_state(const std::string& path, const FoldTrackingState& state, const nlohmann::json& settings);
+struct SavedTracking {
+  FoldTrackingState state;
+  nlohmann::json settings;
+};
+SavedTracking read_tracking_state(const std::string& path);
 
 }  // namespace hbtrack
