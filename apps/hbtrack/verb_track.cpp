@@ -67,14 +67,6 @@ CaseDefinition case_as_in(const CommonOptions& o, const std::string& dir) {
   return load_case(o.case_path, overrides);
 }
 
-int parameter_index(const HarmonicBalance& hbm, const std::string& name) {
-  const int index = hbm.parameters().find(name);
-  if (index >= 0) return index;
-  std::string known;
-  for (const std::string& n : hbm.parameters().names()) known += (known.empty() ? "" : ", ") + n;
-  throw CaseError("--param: unknown parameter '" + name + "' (the case has: " + known + ")");
-}
-
 // The starting limit point: the lp-th (from 1) LP of DIR/summary.json and its state.
 HbmState starting_fold(const std::string& dir, long lp) {
   const json summary = read_summary(dir);
@@ -116,7 +108,7 @@ int run_track(TrackOptions o) {
 
   const CaseDefinition c = case_as_in(o.common, o.from);
   HarmonicBalance hbm = make_system(c);
-  const int parameter = parameter_index(hbm, o.param);
+  const int parameter = parameter_index(hbm.parameters(), o.param, "--param");
   const double start_value = hbm.parameters().value(parameter);
   if (!(tracking.parameter_min <= start_value && start_value <= tracking.parameter_max))
     throw CaseError("--range: must contain " + o.param + " = " + std::to_string(start_value) + " of the limit point");
@@ -214,7 +206,7 @@ int run_isolas(const IsolaOptions& o) {
   }
   CaseDefinition c = case_as_in(o.common, o.from.front());
   HarmonicBalance hbm = make_system(c);
-  const int parameter = parameter_index(hbm, parameter_name);
+  const int parameter = parameter_index(hbm.parameters(), parameter_name, "--param");
   std::vector<std::vector<FoldCurvePoint>> curves;
   for (const std::string& dir : o.from) curves.push_back(read_tracking_curve(dir, parameter_name, hbm.unknowns()));
   double lo = value, hi = value;

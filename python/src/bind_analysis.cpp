@@ -29,14 +29,6 @@ HarmonicBalance make_system(const CaseDefinition& c) {
   }
 }
 
-int parameter_index(const HarmonicBalance& hbm, const std::string& name) {
-  const int index = hbm.parameters().find(name);
-  if (index >= 0) return index;
-  std::string known;
-  for (const std::string& n : hbm.parameters().names()) known += (known.empty() ? "" : ", ") + n;
-  throw CaseError("param: unknown parameter '" + name + "' (the case has: " + known + ")");
-}
-
 // A branch as `frc` writes it: branch.csv columns, states.csv rows, the summary's special points
 // with their states (special_states.csv).
 py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r, json summary) {
@@ -83,7 +75,7 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
   if (!(parameter_min < parameter_max)) throw CaseError("range: must be (LO, HI) with LO < HI");
   if (method != "bordered" && method != "extended") throw CaseError("method: must be bordered or extended, got '" + method + "'");
   HarmonicBalance hbm = make_system(c);
-  const int parameter = parameter_index(hbm, param);
+  const int parameter = parameter_index(hbm.parameters(), param, "param");
   const double start_value = hbm.parameters().value(parameter);
   if (!(parameter_min <= start_value && start_value <= parameter_max))
     throw CaseError("range: must contain " + param + " = " + std::to_string(start_value) + " of the limit point");
@@ -142,7 +134,7 @@ std::vector<FoldCurvePoint> curve_from_states(const Eigen::MatrixXd& states, int
 py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& curve_states, const std::string& param, double at) {
   const auto t0 = Clock::now();
   HarmonicBalance hbm = make_system(c);
-  const int parameter = parameter_index(hbm, param);
+  const int parameter = parameter_index(hbm.parameters(), param, "param");
   std::vector<std::vector<FoldCurvePoint>> curves;
   for (const auto& states : curve_states) curves.push_back(curve_from_states(states, hbm.unknowns()));
   double lo = at, hi = at;

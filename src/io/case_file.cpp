@@ -688,4 +688,12 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   return c;
 }
 
+int parameter_index(const ParameterSet& parameters, const std::string& name, const std::string& field) {
+  const int index = parameters.find(name);
+  if (index >= 0) return index;
+  std::string known;
+  for (const std::string& n : parameters.names()) known += (known.empty() ? "" : ", ") + n;
+  throw CaseError(field + ": unknown parameter '" + name + "' (the case has: " + known + ")");
+}
+
 }  // namespace hbtrack

@@ -48,4 +48,8 @@ struct CaseDefinition {
 // (`harmonic_balance.harmonics=10`), applied before the case is read.
 CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The index of the parameter a user named in `field` (a flag, a keyword argument); a CaseError
+// "FIELD: unknown parameter 'NAME' (the case has: ...)" when the case has none of that name.
+int parameter_index(const ParameterSet& parameters, const std::string& name, const std::string& field);
+
 }  // namespace hbtrack
