@@ -89,6 +89,12 @@ TEST(CaseFile, ValidCaseLoadsAsWritten) {
   EXPECT_EQ(c.outputs[0].dof, 1);
 }
 
+// Multi-byte UTF-8 (2, 3 and 4 bytes) is text like any other: only malformed sequences are refused.
+TEST(CaseFile, NonAsciiUtf8TextIsAccepted) {
+  const CaseDefinition c = load_case(write_case("utf8", "# clearance in \u00b5m \u2192 0.1, \U0001F600\n" + variant("name = \"tip\"", "name = \"tip_\u00b5\"")).string());
+  EXPECT_EQ(c.outputs[0].name, "tip_\u00b5");
+}
+
 TEST(CaseFile, OverridesSetParametersAndKeys) {
   const CaseDefinition c = load_case(write_case("valid", kValid).string(),
                                      {"clearance=0.3", "harmonic_balance.harmonics=6", "continuation.step=0.01"});
@@ -184,6 +190,9 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"negative_friction", variant("", "[[elements]]\ntype = \"tanh_friction\"\ndofs = [\"a\"]\nmu = -0.2\nnormal_load = 1.0\nregularization_velocity = 0.01"),
        "elements[1].mu: must be >= 0"},
       {"output_name_with_comma", variant("name = \"tip\"", "name = \"tip,x\""), "outputs[0].name: must be non-empty without commas"},
+      // Fuzzing finding: toml11 3.7 read out of bounds reporting this (a literal string with 0xE0).
+      {"invalid_utf8_in_string", variant("name = \"tip\"", "name = 'tip\xe0'"), "not valid UTF-8 (byte"},
+      {"overlong_utf8_in_comment", variant("", "# \xc0\xaf"), "not valid UTF-8 (byte"},
   };
   // Side files the matrix rows refer to (relative paths resolve next to the case file).
   fs::create_directories(test_dir());

@@ -658,6 +658,26 @@ TEST_F(MatFileTest, SparseIndexArrayOfUnknownTypeOrPartialSizeIsRejected) {
                "holds 6 bytes, not a whole number of 4-byte elements");
 }
 
+// Fuzzing finding (oom-88432803): array flags whose tag claimed 72 bytes. libmatio reads the
+// flags as 16 bytes whatever the tag says, so the walk of the sub-elements and libmatio's reading
+// parted ways and a reserved-type index array behind the flags went unchecked (a 4 GB malloc).
+TEST_F(MatFileTest, ArrayFlagsOfAnotherSizeThanTheFormatsAreRejected) {
+  const std::string clean_path = path_for("flags_clean.mat");
+  {
+    MatWriter writer(clean_path);
+    writer.dense("K", Eigen::MatrixXd::Ones(2, 2));
+  }
+  std::ifstream in(clean_path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string flags_tag("\x06\0\0\0\x08\0\0\0", 8);
+  const std::size_t at = bytes.find(flags_tag, 128);
+  ASSERT_EQ(at, 136u) << "the first matrix's array flags follow its tag";
+  bytes[at + 4] = '\x48';  // 72 bytes, as the fuzzer wrote it
+  const std::string path = write_text("flags_72.mat", bytes);
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "corrupt MAT file: the array flags at byte 136 are of type 6 and 72 bytes; the format requires miUINT32 (6) of 8 bytes");
+}
+
 // Fuzzing finding (timeout-95af...): a header of 1e8 columns made the reader zero index arrays
 // for over 30 s under the sanitizers; the dimension limit is now 5e6.
 TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {

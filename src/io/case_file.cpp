@@ -3,8 +3,12 @@
 #include <toml.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,6 +17,7 @@
 #include "hbtrack/elements/tip_contact.hpp"
 #include "hbtrack/io/matrix_readers.hpp"
 #include "hbtrack/model/damping.hpp"
+#include "utf8_validation.hpp"
 
 namespace hbtrack {
 
@@ -652,9 +657,19 @@ void apply_overrides(const Reader& in, toml::value& root, const std::vector<std:
 CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides) {
   if (!fs::exists(path)) throw CaseError(path + ": file does not exist");
   if (fs::is_directory(path)) throw CaseError(path + ": is a directory, expected a TOML case file");
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw CaseError(path + ": cannot read: " + std::strerror(errno));
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  // TOML is UTF-8. Checked here because toml11 3.7 reads out of bounds when it reports invalid
+  // UTF-8 inside a string (fuzzing: a literal string holding the byte 0xE0).
+  if (const std::size_t bad = first_invalid_utf8(text); bad != std::string_view::npos) {
+    const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n');
+    throw CaseError(path + ":" + std::to_string(line) + ": not valid UTF-8 (byte " + std::to_string(bad) + "); a TOML case file must be UTF-8");
+  }
   toml::value root;
   try {
-    root = toml::parse(path);
+    std::istringstream stream(text);
+    root = toml::parse(stream, path);
   } catch (const toml::syntax_error& e) {
     // toml11 reports over several lines; keep the first line and the line number.
     std::string msg = e.what();

@@ -78,6 +78,8 @@ class MatHeaderCheck {
     // the tags before it say, so check it there too.
     if (have >= kDimsSizeAt + 4 && word32(plain + kDimsSizeAt) > matrix_bytes)
       fail_compressed(begin, word32(plain + kDimsSizeAt), matrix_bytes);
+    if (matrix_bytes > 0 && have >= 16)
+      check_array_flags("byte 8 of the compressed element at byte " + std::to_string(begin - 8), word32(plain + 8), word32(plain + 12));
     for (std::size_t at = 8; at + 8 <= have;) {
       const std::uint32_t type = word32(plain + at), sub_bytes = word32(plain + at + 4);
       const std::string where = "byte " + std::to_string(at) + " of the compressed element at byte " + std::to_string(begin - 8);
@@ -101,6 +103,15 @@ class MatHeaderCheck {
     if (bytes % width != 0)
       fail(path_, "corrupt MAT file: the sub-element at " + where + " holds " + std::to_string(bytes) + " bytes, not a whole number of " +
                       std::to_string(width) + "-byte elements");
+  }
+  // libmatio reads a matrix's array flags as 16 bytes whatever their tag says, then the next
+  // sub-elements from there: flags of another size would again move it off the file's layout
+  // (fuzzing: a 72-byte flags tag hid a reserved-type index array, and a 4 GB malloc). The
+  // format fixes them as one miUINT32 pair.
+  void check_array_flags(const std::string& where, std::uint32_t type, std::uint32_t bytes) const {
+    if (type != 6 || bytes != 8)
+      fail(path_, "corrupt MAT file: the array flags at " + where + " are of type " + std::to_string(type & 0xffffu) + " and " +
+                      std::to_string(type >> 16 ? type >> 16 : bytes) + " bytes; the format requires miUINT32 (6) of 8 bytes");
   }
   [[noreturn]] void fail_compressed(std::uint64_t begin, std::uint64_t claimed, std::uint64_t room) const {
     fail(path_, "corrupt MAT file: the compressed element at byte " + std::to_string(begin - 8) + " holds a tag of " + std::to_string(claimed) +
@@ -136,6 +147,8 @@ class MatHeaderCheck {
         fail(path_, "corrupt MAT file: the element at byte " + std::to_string(at) + " claims " + std::to_string(bytes) + " bytes, " +
                         std::to_string(end - at - 8) + " remain");
       if (type == kMatrix && depth < 8) {
+        unsigned char flags_tag[8];
+        if (bytes > 0 && read_at(at + 8, flags_tag, 8)) check_array_flags("byte " + std::to_string(at + 8), word32(flags_tag), word32(flags_tag + 4));
         unsigned char dims_size[4];
         if (bytes >= kDimsSizeAt - 4 && read_at(at + kDimsSizeAt, dims_size, 4) && word32(dims_size) > bytes)
           fail(path_, "corrupt MAT file: the matrix at byte " + std::to_string(at) + " claims dims of " + std::to_string(word32(dims_size)) +
