@@ -110,6 +110,9 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   print_row(nfrc_run, 0);
   for (const Run& r : tracking) print_row(r, per_point);
+  std::printf("\nNFRC: %d dense LUs of the bordered system for %d Newton iterations and %d points (a tangent refined from the "
+              "last Newton step's factors needs none).\n",
+              s.factorizations, s.newton_iterations, s.points);
   std::printf("\nStability (Hill's method, %zu points sampled, %d unstable): %.0f ms per point, %.2f x the continuation's cost per point.\n",
               hill_times.size(), unstable, 1e3 * hill_point, hill_point / per_point);
   return 0;

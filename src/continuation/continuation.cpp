@@ -64,7 +64,7 @@ struct Scaled {
   MatrixXd newton_matrix{};   // the bordered matrix last factored by the corrector
   MatrixXd tangent_matrix{};  // the bordered matrix at the converged point
   DenseLU lu{};               // factors of newton_matrix, or of tangent_matrix after a fresh tangent
-  VectorXd solution{}, refinement_residual{};
+  VectorXd solution{}, refinement_residual{}, product{};
   // lu holds the factors of the last Newton iteration of the corrector that just converged:
   // the tangent may start from them. Only within one corrector, so that a run resumed from a
   // saved state (which carries no factors) repeats the original exactly.
@@ -127,14 +127,28 @@ struct Scaled {
   // The Newton matrix A of the corrector's last iteration differs from the tangent's matrix B
   // (same border) by the last step dy: iterative refinement of B t = e with A's factors gives
   // B's solution to working accuracy in a few O(m^2) steps, against an O(m^3) factorization.
-  // A's determinant stands for B's: det B = det A det(I + A^-1 (B - A)), and the second
-  // factor is positive when ||A^-1 (B - A)|| < 1; the bound 0.1 leaves room for the estimate
-  // of ||A^-1||, a lower bound. False (the caller factors B) when the bound or the refinement
-  // fails, e.g. near a singular Jacobian.
+  // A's determinant stands for B's (the BP test function): det B = det A det(I + A^-1 (B - A)),
+  // and the second factor is positive when ||A^-1 (B - A)|| < 1, which also makes the
+  // refinement converge; the bound 0.1 leaves room for the estimate of that norm, a lower
+  // bound. False (the caller factors B) when the bound or the refinement fails, e.g. after a
+  // long last Newton step or near a singular Jacobian.
   bool tangent_from_newton_factors(Tangent& out) {
     const ScopedPhase timing(Phase::factorization);
-    const double change = (tangent_matrix - newton_matrix).cwiseAbs().colwise().sum().maxCoeff();
-    if (!(change * lu.inverse_norm1_estimate() <= 0.1)) return false;
+    newton_matrix = tangent_matrix - newton_matrix;  // B - A: A itself lives on in its factors
+    const MatrixXd& change = newton_matrix;
+    const double relative_change = estimate_norm1(
+        m + 1,
+        [&](VectorXd& v) {
+          product.noalias() = change * v;
+          v = product;
+          lu.solve_in_place(v);
+        },
+        [&](VectorXd& v) {
+          lu.solve_transposed_in_place(v);
+          product.noalias() = change.transpose() * v;
+          v = product;
+        });
+    if (!(relative_change <= 0.1)) return false;
     const double matrix_norm = tangent_matrix.cwiseAbs().rowwise().sum().maxCoeff();
     solution.setZero(m + 1);
     refinement_residual.setZero(m + 1);

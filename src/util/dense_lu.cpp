@@ -80,19 +80,19 @@ int DenseLU::determinant_sign() const {
   return sign;
 }
 
-double DenseLU::inverse_norm1_estimate() const {
-  const Eigen::Index n = factors_.rows();
+double estimate_norm1(Eigen::Index n, const std::function<void(VectorXd&)>& apply,
+                      const std::function<void(VectorXd&)>& apply_transposed) {
   if (n == 0) return 0.0;
-  // Hager: maximise ||A^-1 x||_1 over the unit 1-norm ball by steepest ascent from the
-  // centre; each step is one solve and one transposed solve, and it stops at a vertex.
+  // Hager: maximise ||M x||_1 over the unit 1-norm ball by steepest ascent from the centre;
+  // each step is one product with M and one with M^T, and it stops at a vertex.
   VectorXd x = VectorXd::Constant(n, 1.0 / static_cast<double>(n));
   double estimate = 0;
   Eigen::Index previous_vertex = -1;
   for (int step = 0; step < 5; ++step) {
-    solve_in_place(x);
+    apply(x);
     estimate = std::max(estimate, x.lpNorm<1>());
     VectorXd z = x.unaryExpr([](double v) { return v >= 0 ? 1.0 : -1.0; });
-    solve_transposed_in_place(z);
+    apply_transposed(z);
     Eigen::Index vertex = 0;
     z.cwiseAbs().maxCoeff(&vertex);
     if (vertex == previous_vertex) break;  // ascent returns to the vertex it came from
@@ -104,7 +104,7 @@ double DenseLU::inverse_norm1_estimate() const {
   VectorXd b(n);
   for (Eigen::Index i = 0; i < n; ++i)
     b(i) = (i % 2 ? -1.0 : 1.0) * (1.0 + static_cast<double>(i) / static_cast<double>(std::max<Eigen::Index>(n - 1, 1)));
-  solve_in_place(b);
+  apply(b);
   return std::max(estimate, 2.0 * b.lpNorm<1>() / (3.0 * static_cast<double>(n)));
 }
 

@@ -6,6 +6,7 @@
 // run on one thread; otherwise by Eigen's PartialPivLU. The storage is kept between
 // factorizations of the same size, so a Newton loop that calls compute() allocates nothing.
 #include <Eigen/Dense>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,10 +27,6 @@ class DenseLU {
   // det A = determinant_sign() * exp(log_abs_determinant()); sign 0 for an exactly zero pivot.
   double log_abs_determinant() const;
   int determinant_sign() const;
-  // ||A^-1||_1 estimated from a few solves with the factors (Hager's method with Higham's
-  // extra test vector): a lower bound, in practice within a small factor of the true norm.
-  double inverse_norm1_estimate() const;
-
   // "OpenBLAS (core name)" or "Eigen": what compute() runs, for benchmark reports.
   static std::string backend();
 
@@ -38,5 +35,11 @@ class DenseLU {
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation_;  // P
   std::vector<int> pivots_;  // dgetrf's row swaps (1-based), kept to avoid an allocation
 };
+
+// ||M||_1 of an n x n operator known by its products, M v and M^T v (each in place), from a
+// few of them (Hager's method with Higham's extra test vector, as LAPACK's condition
+// estimates): a lower bound, in practice within a small factor of the true norm.
+double estimate_norm1(Eigen::Index n, const std::function<void(Eigen::VectorXd&)>& apply,
+                      const std::function<void(Eigen::VectorXd&)>& apply_transposed);
 
 }  // namespace hbtrack
