@@ -1,12 +1,12 @@
 // The blade benchmark (examples/blade/nominal.toml, 567 condensed unknowns, 819 in Hill's
 // full system): costs measured in one run, as ratios, because the machine is shared and noisy.
-//   - NFRC: wall time, cost per Jacobian evaluation against one dense LU of the same size;
+//   - NFRC: wall time, time per Newton iteration against one dense LU of the same size (the
+//     library's LU backend and Eigen's), and where the time goes (util/phase_timer.hpp);
 //   - stability: Hill's method per point, and its total against the continuation's (target <= 1);
 //   - limit-point tracking in the amplitude: cost per accepted point, bordered and extended,
 //     against the cost per accepted NFRC point (target for bordered: <= 2).
 //
 //   build/bench/bench_blade [--quick]     --quick: omega in [2000, 2150] and short tracking legs
-#include <Eigen/LU>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -23,10 +23,29 @@
 
 namespace {
 
+using hbtrack::bench::Breakdown;
 using hbtrack::bench::Clock;
 using hbtrack::bench::dense_lu_seconds;
 using hbtrack::bench::median;
 using hbtrack::bench::seconds_since;
+
+// One row: a continuation run and the LU of the size of the system it factors.
+struct Run {
+  std::string name;
+  int unknowns = 0, points = 0, newton = 0;
+  double wall = 0;
+  Breakdown breakdown;
+};
+
+void print_row(const Run& r, double per_nfrc_point) {
+  const int lu_size = r.unknowns + 1;  // the continuation borders the system with its arc-length row
+  const double lu = dense_lu_seconds(lu_size), eigen_lu = dense_lu_seconds(lu_size, true);
+  const double per_iteration = r.wall / std::max(1, r.newton);
+  const double per_point = r.wall / std::max(1, r.points);
+  std::printf("| %s | %d | %d | %d | %.2f | %.2f | %.2f / %.2f | %.2f | %.2f | %s | %.2f |\n", r.name.c_str(), r.unknowns, r.points,
+              r.newton, r.wall, 1e3 * per_iteration, 1e3 * lu, 1e3 * eigen_lu, per_iteration / lu, per_iteration / eigen_lu,
+              r.breakdown.cells().c_str(), per_nfrc_point > 0 ? per_point / per_nfrc_point : 1.0);
+}
 
 }  // namespace
 
@@ -37,15 +56,16 @@ int main(int argc, char** argv) {
   if (quick) sets.insert(sets.end(), {"continuation.omega_start=2000", "continuation.omega_end=2150"});
   const CaseDefinition c = load_case(std::string(HBTRACK_SOURCE_DIR) + "/examples/blade/nominal.toml", sets);
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+  PhaseTimes::enable(true);
 
   // NFRC without stability.
+  PhaseTimes::reset();
   const auto t_nfrc = Clock::now();
   const NfrcResult nfrc = compute_nfrc(hbm, c.nfrc, {});
-  const double nfrc_s = seconds_since(t_nfrc);
   const auto& s = nfrc.continuation.summary;
-  const double lu_s = dense_lu_seconds(hbm.unknowns() + 1);
-  const double per_jacobian = nfrc_s / s.jacobian_evaluations;
-  const double per_point = nfrc_s / s.points;
+  Run nfrc_run{"NFRC", hbm.unknowns(), s.points, s.newton_iterations, seconds_since(t_nfrc), {}};
+  nfrc_run.breakdown = Breakdown::of(nfrc_run.wall);
+  const double per_point = nfrc_run.wall / s.points;
 
   // Hill on every 8th point (auto: shift-invert Arnoldi at this size).
   std::vector<double> hill_times;
@@ -62,33 +82,38 @@ int main(int argc, char** argv) {
   const SpecialPoint* lp = nullptr;
   for (const SpecialPoint& sp : nfrc.continuation.special_points)
     if (sp.type == "LP" && sp.located && (!lp || sp.lambda > lp->lambda)) lp = &sp;
-  double tracking[2] = {0, 0};
-  int tracking_points[2] = {0, 0}, tracking_iterations[2] = {0, 0};
+  std::vector<Run> tracking;
   if (lp) {
     const double reference = automatic_length_scale(hbm, c.nfrc.omega_start, c.nfrc.omega_end);
     const FoldScales scales{0.01 * reference, std::abs(c.nfrc.omega_end - c.nfrc.omega_start), force_scale(hbm, reference), 79.0};
-    for (int m = 0; m < 2; ++m) {
+    for (const char* method : {"bordered", "extended"}) {
       FoldTrackingOptions o;
-      o.method = m == 0 ? "bordered" : "extended";
+      o.method = method;
       o.parameter_min = 1.0;
       o.parameter_max = 80.0;
       o.continuation = c.nfrc.continuation;
       o.continuation.max_points = quick ? 10 : 40;
+      PhaseTimes::reset();
       const auto t0 = Clock::now();
       const FoldTrackingResult r = track_fold(hbm, hbm.amplitude_parameter(), lp->u, lp->lambda, scales, o, {});
-      tracking[m] = seconds_since(t0);
-      tracking_points[m] = static_cast<int>(r.points.size());
-      for (const auto& leg : r.legs) tracking_iterations[m] += leg.newton_iterations;
+      Run run{std::string(method) + " LP tracking", o.method == "bordered" ? hbm.unknowns() + 1 : 2 * hbm.unknowns() + 1,
+              static_cast<int>(r.points.size()), 0, seconds_since(t0), {}};
+      for (const auto& leg : r.legs) run.newton += leg.newton_iterations;
+      run.breakdown = Breakdown::of(run.wall);
+      tracking.push_back(run);
     }
   }
 
-  std::printf("| unknowns | points | Jacobians | NFRC [s] | per Jacobian / dense LU | Hill per point [ms] | stability / continuation | "
-              "bordered tracking per point / NFRC per point | extended / NFRC per point | unstable sampled |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
-  std::printf("| %d | %d | %d | %.1f | %.2f | %.0f | %.2f | %.2f (%d points, %d Newton it.) | %.2f (%d points, %d Newton it.) | %d of %zu |\n",
-              hbm.unknowns(), s.points, s.jacobian_evaluations, nfrc_s, per_jacobian / lu_s, 1e3 * hill_point,
-              hill_point * s.points / nfrc_s, tracking_points[0] ? tracking[0] / tracking_points[0] / per_point : 0.0, tracking_points[0],
-              tracking_iterations[0], tracking_points[1] ? tracking[1] / tracking_points[1] / per_point : 0.0, tracking_points[1],
-              tracking_iterations[1], unstable, hill_times.size());
+  std::printf("Dense LU: %s\n\n", DenseLU::backend().c_str());
+  std::printf("| run | unknowns | points | Newton it. | wall [s] | per Newton it. [ms] | dense LU [ms] (backend / Eigen) | "
+              "per it. / LU | per it. / Eigen LU | AFT | Jacobian | factorization | rest | per point / NFRC per point |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  print_row(nfrc_run, 0);
+  for (const Run& r : tracking) print_row(r, per_point);
+  std::printf("\nNFRC: %d dense LUs of the bordered system for %d Newton iterations and %d points (a tangent refined from the "
+              "last Newton step's factors needs none).\n",
+              s.factorizations, s.newton_iterations, s.points);
+  std::printf("\nStability (Hill's method, %zu points sampled, %d unstable): %.0f ms per point, %.2f x the continuation's cost per point.\n",
+              hill_times.size(), unstable, 1e3 * hill_point, hill_point / per_point);
   return 0;
 }

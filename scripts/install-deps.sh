@@ -14,6 +14,7 @@ packages=(
   calculix-ccx           # cross-checks the hex20 element against CalculiX (test skipped without it)
   libspectra-dev         # sparse/shift-invert eigensolvers (Hill, Craig-Bampton)
   libboost-dev           # Boost.odeint (header-only): the Dormand-Prince time integrator
+  libopenblas-serial-dev # one-threaded optimized LAPACK for the continuation's dense LU (optional: Eigen's otherwise)
   libgtest-dev           # tests
   libbenchmark-dev       # bench/
   python3-numpy python3-matplotlib  # plots of the main job

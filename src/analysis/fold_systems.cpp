@@ -1,8 +1,9 @@
 #include "hbtrack/analysis/fold_systems.hpp"
 
-#include <Eigen/LU>
 #include <stdexcept>
 #include <string>
+
+#include "hbtrack/util/phase_timer.hpp"
 
 namespace hbtrack {
 
@@ -11,26 +12,17 @@ using Eigen::VectorXd;
 
 namespace {
 constexpr double kEta = 1e-6;  // relative finite-difference step of the second derivatives (paper)
-
-// x with A^T x = b from the factors P A = L U (A^T = U^T L^T P): the left null vector reuses
-// the LU of the right one.
-VectorXd solve_transposed(const Eigen::PartialPivLU<MatrixXd>& lu, const VectorXd& b) {
-  const MatrixXd& f = lu.matrixLU();
-  VectorXd y = f.triangularView<Eigen::Upper>().transpose().solve(b);
-  y = f.triangularView<Eigen::UnitLower>().transpose().solve(y);
-  return lu.permutationP().transpose() * y;
-}
 }  // namespace
 
 void approximate_null_vectors(const MatrixXd& j, VectorXd& right, VectorXd& left) {
-  const Eigen::PartialPivLU<MatrixXd> lu(j);
+  const DenseLU lu(j);
   // A start with every component present; inverse iteration converges by the ratio of the two
   // smallest singular values per step, and at a fold the smallest is near zero.
   right = VectorXd::LinSpaced(j.rows(), 1.0, 2.0).normalized();
   left = right;
   for (int it = 0; it < 4; ++it) {
     right = lu.solve(right).normalized();
-    left = solve_transposed(lu, left).normalized();
+    left = lu.solve_transposed(left).normalized();
   }
   if (!right.allFinite() || !left.allFinite()) throw std::runtime_error("fold: the Jacobian at the start has no usable null vector");
 }
@@ -57,18 +49,18 @@ void FoldSystem::evaluate_hbm(const VectorXd& x, double omega, double gamma, boo
   if (derivatives) e.r_gamma = hbm_.parameter_derivative(x, omega, parameter_);
 }
 
-FoldSystem::SecondDerivatives FoldSystem::along(const VectorXd& x, double omega, double gamma, const VectorXd& d,
-                                                const Evaluation& base) {
+void FoldSystem::along(const VectorXd& x, double omega, double gamma, const VectorXd& d, const Evaluation& base,
+                       SecondDerivatives& out) {
   const double eps = kEta * (x.norm() / d.norm() + kEta);
-  Evaluation shifted;
   const VectorXd xs = x + eps * d;
   hbm_.parameters().value(parameter_) = gamma;
-  hbm_.evaluate(xs, omega, shifted.r, &shifted.j, &shifted.r_omega);
-  SecondDerivatives s;
-  s.j = (shifted.j - base.j) / eps;
-  s.r_omega = (shifted.r_omega - base.r_omega) / eps;
-  s.r_gamma = linear_in_parameter_ ? VectorXd::Zero(q_) : VectorXd((hbm_.parameter_derivative(xs, omega, parameter_) - base.r_gamma) / eps);
-  return s;
+  hbm_.evaluate(xs, omega, shifted_.r, &shifted_.j, &shifted_.r_omega);
+  out.j = (shifted_.j - base.j) / eps;
+  out.r_omega = (shifted_.r_omega - base.r_omega) / eps;
+  if (linear_in_parameter_)
+    out.r_gamma.setZero(q_);
+  else
+    out.r_gamma = (hbm_.parameter_derivative(xs, omega, parameter_) - base.r_gamma) / eps;
 }
 
 // ---- extended system ---------------------------------------------------------------------
@@ -88,7 +80,7 @@ VectorXd ExtendedFoldSystem::unknown_scale(const VectorXd& u) const {
 void ExtendedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, MatrixXd* jacobian, VectorXd* r_gamma) {
   const VectorXd x = u.head(q_), phi = u.segment(q_, q_);
   const double omega = u(2 * q_);
-  Evaluation e;
+  Evaluation& e = base_;
   evaluate_hbm(x, omega, gamma, jacobian != nullptr, e);
   // Rows in force units: R, L R_x phi, F (phi^T phi - 1).
   const double length = scales_.length, force = scales_.force;
@@ -97,7 +89,8 @@ void ExtendedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, 
   r.segment(q_, q_) = length * (e.j * phi);
   r(2 * q_) = force * (phi.squaredNorm() - 1.0);
   if (!jacobian) return;
-  const SecondDerivatives s = along(x, omega, gamma, phi, e);
+  SecondDerivatives& s = second_;
+  along(x, omega, gamma, phi, e, s);
   jacobian->setZero(size(), size());
   jacobian->topLeftCorner(q_, q_) = e.j;
   jacobian->block(0, 2 * q_, q_, 1) = e.r_omega;
@@ -125,18 +118,20 @@ VectorXd BorderedFoldSystem::start(const VectorXd& x, double omega, const Vector
 }
 
 void BorderedFoldSystem::null_vectors(const MatrixXd& j, bool left) {
-  MatrixXd a(q_ + 1, q_ + 1);
+  MatrixXd& a = border_matrix_;
+  a.resize(q_ + 1, q_ + 1);
   a.topLeftCorner(q_, q_) = j;
   a.topRightCorner(q_, 1) = b_;
   a.bottomLeftCorner(1, q_) = c_.transpose();
   a(q_, q_) = 0.0;
-  const Eigen::PartialPivLU<MatrixXd> lu(a);
+  const ScopedPhase timing(Phase::factorization);
+  border_lu_.compute(a);
   VectorXd e = VectorXd::Zero(q_ + 1);
   e(q_) = 1.0;
-  const VectorXd right = lu.solve(e);
+  const VectorXd right = border_lu_.solve(e);
   v_ = right.head(q_);
   g_ = right(q_);
-  if (left) w_ = solve_transposed(lu, e).head(q_);
+  if (left) w_ = border_lu_.solve_transposed(e).head(q_);  // the left null vector reuses the factors
   has_left_ = left;
 }
 
@@ -144,7 +139,7 @@ void BorderedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, 
   if (b_.size() != q_) throw std::logic_error("BorderedFoldSystem: start() sets the borders first");
   const VectorXd x = u.head(q_);
   const double omega = u(q_);
-  Evaluation e;
+  Evaluation& e = base_;
   evaluate_hbm(x, omega, gamma, jacobian != nullptr, e);
   null_vectors(e.j, jacobian != nullptr);
   last_u_ = u;
@@ -156,7 +151,8 @@ void BorderedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, 
   r(q_) = length * g_;
   if (!jacobian) return;
   // g_z = -w^T (R_x)_z v, all from the second derivatives along v.
-  const SecondDerivatives s = along(x, omega, gamma, v_, e);
+  SecondDerivatives& s = second_;
+  along(x, omega, gamma, v_, e, s);
   jacobian->resize(size(), size());
   jacobian->topLeftCorner(q_, q_) = e.j;
   jacobian->topRightCorner(q_, 1) = e.r_omega;
@@ -172,9 +168,8 @@ void BorderedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, 
 void BorderedFoldSystem::accepted(const VectorXd& u, double gamma) {
   // The continuation evaluates the Jacobian at the point it accepts last; recompute otherwise.
   if (!(has_left_ && last_u_.size() == u.size() && last_u_ == u && last_gamma_ == gamma)) {
-    Evaluation e;
-    evaluate_hbm(u.head(q_), u(q_), gamma, false, e);
-    null_vectors(e.j, true);
+    evaluate_hbm(u.head(q_), u(q_), gamma, false, base_);
+    null_vectors(base_.j, true);
   }
   c_ = v_.normalized();
   b_ = w_.normalized();

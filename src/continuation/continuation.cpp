@@ -1,9 +1,11 @@
 #include "hbtrack/continuation/continuation.hpp"
 
-#include <Eigen/LU>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+
+#include "hbtrack/util/dense_lu.hpp"
+#include "hbtrack/util/phase_timer.hpp"
 
 namespace hbtrack {
 
@@ -57,6 +59,16 @@ struct Scaled {
   MatrixXd jac;
   int jacobian_evaluations = 0;
   int newton_iterations = 0;
+  int factorizations = 0;
+  // Workspaces kept across iterations and points: a Newton iteration allocates no m x m matrix.
+  MatrixXd newton_matrix{};   // the bordered matrix last factored by the corrector
+  MatrixXd tangent_matrix{};  // the bordered matrix at the converged point
+  DenseLU lu{};               // factors of newton_matrix, or of tangent_matrix after a fresh tangent
+  VectorXd solution{}, refinement_residual{}, product{};
+  // lu holds the factors of the last Newton iteration of the corrector that just converged:
+  // the tangent may start from them. Only within one corrector, so that a run resumed from a
+  // saved state (which carries no factors) repeats the original exactly.
+  bool newton_factors_current = false;
 
   // Re-scales scaled vectors after the unknown scale changed to that of the point u.
   void rescale(const VectorXd& u, std::initializer_list<VectorXd*> points, VectorXd& tangent_vec) {
@@ -82,36 +94,84 @@ struct Scaled {
     ++jacobian_evaluations;
     return inf_norm(r) / rtol;
   }
-  // The bordered matrix [J diag(su), r_lambda sl; row].
-  MatrixXd bordered(const VectorXd& row) const {
-    MatrixXd a(m + 1, m + 1);
+  // The bordered matrix a = [J diag(su), r_lambda sl; row], written into a kept workspace.
+  void bordered(const VectorXd& row, MatrixXd& a) const {
+    a.resize(m + 1, m + 1);
     a.topLeftCorner(m, m) = jac * su.asDiagonal();
     a.topRightCorner(m, 1) = r_lambda * sl;
     a.row(m) = row.transpose();
-    return a;
   }
   // Unit tangent at the last evaluated point, oriented along `reference` (also the border).
-  Tangent tangent(const VectorXd& reference) const {
-    Eigen::PartialPivLU<MatrixXd> lu(bordered(reference));
-    VectorXd rhs = VectorXd::Zero(m + 1);
-    rhs(m) = 1.0;
+  // After a converged corrector whose Newton matrix had the same border, it is refined from
+  // that matrix's factors instead of factoring anew (tangent_from_newton_factors).
+  Tangent tangent(const VectorXd& reference) {
+    bordered(reference, tangent_matrix);
     Tangent out;
-    out.t = lu.solve(rhs);
+    const bool same_border = newton_factors_current && newton_matrix.row(m).transpose() == reference;
+    newton_factors_current = false;
+    if (!(same_border && tangent_from_newton_factors(out))) {
+      const ScopedPhase timing(Phase::factorization);
+      lu.compute(tangent_matrix);
+      ++factorizations;
+      solution.setZero(m + 1);
+      solution(m) = 1.0;
+      lu.solve_in_place(solution);
+      out.t = solution;
+    }
+    out.log_det = lu.log_abs_determinant();
+    out.det_sign = lu.determinant_sign();
     out.t.normalize();
     if (out.t.dot(reference) < 0) out.t = -out.t;
-    const VectorXd diag = lu.matrixLU().diagonal();
-    out.det_sign = static_cast<int>(lu.permutationP().determinant());
-    for (Eigen::Index i = 0; i < diag.size(); ++i) {
-      out.log_det += std::log(std::abs(diag(i)));
-      if (diag(i) < 0) out.det_sign = -out.det_sign;
-    }
     return out;
+  }
+  // The Newton matrix A of the corrector's last iteration differs from the tangent's matrix B
+  // (same border) by the last step dy: iterative refinement of B t = e with A's factors gives
+  // B's solution to working accuracy in a few O(m^2) steps, against an O(m^3) factorization.
+  // A's determinant stands for B's (the BP test function): det B = det A det(I + A^-1 (B - A)),
+  // and the second factor is positive when ||A^-1 (B - A)|| < 1, which also makes the
+  // refinement converge; the bound 0.1 leaves room for the estimate of that norm, a lower
+  // bound. False (the caller factors B) when the bound or the refinement fails, e.g. after a
+  // long last Newton step or near a singular Jacobian.
+  bool tangent_from_newton_factors(Tangent& out) {
+    const ScopedPhase timing(Phase::factorization);
+    newton_matrix = tangent_matrix - newton_matrix;  // B - A: A itself lives on in its factors
+    const MatrixXd& change = newton_matrix;
+    const double relative_change = estimate_norm1(
+        m + 1,
+        [&](VectorXd& v) {
+          product.noalias() = change * v;
+          v = product;
+          lu.solve_in_place(v);
+        },
+        [&](VectorXd& v) {
+          lu.solve_transposed_in_place(v);
+          product.noalias() = change.transpose() * v;
+          v = product;
+        });
+    if (!(relative_change <= 0.1)) return false;
+    const double matrix_norm = tangent_matrix.cwiseAbs().rowwise().sum().maxCoeff();
+    solution.setZero(m + 1);
+    refinement_residual.setZero(m + 1);
+    refinement_residual(m) = 1.0;
+    for (int step = 0; step < 8; ++step) {
+      lu.solve_in_place(refinement_residual);
+      solution += refinement_residual;
+      refinement_residual.noalias() = -tangent_matrix * solution;
+      refinement_residual(m) += 1.0;
+      // Backward error of a few hundred ulps, what a fresh LU solve attains.
+      if (refinement_residual.lpNorm<Eigen::Infinity>() <= 1e-13 * matrix_norm * solution.lpNorm<Eigen::Infinity>()) {
+        out.t = solution;
+        return true;
+      }
+    }
+    return false;
   }
 
   // Newton on [R(y); P(y)] = 0 from y, with P the pseudo-arclength plane direction.(y - x) = ds
   // or the hypersphere |y - x|^2 = ds^2. On success the Jacobian at y is the last evaluated.
   bool correct(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere,
                const ContinuationOptions& options, int& iterations) {
+    newton_factors_current = false;
     for (int it = 0; it <= options.max_iterations; ++it) {
       const double residual = evaluate(y);
       const VectorXd d = y - x;
@@ -131,12 +191,19 @@ struct Scaled {
         return true;
       }
       if (it == options.max_iterations) return false;
-      VectorXd rhs(m + 1);
-      rhs.head(m) = -r;
-      rhs(m) = -p;
-      const VectorXd dy = bordered(p_row).partialPivLu().solve(rhs);
-      if (!dy.allFinite()) return false;
-      y += dy;
+      bordered(p_row, newton_matrix);
+      {
+        const ScopedPhase timing(Phase::factorization);
+        lu.compute(newton_matrix);
+        ++factorizations;
+        solution.resize(m + 1);
+        solution.head(m) = -r;
+        solution(m) = -p;
+        lu.solve_in_place(solution);
+      }
+      newton_factors_current = true;
+      if (!solution.allFinite()) return false;
+      y += solution;
       ++newton_iterations;
     }
     return false;
@@ -208,15 +275,19 @@ int newton_at_fixed_parameter(ContinuationProblem& problem, VectorXd& u, double 
                               int max_iterations) {
   VectorXd r, r_lambda;
   MatrixXd jac;
+  DenseLU lu;
   const double scale = problem.residual_scale();
   for (int it = 0; it <= max_iterations; ++it) {
     problem.evaluate(u, lambda, r, &jac, &r_lambda);
     if (!r.allFinite()) return -1;
     if (inf_norm(r) <= tolerance * scale) return it;
     if (it == max_iterations) break;
-    const VectorXd du = jac.partialPivLu().solve(-r);
-    if (!du.allFinite()) return -1;
-    u += du;
+    const ScopedPhase timing(Phase::factorization);
+    lu.compute(jac);
+    r = -r;
+    lu.solve_in_place(r);
+    if (!r.allFinite()) return -1;
+    u += r;
   }
   return -1;
 }
@@ -258,6 +329,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     summary.stop_reason = reason;
     summary.points = accepted_points();
     summary.jacobian_evaluations = s.jacobian_evaluations;
+    summary.factorizations = s.factorizations;
     summary.newton_iterations += s.newton_iterations;
     summary.wall_s = elapsed();
     return result;
@@ -303,6 +375,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     result.special_points = state->special_points;
     summary = state->summary;
     s.jacobian_evaluations = summary.jacobian_evaluations;
+    s.factorizations = summary.factorizations;
   } else {
     // First point: Newton at fixed lambda_start.
     VectorXd u = u0;
@@ -327,6 +400,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     ContinuationState state{accepted_points(), x, x_prev_prev, t, s.su, ds, farthest, previous.values, previous.bp_log_det,
                             first_point, first_scale, first_parameter_scale, result.special_points, summary};
     state.summary.jacobian_evaluations = s.jacobian_evaluations;
+    state.summary.factorizations = s.factorizations;
     state.summary.newton_iterations += s.newton_iterations;
     state.summary.points = accepted_points();
     return state;

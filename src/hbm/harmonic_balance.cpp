@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <complex>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
 #include "hbtrack/elements/lanczos.hpp"
+#include "hbtrack/util/phase_timer.hpp"
 
 namespace hbtrack {
 
@@ -184,17 +186,24 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
   const int nc = basis_.coefficients();
   const int m = unknowns();
   if (x.size() != m) throw std::invalid_argument("HarmonicBalance::evaluate: x has the wrong size");
-  r.setZero(m);
-  if (jacobian) jacobian->setZero(m, m);
-  if (r_omega) r_omega->setZero(m);
-
-  sample(x, omega);
+  {
+    const ScopedPhase timing(Phase::jacobian);
+    r.setZero(m);
+    if (jacobian) jacobian->setZero(m, m);
+    if (r_omega) r_omega->setZero(m);
+  }
+  {
+    const ScopedPhase timing(Phase::aft);
+    sample(x, omega);
+  }
   for (size_t e = 0; e < elements_.size(); ++e) {
     const NonlinearElement& element = *elements_[e];
     ElementSlot& s = slots_[e];
     const int k = element.local_dofs();
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
     const ElementResponse& resp = s.response;
+    // The AFT: forces in time, their harmonics, and those of d f / d omega.
+    std::optional<ScopedPhase> aft_timing(std::in_place, Phase::aft);
+    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
 
     coeffs_.noalias() = basis_.analysis() * resp.force;  // nc x k
     for (int i = 0; i < k; ++i)
@@ -213,9 +222,13 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
       for (int i = 0; i < k; ++i)
         for (int c = 0; c < nc; ++c) (*r_omega)(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
     }
+    aft_timing.reset();
 
+    const ScopedPhase assembly_timing(Phase::jacobian);
     if (jacobian) add_element_blocks(s, omega, q, s.columns, jacobian, nullptr);
   }
+  // The condensed linear part (Schur complements per harmonic when omega changed).
+  const ScopedPhase timing(Phase::jacobian);
   condenser_->update(omega);
   add_condensed_linear_part(x, r, jacobian, r_omega);
 }
@@ -240,6 +253,7 @@ VectorXd HarmonicBalance::parameter_derivative(const VectorXd& x, double omega, 
     bool bound = false;
     for (const auto& b : element.properties) bound = bound || b.parameter == parameter;
     if (!bound) continue;
+    const ScopedPhase timing(Phase::aft);
     if (!sampled) sample(x, omega);
     sampled = true;
     ElementSlot& s = slots_[e];

@@ -19,6 +19,7 @@
 
 #include "hbtrack/continuation/continuation.hpp"
 #include "hbtrack/hbm/harmonic_balance.hpp"
+#include "hbtrack/util/dense_lu.hpp"
 
 namespace hbtrack {
 
@@ -58,12 +59,17 @@ class FoldSystem : public ContinuationProblem {
     Eigen::MatrixXd j;
   };
   void evaluate_hbm(const Eigen::VectorXd& x, double omega, double gamma, bool derivatives, Evaluation& e);
-  // d/de at e = 0 of R_x, R_omega and R_gamma at x + e d (forward difference from `base`).
+  // d/de at e = 0 of R_x, R_omega and R_gamma at x + e d (forward difference from `base`),
+  // into `out`.
   struct SecondDerivatives {
     Eigen::MatrixXd j;
     Eigen::VectorXd r_omega, r_gamma;
   };
-  SecondDerivatives along(const Eigen::VectorXd& x, double omega, double gamma, const Eigen::VectorXd& d, const Evaluation& base);
+  void along(const Eigen::VectorXd& x, double omega, double gamma, const Eigen::VectorXd& d, const Evaluation& base,
+             SecondDerivatives& out);
+  // Workspaces reused by every evaluation (q x q matrices: no allocation per Newton iteration).
+  Evaluation base_, shifted_;
+  SecondDerivatives second_;
 
   HarmonicBalance& hbm_;
   int parameter_;
@@ -100,6 +106,8 @@ class BorderedFoldSystem final : public FoldSystem {
  private:
   // Solves the bordered systems at the current Jacobian: v (right), w (left), g.
   void null_vectors(const Eigen::MatrixXd& j, bool left);
+  Eigen::MatrixXd border_matrix_;  // [[R_x, b], [c^T, 0]], a kept workspace
+  DenseLU border_lu_;
   Eigen::VectorXd b_, c_;  // borders: left and right null vectors of the last accepted point
   Eigen::VectorXd v_, w_;  // of the last evaluation
   double g_ = 0;

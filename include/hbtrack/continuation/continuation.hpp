@@ -70,6 +70,9 @@ struct ContinuationSummary {
   int failed_steps = 0;
   int step_halvings = 0;
   int jacobian_evaluations = 0;
+  // Dense LUs of the bordered system: one per Newton step, plus one per tangent that could not
+  // be refined from the last Newton step's factors.
+  int factorizations = 0;
   double wall_s = 0;
 };
 
