@@ -197,7 +197,7 @@ TEST(SweepCli, BadInputGivesOneLineErrorsAndWritesNothing) {
       {"--param cubic --values 0.1 --set cubic=0.2", "--param: 'cubic' is swept, it cannot also be given with --set"},
       {"--param cubic --values 0.1 --samples " + no_header.string(), "--samples: give either --samples or --param/--values"},
       {"--samples " + no_header.string(), no_header.string() + ":1: expected a header naming the parameters"},
-      {"--samples " + unknown_column.string(), ": 'mu' is not a named parameter"},
+      {"--samples " + unknown_column.string(), unknown_column.string() + ":1: column 'mu' is not a named parameter"},
       {"--param cubic --values 0.1 --track cubic:0.5:0.9", "--track: the range 0.5:0.9 must contain cubic of every task"},
       {"--param cubic --values 0.1 --track cubic:0.5", "--track: expected PARAM or PARAM:LO:HI, got 'cubic:0.5'"},
       {"--param cubic --values 0.1 --track cubic", "--track: give PARAM:LO:HI, the case's [study] section has no range for 'cubic'"},

@@ -123,11 +123,11 @@ void check_grid_names(const SweepGrid& grid, const CaseDefinition& c, const std:
   for (size_t j = 0; j < grid.names.size(); ++j) {
     const std::string& name = grid.names[j];
     if (c.parameters.find(name) < 0)
-      throw CaseError(source + ": '" + name + "' is not a named parameter of " + c.path + " (its parameters: " + joined(c.parameters.names()) + ")");
+      throw CaseError(source + " '" + name + "' is not a named parameter of " + c.path + " (its parameters: " + joined(c.parameters.names()) + ")");
     if (std::find(grid.names.begin(), grid.names.begin() + static_cast<long>(j), name) != grid.names.begin() + static_cast<long>(j))
-      throw CaseError(source + ": '" + name + "' is given twice");
+      throw CaseError(source + " '" + name + "' is given twice");
     for (const std::string& s : sets)
-      if (s.rfind(name + "=", 0) == 0) throw CaseError(source + ": '" + name + "' is swept, it cannot also be given with --set");
+      if (s.rfind(name + "=", 0) == 0) throw CaseError(source + " '" + name + "' is swept, it cannot also be given with --set");
   }
 }
 

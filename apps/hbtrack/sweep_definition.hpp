@@ -34,6 +34,7 @@ SweepGrid cartesian_grid(const std::vector<std::string>& names, const std::vecto
 SweepGrid read_samples(const std::string& path);
 
 // Every name must be a named parameter of the case, given once, and not also with --set.
+// `source` starts the error line: "--param:" or "FILE.csv:1: column".
 void check_grid_names(const SweepGrid& grid, const CaseDefinition& c, const std::vector<std::string>& sets, const std::string& source);
 
 // PARAM or PARAM:LO:HI (without a range: the case's [study] range of PARAM); the range must hold

@@ -201,7 +201,7 @@ int run_sweep(const SweepOptions& o) {
   const CaseDefinition c = load_case(o.common.case_path, o.common.sets);
   if (!o.samples.empty() && !o.params.empty()) throw CaseError("--samples: give either --samples or --param/--values, not both");
   const SweepGrid grid = o.samples.empty() ? cartesian_grid(o.params, o.values) : read_samples(o.samples);
-  check_grid_names(grid, c, o.common.sets, o.samples.empty() ? "--param" : o.samples);
+  check_grid_names(grid, c, o.common.sets, o.samples.empty() ? "--param:" : o.samples + ":1: column");
   std::optional<SweepTracking> tracking;
   if (!o.track.empty()) tracking = parse_tracking(o.track, grid, c);
   claim_folder(o.common.out_dir, sweep_definition_json(o.common.case_path, o.common.sets, grid, tracking));
