@@ -40,6 +40,13 @@ struct CommonOptions {
 };
 void add_common_options(CLI::App* command, CommonOptions& options);
 
+// --jobs N: independent tasks side by side on this machine (task_runner.hpp); `what` names them.
+void add_jobs_option(CLI::App* command, int& jobs, const std::string& what);
+
+// A number as text with `significant` digits (printf %g): 17 give the double back exactly, 10 or
+// 12 read better in tables and command lines.
+std::string number_text(double v, int significant = 10);
+
 // Set by SIGINT/SIGTERM: long runs stop cleanly with stop_reason "interrupted".
 bool interrupted();
 

@@ -10,7 +10,6 @@
 #include <sys/wait.h>
 
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <thread>
@@ -57,12 +56,6 @@ bool message_waiting(int source, MPI_Status& status) {
   int flag = 0;
   MPI_Iprobe(source, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
   return flag != 0;
-}
-
-std::string number_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
 }
 
 class MpiTaskRunner : public TaskRunner {
@@ -155,7 +148,7 @@ void serve_tasks() {
     const ChildTask task{words.at(1), std::vector<std::string>(words.begin() + 3, words.end()), words.at(2)};
     const auto t0 = Clock::now();
     const int code = run_child(task);
-    send_text(join_words({words[0], std::to_string(code), number_text(seconds_since(t0))}), 0, kResult);
+    send_text(join_words({words[0], std::to_string(code), number_text(seconds_since(t0), 17)}), 0, kResult);
   }
 }
 

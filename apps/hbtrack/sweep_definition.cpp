@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli_common.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -15,11 +16,7 @@ namespace {
 
 // 12 significant digits: LO:HI:COUNT steps print without round-off tails (0.3, not
 // 0.30000000000000004), and the text is what the task gets, so sweep.csv is exact.
-std::string value_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
+std::string value_text(double v) { return number_text(v, 12); }
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;

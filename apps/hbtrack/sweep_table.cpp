@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli_common.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -13,12 +14,6 @@ namespace hbtrack::cli {
 namespace {
 
 using nlohmann::json;
-
-std::string cell(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
 
 // What the table needs from one task's NFRC folder.
 struct NfrcDigest {
@@ -59,7 +54,7 @@ NfrcDigest digest_nfrc(const std::string& folder, const std::vector<std::string>
   return d;
 }
 
-std::string optional_cell(double v) { return std::isnan(v) ? "" : cell(v); }
+std::string optional_cell(double v) { return std::isnan(v) ? "" : number_text(v); }
 
 }  // namespace
 

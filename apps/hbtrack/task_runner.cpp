@@ -63,6 +63,7 @@ class LocalTaskRunner : public TaskRunner {
 std::unique_ptr<TaskRunner> make_local_runner(int jobs) { return std::make_unique<LocalTaskRunner>(jobs); }
 
 std::unique_ptr<TaskRunner> start_task_runner(int jobs) {
+  if (jobs < 0) throw CaseError("--jobs: must be >= 0 (0: one per core)");
 #ifdef HBTRACK_MPI
   if (launched_by_mpi()) return start_mpi_task_runner();
 #endif

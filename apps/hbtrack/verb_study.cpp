@@ -41,12 +41,6 @@ constexpr double kSameLimitPoint = 1e-5;
 // Validation NFRCs sit this fraction of the parameter range away from an extremum.
 constexpr double kProbeOffset = 0.02;
 
-std::string number_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
 // One verb run into DIR/folder. A step that may fail keeps going with what it wrote (exit 1: a
 // tracking leg or a simulation that stopped early still leaves its points).
 struct Step {
@@ -368,7 +362,6 @@ class Study {
 };
 
 int run_study(const StudyOptions& o) {
-  if (o.jobs < 0) throw CaseError("--jobs: must be >= 0 (0: one per core)");
   // Under mpirun the other ranks only run the steps rank 0 hands them.
   const std::unique_ptr<TaskRunner> runner = start_task_runner(o.jobs);
   if (!runner) return 0;
@@ -388,7 +381,7 @@ void add_study_verb(CLI::App& app, VerbList& verbs) {
   add_common_options(s, options.common);
   s->add_option("--only", options.only, "track only this parameter of [study] (repeatable)")->type_name("NAME");
   s->add_option("--units", options.units, "the model's length unit, for the figures' labels (e.g. m)")->type_name("UNIT");
-  s->add_option("--jobs", options.jobs, "independent steps run side by side (0: one per core; under mpirun: one per rank)")->type_name("INT")->capture_default_str();
+  add_jobs_option(s, options.jobs, "independent steps");
   verbs.push_back({s, [] { return run_study(options); }});
 }
 

@@ -120,8 +120,7 @@ class Sweep {
   // Every limit point of every finished NFRC, followed in the tracked parameter.
   std::vector<Task> tracking_tasks() const {
     std::vector<Task> tasks;
-    char range[64];
-    std::snprintf(range, sizeof range, "%.17g:%.17g", tracking_->min, tracking_->max);
+    const std::string range = number_text(tracking_->min, 17) + ":" + number_text(tracking_->max, 17);
     for (size_t i = 0; i < grid_.tasks.size(); ++i) {
       if (!finished_result(nfrc_folder(i))) continue;
       int lp = 0;
@@ -194,7 +193,6 @@ class Sweep {
 };
 
 int run_sweep(const SweepOptions& o) {
-  if (o.jobs < 0) throw CaseError("--jobs: must be >= 0 (0: one per core)");
   // Under mpirun the other ranks only run the tasks rank 0 hands them.
   const std::unique_ptr<TaskRunner> runner = start_task_runner(o.jobs);
   if (!runner) return 0;
@@ -218,9 +216,7 @@ void add_sweep_verb(CLI::App& app, VerbList& verbs) {
   s->add_option("--samples", options.samples, "a CSV table instead: a header of parameter names, one task per row")->type_name("FILE");
   s->add_option("--track", options.track, "follow every limit point of each NFRC in PARAM over LO:HI (default: the case's [study] range)")
       ->type_name("PARAM[:LO:HI]");
-  s->add_option("--jobs", options.jobs, "tasks side by side on this machine (0: one per core; under mpirun: one per rank)")
-      ->type_name("INT")
-      ->capture_default_str();
+  add_jobs_option(s, options.jobs, "tasks");
   verbs.push_back({s, [] { return run_sweep(options); }});
 }
 
