@@ -27,9 +27,12 @@ void add_common_options(CLI::App* command, CommonOptions& o) {
 }
 
 void add_jobs_option(CLI::App* command, int& jobs, const std::string& what) {
+  const CLI::Validator non_negative(
+      [](std::string& text) { return text.find_first_not_of("0123456789") == std::string::npos ? "" : "must be >= 0 (0: one per core)"; }, "");
   command->add_option("--jobs", jobs, what + " side by side on this machine (0: one per core; under mpirun: one per rank)")
       ->type_name("INT")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(non_negative);
 }
 
 std::string number_text(double v, int significant) {

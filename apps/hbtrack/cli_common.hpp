@@ -11,6 +11,7 @@
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/result_tables.hpp"  // options_json, branch rows: shared with the Python module
+#include "interruption.hpp"
 
 namespace hbtrack::cli {
 
@@ -47,8 +48,6 @@ void add_jobs_option(CLI::App* command, int& jobs, const std::string& what);
 // 12 read better in tables and command lines.
 std::string number_text(double v, int significant = 10);
 
-// Set by SIGINT/SIGTERM: long runs stop cleanly with stop_reason "interrupted".
-bool interrupted();
 
 HarmonicBalance make_system(const CaseDefinition& c);
 

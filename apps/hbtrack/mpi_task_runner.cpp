@@ -14,7 +14,7 @@
 #include <map>
 #include <thread>
 
-#include "cli_common.hpp"
+#include "interruption.hpp"
 
 namespace hbtrack::cli {
 
@@ -24,6 +24,9 @@ enum Tag : int { kReady = 1, kResult = 2, kTask = 3, kRelease = 4 };
 
 // How long an idle process sleeps between looks at its mailbox.
 constexpr auto kPollInterval = std::chrono::milliseconds(1);
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Messages are '\0'-separated words.
 std::string join_words(const std::vector<std::string>& words) {
@@ -148,7 +151,7 @@ void serve_tasks() {
     const ChildTask task{words.at(1), std::vector<std::string>(words.begin() + 3, words.end()), words.at(2)};
     const auto t0 = Clock::now();
     const int code = run_child(task);
-    send_text(join_words({words[0], std::to_string(code), number_text(seconds_since(t0), 17)}), 0, kResult);
+    send_text(join_words({words[0], std::to_string(code), std::to_string(seconds_since(t0))}), 0, kResult);
   }
 }
 

@@ -8,7 +8,7 @@
 #include <map>
 #include <thread>
 
-#include "cli_common.hpp"
+#include "interruption.hpp"
 #include "mpi_task_runner.hpp"
 
 namespace hbtrack::cli {
@@ -21,6 +21,7 @@ class LocalTaskRunner : public TaskRunner {
 
   std::vector<int> run(const std::vector<ChildTask>& tasks, const TaskFinished& finished) override {
     std::vector<int> codes(tasks.size(), kTaskNotStarted);
+    using Clock = std::chrono::steady_clock;
     std::map<pid_t, std::pair<size_t, Clock::time_point>> running;
     size_t next = 0;
     while (running.size() > 0 || (next < tasks.size() && !interrupted())) {
@@ -46,7 +47,7 @@ class LocalTaskRunner : public TaskRunner {
       if (it == running.end()) continue;
       const size_t index = it->second.first;
       codes[index] = child_exit_code(status);
-      if (finished) finished(index, codes[index], seconds_since(it->second.second));
+      if (finished) finished(index, codes[index], std::chrono::duration<double>(Clock::now() - it->second.second).count());
       running.erase(it);
     }
     return codes;
@@ -63,7 +64,6 @@ class LocalTaskRunner : public TaskRunner {
 std::unique_ptr<TaskRunner> make_local_runner(int jobs) { return std::make_unique<LocalTaskRunner>(jobs); }
 
 std::unique_ptr<TaskRunner> start_task_runner(int jobs) {
-  if (jobs < 0) throw CaseError("--jobs: must be >= 0 (0: one per core)");
 #ifdef HBTRACK_MPI
   if (launched_by_mpi()) return start_mpi_task_runner();
 #endif
