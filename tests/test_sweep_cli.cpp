@@ -131,19 +131,19 @@ TEST(SweepCli, TrackFollowsEveryLimitPointOfEachNfrc) {
 
 TEST(SweepCli, KilledSweepResumesWithoutRecomputingFinishedTasks) {
   const fs::path reference = fresh_dir("hbtrack_sweep_whole"), dir = fresh_dir("hbtrack_sweep_killed");
-  const std::string grid = "--param amplitude --values 0.8:1.3:6 --param cubic --values 0.05,0.15";
+  const std::string grid = "--param amplitude --values 0.8:1.4:4 --param cubic --values 0.05,0.15";
   const CliRun whole = run_cli("sweep " + kCase + " " + grid + " --jobs 2 -q -o " + reference.string());
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
 
   std::vector<std::string> args{"sweep", kCase, "--jobs", "1", "-q", "-o", dir.string()};
-  for (const char* word : {"--param", "amplitude", "--values", "0.8:1.3:6", "--param", "cubic", "--values", "0.05,0.15"}) args.push_back(word);
+  for (const char* word : {"--param", "amplitude", "--values", "0.8:1.4:4", "--param", "cubic", "--values", "0.05,0.15"}) args.push_back(word);
   const pid_t pid = hbtrack::test::spawn_cli(args, true);
   ASSERT_GT(pid, 0);
-  // Kill the sweep and the task it is running once three of the twelve tasks have finished.
+  // Kill the sweep and the task it is running once three of the eight tasks have finished.
   auto finished_tasks = [&] {
     std::vector<fs::path> done;
-    for (int i = 0; i < 12; ++i) {
-      const fs::path s = dir / "tasks" / (i < 10 ? "000" + std::to_string(i) : "00" + std::to_string(i)) / "summary.json";
+    for (int i = 0; i < 8; ++i) {
+      const fs::path s = dir / "tasks" / ("000" + std::to_string(i)) / "summary.json";
       if (fs::exists(s) && file_bytes(s).find("\"stop_reason\": \"reached_end\"") != std::string::npos) done.push_back(s);
     }
     return done;
@@ -154,7 +154,7 @@ TEST(SweepCli, KilledSweepResumesWithoutRecomputingFinishedTasks) {
   EXPECT_EQ(hbtrack::test::wait_for_exit(pid), -1);
   const std::vector<fs::path> done = finished_tasks();
   ASSERT_GE(done.size(), 3u);
-  ASSERT_LT(done.size(), 12u) << "the sweep ended before it was killed: nothing to resume";
+  ASSERT_LT(done.size(), 8u) << "the sweep ended before it was killed: nothing to resume";
   std::vector<std::pair<fs::file_time_type, std::string>> before;
   for (const fs::path& s : done) before.emplace_back(fs::last_write_time(s), file_bytes(s));
 
@@ -170,7 +170,7 @@ TEST(SweepCli, KilledSweepResumesWithoutRecomputingFinishedTasks) {
   EXPECT_EQ(file_bytes(dir / "sweep.csv"), file_bytes(reference / "sweep.csv"));
 
   // The same folder with other values is refused: its tasks were computed for the old ones.
-  const CliRun other = run_cli("sweep " + kCase + " --param amplitude --values 0.8:1.3:5 --param cubic --values 0.05,0.15 -o " + dir.string());
+  const CliRun other = run_cli("sweep " + kCase + " --param amplitude --values 0.8:1.4:5 --param cubic --values 0.05,0.15 -o " + dir.string());
   EXPECT_EQ(other.exit_code, 2);
   EXPECT_NE(other.err.find("holds a sweep with other settings (tasks differs"), std::string::npos) << other.err;
   EXPECT_EQ(std::count(other.err.begin(), other.err.end(), '\n'), 1) << other.err;
