@@ -34,8 +34,9 @@ inline CliRun run_cli(const std::string& args) {
   return {WEXITSTATUS(status), ss.str()};
 }
 
-// `hbtrack ARGS...` started in the background (output discarded), for tests that signal it.
-inline pid_t spawn_cli(const std::vector<std::string>& args) {
+// `hbtrack ARGS...` started in the background (output discarded), for tests that signal it. In
+// its own process group when asked, so that the test can signal it with its children.
+inline pid_t spawn_cli(const std::vector<std::string>& args, bool own_process_group = false) {
   std::vector<std::string> argv_storage{HBTRACK_CLI};
   argv_storage.insert(argv_storage.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -45,8 +46,15 @@ inline pid_t spawn_cli(const std::vector<std::string>& args) {
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  if (own_process_group) {
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attributes, 0);
+  }
   pid_t pid = -1;
-  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = -1;
+  if (posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ) != 0) pid = -1;
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   return pid;
 }

@@ -1,8 +1,9 @@
 #pragma once
-// Runs other hbtrack verbs as child processes of this one (the study's steps): each step is the
-// command a user could type, writes its own result folder, and a crash or a stop in one step
-// cannot take the others' results with it. Independent steps run side by side.
-#include <functional>
+// Runs other hbtrack verbs as child processes of this one (the study's steps, the sweep's tasks):
+// each step is the command a user could type, writes its own result folder, and a crash or a
+// stop in one step cannot take the others' results with it. task_runner.hpp runs many.
+#include <sys/types.h>
+
 #include <string>
 #include <vector>
 
@@ -19,10 +20,13 @@ struct ChildTask {
 ChildTask hbtrack_task(const std::vector<std::string>& args, const std::string& log_path);
 ChildTask python_script_task(const std::string& script, const std::vector<std::string>& args, const std::string& log_path);
 
-// Runs the tasks with at most `workers` at a time and returns each one's exit code (128 + N
-// when signal N ended it, -1 when it could not be started). `finished(index, code, seconds)` is
-// called as each one ends, in the order they end.
-using TaskFinished = std::function<void(size_t index, int exit_code, double seconds)>;
-std::vector<int> run_tasks(const std::vector<ChildTask>& tasks, int workers, const TaskFinished& finished = {});
+// Starts the child; its pid, or -1 when it could not be started.
+pid_t start_child(const ChildTask& task);
+
+// The exit code a waitpid status stands for: 128 + N when signal N ended the child.
+int child_exit_code(int wait_status);
+
+// Starts the child and waits for it: its exit code, -1 when it could not be started.
+int run_child(const ChildTask& task);
 
 }  // namespace hbtrack::cli

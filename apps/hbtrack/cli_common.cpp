@@ -26,6 +26,21 @@ void add_common_options(CLI::App* command, CommonOptions& o) {
   command->add_flag("-q,--quiet", o.quiet, "no progress line or closing report");
 }
 
+void add_jobs_option(CLI::App* command, int& jobs, const std::string& what) {
+  const CLI::Validator non_negative(
+      [](std::string& text) { return text.find_first_not_of("0123456789") == std::string::npos ? "" : "must be >= 0 (0: one per core)"; }, "");
+  command->add_option("--jobs", jobs, what + " side by side on this machine (0: one per core; under mpirun: one per rank)")
+      ->type_name("INT")
+      ->capture_default_str()
+      ->check(non_negative);
+}
+
+std::string number_text(double v, int significant) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
+  return buf;
+}
+
 HarmonicBalance make_system(const CaseDefinition& c) {
   try {
     return HarmonicBalance(c.model, c.elements, c.parameters, c.harmonic_balance);

@@ -11,6 +11,7 @@
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/result_tables.hpp"  // options_json, branch rows: shared with the Python module
+#include "interruption.hpp"
 
 namespace hbtrack::cli {
 
@@ -40,8 +41,13 @@ struct CommonOptions {
 };
 void add_common_options(CLI::App* command, CommonOptions& options);
 
-// Set by SIGINT/SIGTERM: long runs stop cleanly with stop_reason "interrupted".
-bool interrupted();
+// --jobs N: independent tasks side by side on this machine (task_runner.hpp); `what` names them.
+void add_jobs_option(CLI::App* command, int& jobs, const std::string& what);
+
+// A number as text with `significant` digits (printf %g): 17 give the double back exactly, 10 or
+// 12 read better in tables and command lines.
+std::string number_text(double v, int significant = 10);
+
 
 HarmonicBalance make_system(const CaseDefinition& c);
 

@@ -1,5 +1,6 @@
 // `hbtrack study`: the paper's whole analysis of one case, as the verbs a user would run by hand,
-// each a child process writing its own result folder under DIR (independent ones side by side):
+// each a child process writing its own result folder under DIR (independent ones side by side, on
+// this machine or on MPI ranks: task_runner.hpp):
 //   nfrc/                 the nominal NFRC with stability
 //   track_P_lpK/          limit point K followed in parameter P (the case's [study] section)
 //   validate_P_J/         an NFRC at a parameter value next to each extremum of the P curves
@@ -12,14 +13,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
-#include <thread>
 
-#include "child_process.hpp"
 #include "cli_common.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
 #include "study_curves.hpp"
 #include "study_report.hpp"
+#include "task_runner.hpp"
 
 namespace hbtrack::cli {
 
@@ -41,12 +41,6 @@ constexpr double kSameLimitPoint = 1e-5;
 // Validation NFRCs sit this fraction of the parameter range away from an extremum.
 constexpr double kProbeOffset = 0.02;
 
-std::string number_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
 // One verb run into DIR/folder. A step that may fail keeps going with what it wrote (exit 1: a
 // tracking leg or a simulation that stopped early still leaves its points).
 struct Step {
@@ -66,8 +60,7 @@ bool already_listed(const json& extrema, const TrackingCurve::Extremum& e) {
 
 class Study {
  public:
-  Study(const StudyOptions& o, const CaseDefinition& c) : o_(o), c_(c), dir_(o.common.out_dir) {
-    jobs_ = o.jobs > 0 ? o.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  Study(const StudyOptions& o, const CaseDefinition& c, TaskRunner& runner) : o_(o), c_(c), dir_(o.common.out_dir), runner_(runner) {
     for (const StudyTrack& t : c_.study.track)
       if (o_.only.empty() || std::find(o_.only.begin(), o_.only.end(), t.parameter) != o_.only.end()) tracked_.push_back(t);
   }
@@ -75,7 +68,8 @@ class Study {
   int run() {
     const auto t0 = Clock::now();
     ensure_directory(dir_);
-    summary_ = {{"verb", "study"}, {"case", o_.common.case_path}, {"jobs", jobs_}, {"stop_reason", "running"}, {"steps", json::array()}};
+    summary_ = {{"verb", "study"},         {"case", o_.common.case_path}, {"jobs", runner_.slots()},
+                {"runner", runner_.description()}, {"stop_reason", "running"},    {"steps", json::array()}};
     save();
     const bool ok = nominal() && tracking() && validation_and_simulation() && isolas();
     for (const StudyTrack& t : tracked_) summary_["tracking"].push_back(entries_[t.parameter]);
@@ -108,13 +102,13 @@ class Study {
       for (const Step& s : steps) names += (names.empty() ? "" : ", ") + s.folder;
       std::fprintf(stderr, "study: running %s\n", names.c_str());
     }
-    const std::vector<int> codes = run_tasks(tasks, jobs_, [&](size_t i, int code, double seconds) {
+    const std::vector<int> codes = runner_.run(tasks, [&](size_t i, int code, double seconds) {
       if (!o_.common.quiet) std::fprintf(stderr, "study:   %-26s exit %d, %.1f s\n", steps[i].folder.c_str(), code, seconds);
       summary_["steps"].push_back({{"folder", steps[i].folder}, {"exit_code", code}, {"wall_s", seconds}});
       save();
     });
     for (size_t i = 0; i < steps.size(); ++i) {
-      if (interrupted() || codes[i] >= 128) return stop("interrupted");
+      if (interrupted() || codes[i] >= 128 || codes[i] == kTaskNotStarted) return stop("interrupted");
       if (codes[i] == 0 || (codes[i] == 1 && !steps[i].must_succeed)) continue;
       return stop(steps[i].folder + " failed (exit " + std::to_string(codes[i]) + ", see " + dir_ + "/" + steps[i].folder + "/log.txt)");
     }
@@ -340,7 +334,7 @@ class Study {
     ensure_directory(dir_ + "/figures");
     std::vector<std::string> args{dir_};
     if (!o_.units.empty()) args.insert(args.end(), {"--units", o_.units});
-    const int code = run_tasks({python_script_task("plot_study.py", args, dir_ + "/figures/log.txt")}, 1).front();
+    const int code = run_child(python_script_task("plot_study.py", args, dir_ + "/figures/log.txt"));
     json made = json::array();
     if (code == 0) {
       std::vector<std::string> files;
@@ -357,7 +351,7 @@ class Study {
   const StudyOptions& o_;
   const CaseDefinition& c_;
   const std::string dir_;
-  int jobs_ = 1;
+  TaskRunner& runner_;
   std::vector<StudyTrack> tracked_;
   json summary_;
   json limit_points_ = json::array();
@@ -368,14 +362,16 @@ class Study {
 };
 
 int run_study(const StudyOptions& o) {
+  // Under mpirun the other ranks only run the steps rank 0 hands them.
+  const std::unique_ptr<TaskRunner> runner = start_task_runner(o.jobs);
+  if (!runner) return 0;
   const CaseDefinition c = load_case(o.common.case_path, o.common.sets);
   if (c.study.track.empty()) throw CaseError(o.common.case_path + ": study.track: missing (the parameters to track; see examples/blade/nominal.toml)");
   for (const std::string& name : o.only) {
     const bool known = std::any_of(c.study.track.begin(), c.study.track.end(), [&](const StudyTrack& t) { return t.parameter == name; });
     if (!known) throw CaseError("--only: '" + name + "' is not tracked in the case's [study] section");
   }
-  if (o.jobs < 0) throw CaseError("--jobs: must be >= 0 (0: one per core)");
-  Study study(o, c);
+  Study study(o, c, *runner);
   return study.run();
 }
 
@@ -385,7 +381,7 @@ void add_study_verb(CLI::App& app, VerbList& verbs) {
   add_common_options(s, options.common);
   s->add_option("--only", options.only, "track only this parameter of [study] (repeatable)")->type_name("NAME");
   s->add_option("--units", options.units, "the model's length unit, for the figures' labels (e.g. m)")->type_name("UNIT");
-  s->add_option("--jobs", options.jobs, "independent steps run side by side (0: one per core)")->type_name("INT")->capture_default_str();
+  add_jobs_option(s, options.jobs, "independent steps");
   verbs.push_back({s, [] { return run_study(options); }});
 }
 

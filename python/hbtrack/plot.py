@@ -5,7 +5,8 @@
 frc, solve, isola branches: nfrc and the harmonics at the largest response; track: the curve in
 3D and projected on (omega, parameter), with the NFRC it started from overlaid when its folder
 is there; isolas: the branches found overlaid, the tracking curves with the value; simulate:
-time signals against the HBM orbit and the harmonic amplitudes of both.
+time signals against the HBM orbit and the harmonic amplitudes of both; sweep: the peak over
+the grid of parameter values (sweep_figures.py).
 """
 import argparse
 import os
@@ -15,6 +16,7 @@ import numpy as np
 
 from . import plots
 from .results import output_names, read_result
+from .sweep_figures import sweep_figure
 
 
 def _folder_label(result):
@@ -60,6 +62,8 @@ def figures_for(result, length_unit=None):
         if tracks:
             figures["tracking"] = plots.tracking_plane_figure(tracks, length_unit=length_unit, at=options["at"])
         return figures
+    if kind == "sweep":
+        return {"sweep_peaks": sweep_figure(result["folder"], length_unit=length_unit)}
     if kind == "simulate":
         figures = {"signals": plots.time_signals_figure(result, length_unit=length_unit)}
         summary = result["summary"]
