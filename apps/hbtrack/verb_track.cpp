@@ -28,12 +28,6 @@ struct TrackOptions {
   double time_limit = 0;                       // seconds, 0 for none
 };
 
-std::string exact_text(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 // --resume DIR: the stopped run's --from, --lp, --param, --range and --method, where not given
 // again (given ones must agree: the checkpoint's settings are compared later).
 void take_options_of_stopped_run(TrackOptions& o) {
@@ -46,7 +40,7 @@ void take_options_of_stopped_run(TrackOptions& o) {
     if (o.lp.empty()) o.lp = std::to_string(t.at("lp").get<long>());
     if (o.param.empty()) o.param = t.at("parameter").get<std::string>();
     if (o.method.empty()) o.method = t.at("method").get<std::string>();
-    if (o.range.empty()) o.range = exact_text(t.at("range").at(0).get<double>()) + ":" + exact_text(t.at("range").at(1).get<double>());
+    if (o.range.empty()) o.range = number_text(t.at("range").at(0).get<double>(), 17) + ":" + number_text(t.at("range").at(1).get<double>(), 17);
   } catch (const json::exception& e) {
     throw CaseError("--resume: " + o.resume + "/summary.json: options.tracking: " + e.what());
   }
