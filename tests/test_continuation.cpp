@@ -68,6 +68,10 @@ TEST(Continuation, TangentsRefinedFromNewtonFactorsAgreeWithFreshOnes) {
   CoupledCubics problem(12);
   ContinuationOptions o;
   o.step_max = 0.05;
+  // Plain Newton: the tangent then starts from the factors of the corrector's last iteration.
+  // (This branch through twelve folds returns to lambda = 1 after 3040 points with Newton;
+  // chord iterations take it along another sequence of steps, longer than max_points.)
+  o.reuse_factorization = false;
   const ContinuationResult r = continue_branch(problem, VectorXd::Constant(12, -1.3), 1.0, -1.0, o);
   // The weak coupling splits the m simultaneous folds: the branch turns at the first and
   // returns to lambda = 1 ("left_range"), a limit point on the way.

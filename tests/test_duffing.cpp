@@ -133,3 +133,42 @@ TEST(Duffing, SolutionSatisfiesTheEquationOfMotionInTime) {
   EXPECT_LT(residuals[2], 1e-4) << "H = 7";
   for (size_t i = 0; i + 1 < residuals.size(); ++i) EXPECT_LT(residuals[i + 1], 0.2 * residuals[i]);
 }
+
+// Chord iterations (the default) against plain Newton on the same NFRC: the same special points,
+// every point converged, and fewer factorizations. The limit points are located by a secant
+// iteration on the tangent's omega component down to 1e-12 of the bracket, on branch points that
+// each solve R = 0 to the tolerance 1e-9 (relative to the forcing); two such locations differ by
+// the branch's sensitivity to that residual, the tolerance amplified by the conditioning near the
+// fold: 1e-8 relative allows a factor 10 (they agree to 7e-12 on this machine).
+TEST(Duffing, ChordIterationsFindTheSameLimitPointsWithFewerFactorizations) {
+  NfrcResult runs[2];
+  for (const bool reuse : {false, true}) {
+    CaseDefinition c = load_case(test::source_path("examples/duffing.toml"),
+                                 {std::string("continuation.reuse_factorization=") + (reuse ? "true" : "false")});
+    HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+    NfrcResult& r = runs[reuse ? 1 : 0];
+    r = compute_nfrc(hbm, c.nfrc, c.outputs);
+    ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end") << (reuse ? "chord" : "newton");
+    // Every accepted point solves R = 0 to the tolerance, checked here independently.
+    const double tolerance = c.nfrc.continuation.tolerance * force_scale(hbm, r.length_scale);
+    VectorXd residual;
+    for (const BranchPoint& p : r.continuation.points) {
+      hbm.evaluate(p.u, p.lambda, residual);
+      EXPECT_LE(residual.cwiseAbs().maxCoeff(), tolerance) << "omega " << p.lambda;
+    }
+  }
+  const ContinuationSummary &newton = runs[0].continuation.summary, &chord = runs[1].continuation.summary;
+  EXPECT_EQ(newton.residual_evaluations, 0);
+  EXPECT_GT(chord.residual_evaluations, 0);
+  // Per accepted point: plain Newton factors at every iteration, chord steps mostly not.
+  EXPECT_LT(static_cast<double>(chord.factorizations) / chord.points, 0.8 * newton.factorizations / newton.points);
+  const auto& a = runs[0].continuation.special_points;
+  const auto& b = runs[1].continuation.special_points;
+  ASSERT_EQ(a.size(), 2u);
+  ASSERT_EQ(b.size(), a.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(b[i].type, a[i].type);
+    EXPECT_TRUE(a[i].located && b[i].located);
+    EXPECT_NEAR(b[i].lambda, a[i].lambda, 1e-8 * a[i].lambda) << a[i].type << " " << i;
+  }
+}

@@ -73,7 +73,7 @@ void bind_options(py::module_& m) {
   bind_options_class<ContinuationOptions>(
       m, "ContinuationOptions", "Arc-length continuation settings (case file [continuation]).",
       {"step", "step_min", "step_max", "max_points", "max_iterations", "target_iterations", "tolerance", "max_angle", "predictor",
-       "corrector", "wall_time_limit", "locate"})
+       "corrector", "wall_time_limit", "locate", "reuse_factorization", "contraction"})
       .def_readwrite("step", &ContinuationOptions::step)
       .def_readwrite("step_min", &ContinuationOptions::step_min)
       .def_readwrite("step_max", &ContinuationOptions::step_max)
@@ -85,7 +85,9 @@ void bind_options(py::module_& m) {
       .def_readwrite("predictor", &ContinuationOptions::predictor)
       .def_readwrite("corrector", &ContinuationOptions::corrector)
       .def_readwrite("wall_time_limit", &ContinuationOptions::wall_time_limit)
-      .def_readwrite("locate", &ContinuationOptions::locate);
+      .def_readwrite("locate", &ContinuationOptions::locate)
+      .def_readwrite("reuse_factorization", &ContinuationOptions::reuse_factorization)
+      .def_readwrite("contraction", &ContinuationOptions::contraction);
   bind_options_class<StabilityOptions>(m, "StabilityOptions", "Floquet stability settings (case file [stability]).",
                                        {"method", "monodromy_steps", "hill_solver"})
       .def_readwrite("method", &StabilityOptions::method)

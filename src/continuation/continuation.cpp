@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "hbtrack/util/dense_lu.hpp"
@@ -30,6 +31,7 @@ void ContinuationOptions::validate() const {
     throw std::invalid_argument("continuation.predictor: must be tangent or secant, got '" + predictor + "'");
   if (corrector != "pseudo_arclength" && corrector != "hypersphere")
     throw std::invalid_argument("continuation.corrector: must be pseudo_arclength or hypersphere, got '" + corrector + "'");
+  if (!(contraction > 0 && contraction < 1)) throw std::invalid_argument("continuation.contraction: must be in (0, 1)");
   if (!(wall_time_limit >= 0)) throw std::invalid_argument("continuation.wall_time_limit: must be >= 0");
 }
 
@@ -65,6 +67,9 @@ struct Scaled {
   MatrixXd tangent_matrix{};  // the bordered matrix at the converged point
   DenseLU lu{};               // factors of newton_matrix, or of tangent_matrix after a fresh tangent
   VectorXd solution{}, refinement_residual{}, product{};
+  VectorXd y_before{};  // where the corrector's last step started
+  int residual_evaluations = 0;
+  int chord_steps = 0;  // chord steps taken since the caller last set it to 0
   // lu holds the factors of the last Newton iteration of the corrector that just converged:
   // the tangent may start from them. Only within one corrector, so that a run resumed from a
   // saved state (which carries no factors) repeats the original exactly.
@@ -167,13 +172,36 @@ struct Scaled {
     return false;
   }
 
+  // Evaluates R alone at x (a chord iteration); returns the relative residual.
+  double evaluate_residual(const VectorXd& x) {
+    problem.evaluate(unknowns(x), parameter(x), r, nullptr, nullptr);
+    ++residual_evaluations;
+    return inf_norm(r) / rtol;
+  }
+  // Factors the Newton matrix [J; row] at the last evaluated point.
+  void factor_newton_matrix(const VectorXd& row) {
+    bordered(row, newton_matrix);
+    const ScopedPhase timing(Phase::factorization);
+    lu.compute(newton_matrix);
+    ++factorizations;
+  }
+
   // Newton on [R(y); P(y)] = 0 from y, with P the pseudo-arclength plane direction.(y - x) = ds
   // or the hypersphere |y - x|^2 = ds^2. On success the Jacobian at y is the last evaluated.
+  // With options.reuse_factorization, an iteration after the first keeps the factors of the
+  // last Newton matrix (a chord step: one residual and an O(m^2) solve instead of a Jacobian
+  // and an O(m^3) factorization) as long as each step shrinks the error by options.contraction;
+  // a step that does not is taken again from where it started, as a Newton step.
   bool correct(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere,
                const ContinuationOptions& options, int& iterations) {
     newton_factors_current = false;
+    const double plane_tolerance = 1e-8 * ds * std::max(1.0, ds);
+    bool jacobian_at_y = false;  // jac holds the Jacobian at y
+    double last_error = std::numeric_limits<double>::infinity();
     for (int it = 0; it <= options.max_iterations; ++it) {
-      const double residual = evaluate(y);
+      const bool chord = options.reuse_factorization && newton_factors_current;
+      const double residual = chord ? evaluate_residual(y) : evaluate(y);
+      jacobian_at_y = !chord;
       const VectorXd d = y - x;
       double p;
       VectorXd p_row;
@@ -185,28 +213,49 @@ struct Scaled {
         p = direction.dot(d) - ds;
         p_row = direction;
       }
-      if (!std::isfinite(residual)) return false;
-      if (residual <= options.tolerance && std::abs(p) <= 1e-8 * ds * std::max(1.0, ds)) {
+      // The error in units of the tolerances: converged at <= 1.
+      const double error = std::max(residual / options.tolerance, std::abs(p) / plane_tolerance);
+      if (std::isfinite(residual) && error <= 1.0) {
+        if (!jacobian_at_y) evaluate(y);  // the tangent needs the Jacobian at y
         iterations = it;
         return true;
       }
+      if (chord && !(error <= options.contraction * last_error)) {
+        // The kept factors no longer contract: Newton from here, or from where the step
+        // started when it made things worse.
+        if (!(error < last_error)) y = y_before;
+        return finish_with_newton(y, x, direction, ds, hypersphere, options, iterations, it);
+      }
+      if (!std::isfinite(residual)) return false;
       if (it == options.max_iterations) return false;
-      bordered(p_row, newton_matrix);
+      if (!chord) factor_newton_matrix(p_row);
+      solution.resize(m + 1);
+      solution.head(m) = -r;
+      solution(m) = -p;
       {
         const ScopedPhase timing(Phase::factorization);
-        lu.compute(newton_matrix);
-        ++factorizations;
-        solution.resize(m + 1);
-        solution.head(m) = -r;
-        solution(m) = -p;
         lu.solve_in_place(solution);
       }
       newton_factors_current = true;
       if (!solution.allFinite()) return false;
+      if (chord) ++chord_steps;
+      y_before = y;
+      last_error = error;
       y += solution;
       ++newton_iterations;
     }
     return false;
+  }
+  // The rest of a corrector as plain Newton from y, after `done` iterations.
+  bool finish_with_newton(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere,
+                          const ContinuationOptions& options, int& iterations, int done) {
+    ContinuationOptions newton = options;
+    newton.reuse_factorization = false;
+    newton.max_iterations = options.max_iterations - done;
+    int more = 0;
+    const bool converged = correct(y, x, direction, ds, hypersphere, newton, more);
+    iterations = done + more;
+    return converged;
   }
 };
 
@@ -330,6 +379,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     summary.points = accepted_points();
     summary.jacobian_evaluations = s.jacobian_evaluations;
     summary.factorizations = s.factorizations;
+    summary.residual_evaluations = s.residual_evaluations;
     summary.newton_iterations += s.newton_iterations;
     summary.wall_s = elapsed();
     return result;
@@ -376,6 +426,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     summary = state->summary;
     s.jacobian_evaluations = summary.jacobian_evaluations;
     s.factorizations = summary.factorizations;
+    s.residual_evaluations = summary.residual_evaluations;
   } else {
     // First point: Newton at fixed lambda_start.
     VectorXd u = u0;
@@ -401,6 +452,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
                             first_point, first_scale, first_parameter_scale, result.special_points, summary};
     state.summary.jacobian_evaluations = s.jacobian_evaluations;
     state.summary.factorizations = s.factorizations;
+    state.summary.residual_evaluations = s.residual_evaluations;
     state.summary.newton_iterations += s.newton_iterations;
     state.summary.points = accepted_points();
     return state;
@@ -419,6 +471,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     const VectorXd prediction = x + ds * direction_vec;
     VectorXd y = prediction;
     int iterations = 0;
+    s.chord_steps = 0;
     const bool converged = s.correct(y, x, direction_vec, ds, hypersphere, options, iterations);
 
     // Reject a corrector that did not converge, went back along the branch, jumped away from
@@ -515,7 +568,10 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     if (!accept(point)) return finish("interrupted");
 
     s.rescale(s.unknowns(x), {&x, &x_prev_prev}, t);
-    const double factor = iterations == 0 ? 1.5 : std::clamp(static_cast<double>(options.target_iterations) / iterations, 0.5, 1.5);
+    // A chord step counts half: it gains about half the digits of a Newton step near the
+    // solution (linear against quadratic convergence) at a fraction of the cost.
+    const double work = iterations - 0.5 * s.chord_steps;
+    const double factor = work == 0 ? 1.5 : std::clamp(options.target_iterations / work, 0.5, 1.5);
     ds = std::min(ds * factor, options.step_max);
   }
 }

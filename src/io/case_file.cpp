@@ -471,7 +471,8 @@ void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c)
   const toml::value& cont = in.table(in.require(root, "continuation", "continuation"), "continuation");
   in.check_keys(cont, "continuation",
                 {"omega_start", "omega_end", "length_scale", "step", "step_min", "step_max", "max_points", "max_iterations",
-                 "target_iterations", "tolerance", "max_angle", "predictor", "corrector", "wall_time_limit", "locate"});
+                 "target_iterations", "tolerance", "max_angle", "predictor", "corrector", "wall_time_limit", "locate",
+                 "reuse_factorization", "contraction"});
   NfrcOptions& o = c.nfrc;
   ContinuationOptions& co = o.continuation;
   o.omega_start = in.number(in.require(cont, "omega_start", "continuation.omega_start"), "continuation.omega_start");
@@ -492,6 +493,11 @@ void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c)
     if (!locate->is_boolean()) in.fail(locate, "continuation.locate", "expected true or false");
     co.locate = locate->as_boolean();
   }
+  if (const toml::value* reuse = in.find(cont, "reuse_factorization")) {
+    if (!reuse->is_boolean()) in.fail(reuse, "continuation.reuse_factorization", "expected true or false");
+    co.reuse_factorization = reuse->as_boolean();
+  }
+  co.contraction = in.number_or(cont, "contraction", "continuation.contraction", co.contraction);
   if (const toml::value* st = in.find(root, "stability")) {
     in.table(*st, "stability");
     in.check_keys(*st, "stability", {"method", "monodromy_steps", "hill_solver"});

@@ -30,7 +30,9 @@ json summary_json(const ContinuationSummary& s) {
           {"newton_iterations", s.newton_iterations},
           {"failed_steps", s.failed_steps},
           {"step_halvings", s.step_halvings},
-          {"jacobian_evaluations", s.jacobian_evaluations}};
+          {"jacobian_evaluations", s.jacobian_evaluations},
+          {"residual_evaluations", s.residual_evaluations},
+          {"factorizations", s.factorizations}};
 }
 
 json state_json(const ContinuationState& state) {
@@ -67,6 +69,9 @@ ContinuationSummary summary_from_json(const json& summary) {
   s.failed_steps = summary.at("failed_steps").get<int>();
   s.step_halvings = summary.at("step_halvings").get<int>();
   s.jacobian_evaluations = summary.at("jacobian_evaluations").get<int>();
+  // Counters added after the first checkpoints were written: 0 when absent.
+  s.residual_evaluations = summary.value("residual_evaluations", 0);
+  s.factorizations = summary.value("factorizations", 0);
   return s;
 }
 

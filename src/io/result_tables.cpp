@@ -33,7 +33,9 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
             {"predictor", co.predictor},
             {"corrector", co.corrector},
             {"wall_time_limit", co.wall_time_limit},
-            {"locate", co.locate}}},
+            {"locate", co.locate},
+            {"reuse_factorization", co.reuse_factorization},
+            {"contraction", co.contraction}}},
           {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", c.nfrc.stability.hill_solver}}}};
 }
 
@@ -104,6 +106,8 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   summary["failed_steps"] = s.failed_steps;
   summary["step_halvings"] = s.step_halvings;
   summary["jacobian_evaluations"] = s.jacobian_evaluations;
+  summary["residual_evaluations"] = s.residual_evaluations;
+  summary["factorizations"] = s.factorizations;
   summary["options"]["continuation"]["length_scale"] = r.length_scale;
   summary["outputs"] = outputs_json(c);
   json special = json::array();
@@ -131,14 +135,17 @@ std::vector<double> tracking_row(const FoldCurvePoint& p) {
 
 void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter) {
   json legs = json::array();
-  int newton = 0, jacobians = 0;
+  int newton = 0, jacobians = 0, residuals = 0, factorizations = 0;
   for (size_t i = 0; i < r.legs.size(); ++i) {
     const ContinuationSummary& s = r.legs[i];
     legs.push_back({{"leg", i + 1}, {"towards", i == 0 ? "min" : "max"}, {"stop_reason", s.stop_reason}, {"points", s.points},
                     {"newton_iterations", s.newton_iterations}, {"failed_steps", s.failed_steps},
-                    {"jacobian_evaluations", s.jacobian_evaluations}, {"wall_s", s.wall_s}});
+                    {"jacobian_evaluations", s.jacobian_evaluations}, {"residual_evaluations", s.residual_evaluations},
+                    {"factorizations", s.factorizations}, {"wall_s", s.wall_s}});
     newton += s.newton_iterations;
     jacobians += s.jacobian_evaluations;
+    residuals += s.residual_evaluations;
+    factorizations += s.factorizations;
   }
   json special = json::array();
   for (const FoldExtremum& e : r.extrema) {
@@ -152,6 +159,8 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   summary["points"] = r.curve_points();
   summary["newton_iterations"] = newton;
   summary["jacobian_evaluations"] = jacobians;
+  summary["residual_evaluations"] = residuals;
+  summary["factorizations"] = factorizations;
   summary["special_points"] = special;
   summary["outputs"] = outputs_json(c);
 }

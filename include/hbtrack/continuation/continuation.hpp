@@ -32,6 +32,11 @@ struct ContinuationOptions {
   int max_points = 5000;
   int max_iterations = 15;     // Newton iterations per corrector
   int target_iterations = 4;   // the step grows when Newton needs fewer, shrinks when more
+  // Chord iterations: the corrector keeps its Newton matrix's factors while each step shrinks
+  // the error at least by `contraction` (then factors anew); false: a fresh Jacobian and
+  // factorization at every iteration.
+  bool reuse_factorization = true;
+  double contraction = 0.25;
   double tolerance = 1e-9;     // on ||R||_inf / residual_scale
   // A step whose tangent turns by more than this (radians), or whose corrector moves farther
   // than the step from the prediction, is retried at half length: it cut a corner or jumped
@@ -73,6 +78,7 @@ struct ContinuationSummary {
   // Dense LUs of the bordered system: one per Newton step, plus one per tangent that could not
   // be refined from the last Newton step's factors.
   int factorizations = 0;
+  int residual_evaluations = 0;  // without the Jacobian: the corrector's chord iterations
   double wall_s = 0;
 };
 
