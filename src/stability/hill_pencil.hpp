@@ -7,6 +7,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "hbtrack/util/dense_lu.hpp"
+
 namespace hbtrack {
 
 class HillPencil {
@@ -27,7 +29,7 @@ class HillPencil {
   };
   std::vector<Group> groups_;
   std::vector<Eigen::Index> schur_positions_;  // every coupled position, group by group
-  Eigen::PartialPivLU<Eigen::MatrixXd> schur_;
+  DenseLU schur_;  // the one large factorization: the continuation's LU (OpenBLAS when built with it)
   Eigen::Index size_;
 };
 

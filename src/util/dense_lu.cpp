@@ -7,6 +7,8 @@
 extern "C" {
 // LAPACK's Fortran interface as OpenBLAS exports it (column-major, 1-based pivots).
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv, double* b,
+             const int* ldb, int* info);
 void openblas_set_num_threads(int threads);
 char* openblas_get_corename(void);
 }
@@ -16,6 +18,19 @@ namespace hbtrack {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+
+#ifdef HBTRACK_OPENBLAS
+namespace {
+// dgetrs: OpenBLAS's triangular solves have the processor's vector kernels, Eigen's (compiled
+// for baseline x86-64) do not; the solves are most of a chord iteration and of Hill's Arnoldi.
+void lapack_solve(char trans, const MatrixXd& factors, const std::vector<int>& pivots, VectorXd& b) {
+  const int n = static_cast<int>(factors.rows()), columns = 1;
+  int info = 0;
+  if (n > 0) dgetrs_(&trans, &n, &columns, factors.data(), &n, pivots.data(), b.data(), &n, &info);
+  if (info < 0) throw std::logic_error("DenseLU: dgetrs rejected argument " + std::to_string(-info));
+}
+}  // namespace
+#endif
 
 void DenseLU::compute(const MatrixXd& a) {
   if (a.rows() != a.cols()) throw std::invalid_argument("DenseLU: the matrix is not square");
@@ -41,16 +56,24 @@ void DenseLU::compute(const MatrixXd& a) {
 }
 
 void DenseLU::solve_in_place(VectorXd& b) const {
+#ifdef HBTRACK_OPENBLAS
+  lapack_solve('N', factors_, pivots_, b);
+#else
   b = permutation_ * b;  // Eigen applies a permutation in place
   factors_.triangularView<Eigen::UnitLower>().solveInPlace(b);
   factors_.triangularView<Eigen::Upper>().solveInPlace(b);
+#endif
 }
 
 void DenseLU::solve_transposed_in_place(VectorXd& b) const {
+#ifdef HBTRACK_OPENBLAS
+  lapack_solve('T', factors_, pivots_, b);
+#else
   // A = P^T L U, so A^T = U^T L^T P.
   factors_.triangularView<Eigen::Upper>().transpose().solveInPlace(b);
   factors_.triangularView<Eigen::UnitLower>().transpose().solveInPlace(b);
   b = permutation_.transpose() * b;
+#endif
 }
 
 VectorXd DenseLU::solve(const VectorXd& b) const {
