@@ -1,7 +1,8 @@
 // The blade benchmark (examples/blade/nominal.toml, 567 condensed unknowns, 819 in Hill's
 // full system): costs measured in one run, as ratios, because the machine is shared and noisy.
-//   - NFRC: wall time, time per Newton iteration against one dense LU of the same size (the
-//     library's LU backend and Eigen's), and where the time goes (util/phase_timer.hpp);
+//   - NFRC, with chord iterations (the default) and with plain Newton: wall time, time per
+//     corrector iteration against one dense LU of the same size (the library's LU backend and
+//     Eigen's), and where the time goes (util/phase_timer.hpp);
 //   - stability: Hill's method per point, and its total against the continuation's (target <= 1);
 //   - limit-point tracking in the amplitude: cost per accepted point, bordered and extended,
 //     against the cost per accepted NFRC point (target for bordered: <= 2).
@@ -32,19 +33,25 @@ using hbtrack::bench::seconds_since;
 // One row: a continuation run and the LU of the size of the system it factors.
 struct Run {
   std::string name;
-  int unknowns = 0, points = 0, newton = 0;
+  int unknowns = 0, points = 0, iterations = 0, chord = 0, factorizations = 0;
   double wall = 0;
   Breakdown breakdown;
+  void add(const hbtrack::ContinuationSummary& s) {
+    iterations += s.newton_iterations;
+    chord += s.chord_iterations;
+    factorizations += s.factorizations;
+  }
 };
 
 void print_row(const Run& r, double per_nfrc_point) {
   const int lu_size = r.unknowns + 1;  // the continuation borders the system with its arc-length row
   const double lu = dense_lu_seconds(lu_size), eigen_lu = dense_lu_seconds(lu_size, true);
-  const double per_iteration = r.wall / std::max(1, r.newton);
+  const double per_iteration = r.wall / std::max(1, r.iterations);
   const double per_point = r.wall / std::max(1, r.points);
-  std::printf("| %s | %d | %d | %d | %.2f | %.2f | %.2f / %.2f | %.2f | %.2f | %s | %.2f |\n", r.name.c_str(), r.unknowns, r.points,
-              r.newton, r.wall, 1e3 * per_iteration, 1e3 * lu, 1e3 * eigen_lu, per_iteration / lu, per_iteration / eigen_lu,
-              r.breakdown.cells().c_str(), per_nfrc_point > 0 ? per_point / per_nfrc_point : 1.0);
+  std::printf("| %s | %d | %d | %d (%d) | %d | %.2f | %.2f | %.2f / %.2f | %.2f | %.2f | %s | %.2f |\n", r.name.c_str(), r.unknowns,
+              r.points, r.iterations, r.chord, r.factorizations, r.wall, 1e3 * per_iteration, 1e3 * lu, 1e3 * eigen_lu,
+              per_iteration / lu, per_iteration / eigen_lu, r.breakdown.cells().c_str(),
+              per_nfrc_point > 0 ? per_point / per_nfrc_point : 1.0);
 }
 
 }  // namespace
@@ -58,14 +65,25 @@ int main(int argc, char** argv) {
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   PhaseTimes::enable(true);
 
-  // NFRC without stability.
-  PhaseTimes::reset();
-  const auto t_nfrc = Clock::now();
-  const NfrcResult nfrc = compute_nfrc(hbm, c.nfrc, {});
-  const auto& s = nfrc.continuation.summary;
-  Run nfrc_run{"NFRC", hbm.unknowns(), s.points, s.newton_iterations, seconds_since(t_nfrc), {}};
-  nfrc_run.breakdown = Breakdown::of(nfrc_run.wall);
-  const double per_point = nfrc_run.wall / s.points;
+  // NFRC without stability: plain Newton, then chord iterations (the default).
+  std::vector<Run> nfrc_runs;
+  NfrcResult nfrc;
+  for (const bool reuse : {false, true}) {
+    NfrcOptions options = c.nfrc;
+    options.continuation.reuse_factorization = reuse;
+    PhaseTimes::reset();
+    const auto t_nfrc = Clock::now();
+    nfrc = compute_nfrc(hbm, options, {});
+    Run run;
+    run.name = reuse ? "NFRC" : "NFRC, plain Newton";
+    run.unknowns = hbm.unknowns();
+    run.points = nfrc.continuation.summary.points;
+    run.wall = seconds_since(t_nfrc);
+    run.add(nfrc.continuation.summary);
+    run.breakdown = Breakdown::of(run.wall);
+    nfrc_runs.push_back(run);
+  }
+  const double per_point = nfrc_runs.back().wall / nfrc_runs.back().points;
 
   // Hill on every 8th point (auto: shift-invert Arnoldi at this size).
   std::vector<double> hill_times;
@@ -96,23 +114,26 @@ int main(int argc, char** argv) {
       PhaseTimes::reset();
       const auto t0 = Clock::now();
       const FoldTrackingResult r = track_fold(hbm, hbm.amplitude_parameter(), lp->u, lp->lambda, scales, o, {});
-      Run run{std::string(method) + " LP tracking", o.method == "bordered" ? hbm.unknowns() + 1 : 2 * hbm.unknowns() + 1,
-              static_cast<int>(r.points.size()), 0, seconds_since(t0), {}};
-      for (const auto& leg : r.legs) run.newton += leg.newton_iterations;
+      Run run;
+      run.name = std::string(method) + " LP tracking";
+      run.unknowns = o.method == "bordered" ? hbm.unknowns() + 1 : 2 * hbm.unknowns() + 1;
+      run.points = static_cast<int>(r.points.size());
+      run.wall = seconds_since(t0);
+      for (const auto& leg : r.legs) run.add(leg);
       run.breakdown = Breakdown::of(run.wall);
       tracking.push_back(run);
     }
   }
 
   std::printf("Dense LU: %s\n\n", DenseLU::backend().c_str());
-  std::printf("| run | unknowns | points | Newton it. | wall [s] | per Newton it. [ms] | dense LU [ms] (backend / Eigen) | "
+  std::printf("| run | unknowns | points | iterations (chord) | LUs | wall [s] | per it. [ms] | dense LU [ms] (backend / Eigen) | "
               "per it. / LU | per it. / Eigen LU | AFT | Jacobian | factorization | rest | per point / NFRC per point |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  print_row(nfrc_run, 0);
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Run& r : nfrc_runs) print_row(r, per_point);
   for (const Run& r : tracking) print_row(r, per_point);
-  std::printf("\nNFRC: %d dense LUs of the bordered system for %d Newton iterations and %d points (a tangent refined from the "
-              "last Newton step's factors needs none).\n",
-              s.factorizations, s.newton_iterations, s.points);
+  std::printf("\nIterations: the corrector's, Newton and chord (in parentheses: chord iterations, a residual and a solve with "
+              "kept factors each). LUs: the continuation's dense factorizations (the bordered fold system factors its "
+              "own bordered matrix at every residual besides).\n");
   std::printf("\nStability (Hill's method, %zu points sampled, %d unstable): %.0f ms per point, %.2f x the continuation's cost per point.\n",
               hill_times.size(), unstable, 1e3 * hill_point, hill_point / per_point);
   return 0;

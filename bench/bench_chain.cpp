@@ -1,7 +1,9 @@
 // Scaling benchmark on the chain-with-contact example: NFRC wall time, Newton iterations, the
 // cost of one Newton iteration relative to one dense LU of the bordered condensed system, both
 // measured in this run (ratios survive a noisy shared machine; absolute times do not), and where
-// the time goes (util/phase_timer.hpp), as n, H and the number of samples N grow.
+// the time goes (util/phase_timer.hpp), as n, H and the number of samples N grow. Plain Newton
+// (continuation.reuse_factorization = false), so that every iteration does the same work: a
+// Jacobian, an LU, a solve.
 //
 //   build/bench/bench_chain [--quick]      prints a Markdown table
 #include <algorithm>
@@ -62,6 +64,7 @@ Row measure(int n, int harmonics, const std::string& condensation, int samples =
   const auto path = std::filesystem::temp_directory_path() / "hbtrack_bench_chain.toml";
   std::ofstream(path) << chain_case(n, harmonics, condensation, samples);
   hbtrack::CaseDefinition c = hbtrack::load_case(path.string());
+  c.nfrc.continuation.reuse_factorization = false;
   {
     hbtrack::HarmonicBalance probe(c.model, c.elements, c.parameters, c.harmonic_balance);
     const double peak = hbtrack::automatic_length_scale(probe, c.nfrc.omega_start, c.nfrc.omega_end);

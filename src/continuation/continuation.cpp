@@ -70,6 +70,7 @@ struct Scaled {
   VectorXd y_before{};  // where the corrector's last step started
   int residual_evaluations = 0;
   int chord_steps = 0;  // chord steps taken since the caller last set it to 0
+  int chord_iterations = 0;  // all chord steps, for the summary
   // lu holds the factors of the last Newton iteration of the corrector that just converged:
   // the tangent may start from them. Only within one corrector, so that a run resumed from a
   // saved state (which carries no factors) repeats the original exactly.
@@ -238,7 +239,7 @@ struct Scaled {
       }
       newton_factors_current = true;
       if (!solution.allFinite()) return false;
-      if (chord) ++chord_steps;
+      if (chord) ++chord_steps, ++chord_iterations;
       y_before = y;
       last_error = error;
       y += solution;
@@ -380,6 +381,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     summary.jacobian_evaluations = s.jacobian_evaluations;
     summary.factorizations = s.factorizations;
     summary.residual_evaluations = s.residual_evaluations;
+    summary.chord_iterations = s.chord_iterations;
     summary.newton_iterations += s.newton_iterations;
     summary.wall_s = elapsed();
     return result;
@@ -427,6 +429,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     s.jacobian_evaluations = summary.jacobian_evaluations;
     s.factorizations = summary.factorizations;
     s.residual_evaluations = summary.residual_evaluations;
+    s.chord_iterations = summary.chord_iterations;
   } else {
     // First point: Newton at fixed lambda_start.
     VectorXd u = u0;
@@ -453,6 +456,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     state.summary.jacobian_evaluations = s.jacobian_evaluations;
     state.summary.factorizations = s.factorizations;
     state.summary.residual_evaluations = s.residual_evaluations;
+    state.summary.chord_iterations = s.chord_iterations;
     state.summary.newton_iterations += s.newton_iterations;
     state.summary.points = accepted_points();
     return state;

@@ -32,6 +32,7 @@ json summary_json(const ContinuationSummary& s) {
           {"step_halvings", s.step_halvings},
           {"jacobian_evaluations", s.jacobian_evaluations},
           {"residual_evaluations", s.residual_evaluations},
+          {"chord_iterations", s.chord_iterations},
           {"factorizations", s.factorizations}};
 }
 
@@ -71,6 +72,7 @@ ContinuationSummary summary_from_json(const json& summary) {
   s.jacobian_evaluations = summary.at("jacobian_evaluations").get<int>();
   // Counters added after the first checkpoints were written: 0 when absent.
   s.residual_evaluations = summary.value("residual_evaluations", 0);
+  s.chord_iterations = summary.value("chord_iterations", 0);
   s.factorizations = summary.value("factorizations", 0);
   return s;
 }

@@ -106,6 +106,7 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   summary["failed_steps"] = s.failed_steps;
   summary["step_halvings"] = s.step_halvings;
   summary["jacobian_evaluations"] = s.jacobian_evaluations;
+  summary["chord_iterations"] = s.chord_iterations;
   summary["residual_evaluations"] = s.residual_evaluations;
   summary["factorizations"] = s.factorizations;
   summary["options"]["continuation"]["length_scale"] = r.length_scale;
@@ -135,16 +136,17 @@ std::vector<double> tracking_row(const FoldCurvePoint& p) {
 
 void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter) {
   json legs = json::array();
-  int newton = 0, jacobians = 0, residuals = 0, factorizations = 0;
+  int newton = 0, jacobians = 0, residuals = 0, factorizations = 0, chords = 0;
   for (size_t i = 0; i < r.legs.size(); ++i) {
     const ContinuationSummary& s = r.legs[i];
     legs.push_back({{"leg", i + 1}, {"towards", i == 0 ? "min" : "max"}, {"stop_reason", s.stop_reason}, {"points", s.points},
                     {"newton_iterations", s.newton_iterations}, {"failed_steps", s.failed_steps},
-                    {"jacobian_evaluations", s.jacobian_evaluations}, {"residual_evaluations", s.residual_evaluations},
-                    {"factorizations", s.factorizations}, {"wall_s", s.wall_s}});
+                    {"jacobian_evaluations", s.jacobian_evaluations}, {"chord_iterations", s.chord_iterations},
+                    {"residual_evaluations", s.residual_evaluations}, {"factorizations", s.factorizations}, {"wall_s", s.wall_s}});
     newton += s.newton_iterations;
     jacobians += s.jacobian_evaluations;
     residuals += s.residual_evaluations;
+    chords += s.chord_iterations;
     factorizations += s.factorizations;
   }
   json special = json::array();
@@ -159,6 +161,7 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   summary["points"] = r.curve_points();
   summary["newton_iterations"] = newton;
   summary["jacobian_evaluations"] = jacobians;
+  summary["chord_iterations"] = chords;
   summary["residual_evaluations"] = residuals;
   summary["factorizations"] = factorizations;
   summary["special_points"] = special;

@@ -78,7 +78,8 @@ struct ContinuationSummary {
   // Dense LUs of the bordered system: one per Newton step, plus one per tangent that could not
   // be refined from the last Newton step's factors.
   int factorizations = 0;
-  int residual_evaluations = 0;  // without the Jacobian: the corrector's chord iterations
+  int chord_iterations = 0;      // of newton_iterations, those with kept factors
+  int residual_evaluations = 0;  // without the Jacobian (one per chord iteration and corrector)
   double wall_s = 0;
 };
 
