@@ -296,10 +296,13 @@ struct Locator {
     const double span = b;
     int side = 0;
     for (int it = 0; it < 60; ++it) {
-      const double c = b - fb * (b - a) / (fb - fa);
+      double c = b - fb * (b - a) / (fb - fa);
+      // Near the zero the test function is roundoff, and the secant may leave the bracket:
+      // bisect instead.
+      if (!(c > a && c < b)) c = 0.5 * (a + b);
       VectorXd y;
       Tangent tan;
-      if (!(c > a && c < b) || !point_at(x0, t0, c, y, tan)) return false;
+      if (!point_at(x0, t0, c, y, tan)) return false;
       const double fc = value(which, y, tan, reference_log_det);
       y_out = y;
       tan_out = tan;
