@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "hbtrack/elements/lanczos.hpp"
+#include "hbtrack/util/dense_product.hpp"
 #include "hbtrack/util/phase_timer.hpp"
 
 namespace hbtrack {
@@ -96,8 +97,9 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
 void HarmonicBalance::sample(const VectorXd& x, double omega) {
   const int q = retained_dofs();
   const Eigen::Map<const MatrixXd> coeffs(x.data(), q, basis_.coefficients());
-  x_samples_.noalias() = basis_.synthesis() * coeffs.transpose();
-  v_unit_samples_.noalias() = basis_.derivative_synthesis() * coeffs.transpose();
+  coefficient_rows_ = coeffs.transpose();
+  multiply(basis_.synthesis(), coefficient_rows_, x_samples_);
+  multiply(basis_.derivative_synthesis(), coefficient_rows_, v_unit_samples_);
   for (size_t e = 0; e < elements_.size(); ++e) {
     ElementSlot& s = slots_[e];
     for (size_t i = 0; i < s.columns.size(); ++i) {
@@ -149,9 +151,9 @@ void HarmonicBalance::add_element_blocks(ElementSlot& s, double omega, int strid
   const ElementResponse& resp = s.response;
   const int k = static_cast<int>(positions.size());
   const int nc = basis_.coefficients();
-  coeffs_.noalias() = basis_.product_analysis() * resp.dforce_dx;
+  multiply(basis_.product_analysis(), resp.dforce_dx, coeffs_);
   const bool with_v = resp.dforce_dv.size() > 0;
-  if (with_v) coeffs_v_.noalias() = basis_.product_analysis() * resp.dforce_dv;
+  if (with_v) multiply(basis_.product_analysis(), resp.dforce_dv, coeffs_v_);
   block_.resize(nc, nc);
   block_v_.resize(nc, nc);
   auto scatter = [&](MatrixXd& target, const MatrixXd& block, int row_dof, int col_dof) {
@@ -205,7 +207,7 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
     std::optional<ScopedPhase> aft_timing(std::in_place, Phase::aft);
     element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
 
-    coeffs_.noalias() = basis_.analysis() * resp.force;  // nc x k
+    multiply(basis_.analysis(), resp.force, coeffs_);  // nc x k
     for (int i = 0; i < k; ++i)
       for (int c = 0; c < nc; ++c) r(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
 
@@ -218,7 +220,7 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
           for (int jd = 0; jd < k; ++jd)
             df.col(i).array() += resp.dforce_dv.col(i + k * jd).array() * v_unit_samples_.col(s.columns[static_cast<size_t>(jd)]).array();
       if (resp.dforce_domega.size() > 0) df += resp.dforce_domega;
-      coeffs_.noalias() = basis_.analysis() * df;
+      multiply(basis_.analysis(), df, coeffs_);
       for (int i = 0; i < k; ++i)
         for (int c = 0; c < nc; ++c) (*r_omega)(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
     }

@@ -89,6 +89,7 @@ class HarmonicBalance {
   std::vector<ElementSlot> slots_;
   // Workspace: samples of all retained dofs.
   Eigen::MatrixXd x_samples_, v_unit_samples_;
+  Eigen::MatrixXd coefficient_rows_;  // the harmonics of x, (2H+1) x q: one row per coefficient
   Eigen::MatrixXd block_, block_v_, coeffs_, coeffs_v_;
 };
 
