@@ -117,7 +117,7 @@ VectorXd BorderedFoldSystem::start(const VectorXd& x, double omega, const Vector
   return u;
 }
 
-void BorderedFoldSystem::null_vectors(const MatrixXd& j, bool left) {
+void BorderedFoldSystem::null_vectors(const MatrixXd& j, bool left, bool refine) {
   MatrixXd& a = border_matrix_;
   a.resize(q_ + 1, q_ + 1);
   a.topLeftCorner(q_, q_) = j;
@@ -125,14 +125,24 @@ void BorderedFoldSystem::null_vectors(const MatrixXd& j, bool left) {
   a.bottomLeftCorner(1, q_) = c_.transpose();
   a(q_, q_) = 0.0;
   const ScopedPhase timing(Phase::factorization);
+  has_left_ = left;
+  if (refine && !left && border_lu_.size() == q_ + 1 && refine_right_null_vector()) return;
   border_lu_.compute(a);
+  ++border_factorizations_;
   VectorXd e = VectorXd::Zero(q_ + 1);
   e(q_) = 1.0;
   const VectorXd right = border_lu_.solve(e);
   v_ = right.head(q_);
   g_ = right(q_);
   if (left) w_ = border_lu_.solve_transposed(e).head(q_);  // the left null vector reuses the factors
-  has_left_ = left;
+}
+
+bool BorderedFoldSystem::refine_right_null_vector() {
+  // [v; g] solves A z = e_q for A = border_matrix_, refined from the factors of an earlier one.
+  if (!refine_last_unit_solution(border_lu_, border_matrix_, solution_, correction_)) return false;
+  v_ = solution_.head(q_);
+  g_ = solution_(q_);
+  return true;
 }
 
 void BorderedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, MatrixXd* jacobian, VectorXd* r_gamma) {
@@ -141,7 +151,7 @@ void BorderedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, 
   const double omega = u(q_);
   Evaluation& e = base_;
   evaluate_hbm(x, omega, gamma, jacobian != nullptr, e);
-  null_vectors(e.j, jacobian != nullptr);
+  null_vectors(e.j, jacobian != nullptr, /*refine=*/jacobian == nullptr);
   last_u_ = u;
   last_gamma_ = gamma;
   // g has the units of R_x; times the length unit it weighs like a force.

@@ -155,22 +155,9 @@ struct Scaled {
           v = product;
         });
     if (!(relative_change <= 0.1)) return false;
-    const double matrix_norm = tangent_matrix.cwiseAbs().rowwise().sum().maxCoeff();
-    solution.setZero(m + 1);
-    refinement_residual.setZero(m + 1);
-    refinement_residual(m) = 1.0;
-    for (int step = 0; step < 8; ++step) {
-      lu.solve_in_place(refinement_residual);
-      solution += refinement_residual;
-      refinement_residual.noalias() = -tangent_matrix * solution;
-      refinement_residual(m) += 1.0;
-      // Backward error of a few hundred ulps, what a fresh LU solve attains.
-      if (refinement_residual.lpNorm<Eigen::Infinity>() <= 1e-13 * matrix_norm * solution.lpNorm<Eigen::Infinity>()) {
-        out.t = solution;
-        return true;
-      }
-    }
-    return false;
+    if (!refine_last_unit_solution(lu, tangent_matrix, solution, refinement_residual)) return false;
+    out.t = solution;
+    return true;
   }
 
   // Evaluates R alone at x (a chord iteration); returns the relative residual.

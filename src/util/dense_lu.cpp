@@ -103,6 +103,23 @@ int DenseLU::determinant_sign() const {
   return sign;
 }
 
+bool refine_last_unit_solution(const DenseLU& nearby, const MatrixXd& a, VectorXd& x, VectorXd& residual, int max_steps) {
+  const Eigen::Index n = a.rows();
+  const double matrix_norm = a.cwiseAbs().rowwise().sum().maxCoeff();
+  x.setZero(n);
+  residual.setZero(n);
+  residual(n - 1) = 1.0;
+  for (int step = 0; step < max_steps; ++step) {
+    nearby.solve_in_place(residual);
+    x += residual;
+    residual.noalias() = -a * x;
+    residual(n - 1) += 1.0;
+    if (!residual.allFinite()) return false;
+    if (residual.lpNorm<Eigen::Infinity>() <= 1e-13 * matrix_norm * x.lpNorm<Eigen::Infinity>()) return true;
+  }
+  return false;
+}
+
 double estimate_norm1(Eigen::Index n, const std::function<void(VectorXd&)>& apply,
                       const std::function<void(VectorXd&)>& apply_transposed) {
   if (n == 0) return 0.0;

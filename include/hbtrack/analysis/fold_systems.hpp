@@ -102,12 +102,20 @@ class BorderedFoldSystem final : public FoldSystem {
   void accepted(const Eigen::VectorXd& u, double gamma) override;
   std::vector<Eigen::VectorXd> borders() const override { return {b_, c_}; }
   void restore_borders(const std::vector<Eigen::VectorXd>& borders) override;
+  // LUs of the bordered matrix so far (a residual from kept factors needs none).
+  int border_factorizations() const { return border_factorizations_; }
 
  private:
-  // Solves the bordered systems at the current Jacobian: v (right), w (left), g.
-  void null_vectors(const Eigen::MatrixXd& j, bool left);
+  // Solves the bordered systems at the current Jacobian: v (right), w (left), g. With
+  // `refine`, by iterative refinement from the factors of the last bordered matrix factored
+  // (a residual without the Jacobian is a chord iteration, near the point of the corrector's
+  // Newton step), and by a fresh LU when the refinement does not reach working accuracy.
+  void null_vectors(const Eigen::MatrixXd& j, bool left, bool refine = false);
+  bool refine_right_null_vector();
   Eigen::MatrixXd border_matrix_;  // [[R_x, b], [c^T, 0]], a kept workspace
-  DenseLU border_lu_;
+  DenseLU border_lu_;              // factors of the last bordered matrix factored
+  int border_factorizations_ = 0;
+  Eigen::VectorXd solution_, correction_;  // refinement workspaces
   Eigen::VectorXd b_, c_;  // borders: left and right null vectors of the last accepted point
   Eigen::VectorXd v_, w_;  // of the last evaluation
   double g_ = 0;
