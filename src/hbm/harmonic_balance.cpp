@@ -321,6 +321,44 @@ VectorXd HarmonicBalance::nonlinear_forces(const VectorXd& x, double omega) {
   return r;
 }
 
+void HarmonicBalance::nonlinear_jacobian_transpose_product(const VectorXd& x, double omega, const VectorXd& w, VectorXd& out) {
+  const int q = retained_dofs();
+  const int nc = basis_.coefficients();
+  if (x.size() != unknowns() || w.size() != unknowns())
+    throw std::invalid_argument("HarmonicBalance::nonlinear_jacobian_transpose_product: x or w has the wrong size");
+  const ScopedPhase timing(Phase::aft);
+  sample(x, omega);
+  // Block (i, j) of J_nl is diag(sigma) Gamma^-1 [diag(df_i/dx_j) Gamma + omega diag(df_i/dv_j) Gamma nabla]
+  // (add_element_blocks; product_matrix equals Gamma^-1 diag(g) Gamma for any N). Its transpose
+  // takes w_i to samples by (diag(sigma) Gamma^-1)^T, weighs them by the derivative signals and
+  // returns to coefficients by Gamma^T and (Gamma nabla)^T.
+  adjoint_x_.setZero(basis_.samples(), q);
+  adjoint_v_.setZero(basis_.samples(), q);
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    const NonlinearElement& element = *elements_[e];
+    ElementSlot& s = slots_[e];
+    const int k = element.local_dofs();
+    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    const ElementResponse& resp = s.response;
+    coeffs_.resize(nc, k);
+    for (int i = 0; i < k; ++i)
+      for (int c = 0; c < nc; ++c) coeffs_(c, i) = s.sigma(c) * w(c * q + s.columns[static_cast<size_t>(i)]);
+    adjoint_local_.noalias() = basis_.analysis().transpose() * coeffs_;
+    const bool with_v = resp.dforce_dv.size() > 0;
+    for (int jd = 0; jd < k; ++jd) {
+      const int column = s.columns[static_cast<size_t>(jd)];
+      for (int i = 0; i < k; ++i) {
+        adjoint_x_.col(column).array() += resp.dforce_dx.col(i + k * jd).array() * adjoint_local_.col(i).array();
+        if (with_v) adjoint_v_.col(column).array() += resp.dforce_dv.col(i + k * jd).array() * adjoint_local_.col(i).array();
+      }
+    }
+  }
+  out.resize(unknowns());
+  Eigen::Map<MatrixXd> out_coeffs(out.data(), q, nc);
+  out_coeffs.noalias() = adjoint_x_.transpose() * basis_.synthesis();
+  out_coeffs.noalias() += omega * (adjoint_v_.transpose() * basis_.derivative_synthesis());
+}
+
 }  // namespace hbtrack
 
 namespace hbtrack {
