@@ -101,7 +101,7 @@ MatrixXd condensed_linear_jacobian(HarmonicBalance& hbm, double omega) {
 
 }  // namespace
 
-TEST_P(HarmonicBalanceDerivatives, NonlinearJacobianTransposeProductMatchesTheAssembledJacobian) {
+TEST_P(HarmonicBalanceDerivatives, NonlinearAdjointProductsMatchTheAssembledDerivatives) {
   const Variant v = GetParam();
   test::ContactFixture f = test::contact_fixture(v.general_damping, v.lanczos);
   HarmonicBalanceOptions o;
@@ -118,7 +118,7 @@ TEST_P(HarmonicBalanceDerivatives, NonlinearJacobianTransposeProductMatchesTheAs
   const VectorXd w = VectorXd::Random(hbm.unknowns());
   const VectorXd expected = nonlinear.transpose() * w;
   VectorXd product;
-  hbm.nonlinear_jacobian_transpose_product(x, omega, w, product);
+  const double w_dot_omega_derivative = hbm.nonlinear_adjoint_products(x, omega, w, product);
   // Both sides are the same sums in another order (product_matrix equals Gamma^-1 diag(g) Gamma
   // for any N), so they differ by round-off only: a few ulps of the largest entries, far below 1e-12.
   EXPECT_GT(expected.cwiseAbs().maxCoeff(), 1.0) << "the contact state must make J_nl non-trivial";
@@ -130,6 +130,19 @@ TEST_P(HarmonicBalanceDerivatives, NonlinearJacobianTransposeProductMatchesTheAs
   double friction_part = 0.0;
   for (int c = 0; c < hbm.basis().coefficients(); ++c) friction_part = std::max(friction_part, std::abs(expected(c * q + friction_dof)));
   EXPECT_GT(friction_part, 1e-2 * expected.cwiseAbs().maxCoeff());
+
+  // w . df_nl/d(omega): without forcing, R_omega less the linear part (dZr/d(omega)) x. Both
+  // sides are sums of terms up to `scale` (mostly the linear part's), so they agree to round-off
+  // of it; the nonlinear part must stand far above that tolerance.
+  double& amplitude = hbm.parameters().value(hbm.amplitude_parameter());
+  amplitude = 0.0;
+  VectorXd r_omega;
+  hbm.evaluate(x, omega, r, nullptr, &r_omega);
+  const VectorXd linear = hbm.linear_omega_derivative(x, omega);
+  const double expected_omega = w.dot(r_omega - linear);
+  const double scale = w.cwiseAbs().dot(r_omega.cwiseAbs() + linear.cwiseAbs());
+  EXPECT_GT(std::abs(expected_omega), 1e-6 * scale) << "the velocity dependence must make df_nl/domega non-trivial";
+  EXPECT_LT(std::abs(w_dot_omega_derivative - expected_omega), 1e-12 * scale);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllVariants, HarmonicBalanceDerivatives,

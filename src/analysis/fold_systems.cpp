@@ -76,12 +76,12 @@ void FoldSystem::along_left(const VectorXd& x, double omega, double gamma, const
   const double eps = difference_step(x, d);
   const VectorXd xs = x + eps * d;
   hbm_.parameters().value(parameter_) = gamma;
-  // R_x = Zr(omega) + J_nl(x): the condensed linear part cancels in the difference.
-  hbm_.nonlinear_jacobian_transpose_product(x, omega, w, base_product_);
-  hbm_.nonlinear_jacobian_transpose_product(xs, omega, w, out.jacobian_transpose_w);
+  // R_x = Zr(omega) + J_nl(x) and R_omega = Zr'(omega) x - amplitude Fr'(omega) + df_nl/d(omega):
+  // only the nonlinear forces' parts are differenced, the linear one along d is exact.
+  const double base_omega = hbm_.nonlinear_adjoint_products(x, omega, w, base_product_);
+  const double shifted_omega = hbm_.nonlinear_adjoint_products(xs, omega, w, out.jacobian_transpose_w);
   out.jacobian_transpose_w = (out.jacobian_transpose_w - base_product_) / eps;
-  hbm_.evaluate(xs, omega, shifted_.r, nullptr, &shifted_.r_omega);
-  out.omega = w.dot(shifted_.r_omega - base.r_omega) / eps;
+  out.omega = (shifted_omega - base_omega) / eps + w.dot(hbm_.linear_omega_derivative(d, omega));
   parameter_derivative_change(xs, omega, eps, base, shifted_.r_gamma);
   out.gamma = w.dot(shifted_.r_gamma);
 }

@@ -72,9 +72,9 @@ class FoldSystem : public ContinuationProblem {
   void parameter_derivative_change(const Eigen::VectorXd& xs, double omega, double eps, const Evaluation& base,
                                    Eigen::VectorXd& out);
   // The same derivatives seen through a left vector w, all the bordered system needs:
-  // d/de of R_x(x + e d)^T w, w . R_omega and w . R_gamma. Only the nonlinear forces' part of
-  // R_x depends on x, and its transposed product is formed in the time domain, so no q x q
-  // Jacobian is assembled at x + e d.
+  // d/de of R_x(x + e d)^T w, w . R_omega and w . R_gamma. Only the nonlinear forces' parts of
+  // R_x and R_omega are differenced, and their products with w are formed in the time domain,
+  // so no q x q Jacobian is assembled at x + e d.
   struct LeftSecondDerivatives {
     Eigen::VectorXd jacobian_transpose_w;
     double omega = 0, gamma = 0;
