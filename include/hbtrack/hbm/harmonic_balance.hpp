@@ -102,7 +102,8 @@ class HarmonicBalance {
   Eigen::MatrixXd x_samples_, v_unit_samples_;
   Eigen::MatrixXd block_, block_v_, coeffs_, coeffs_v_;
   // Workspace of nonlinear_adjoint_products: samples per retained dof (N x q) of the terms
-  // paired with the displacement and with the unit-frequency velocity.
+  // paired with the displacement and with the unit-frequency velocity, and an element's samples
+  // of w (N x k). The element's d f/d(omega) samples (N x k) serve evaluate too.
   Eigen::MatrixXd adjoint_x_, adjoint_v_, adjoint_local_, omega_samples_;
 };
 
