@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/io/case_file.hpp"
@@ -56,19 +59,28 @@ std::vector<FoldCurvePoint> leg_ends(const FoldTrackingResult& r) {
   return ends;
 }
 
-TEST(FoldSystems, JacobiansMatchFiniteDifferencesForEveryParameterKind) {
-  // Two-dof contact: amplitude (linear, no x dependence) and clearance (inside the contact law).
-  CaseDefinition c = load_case(test::source_path("examples/two_dof_contact.toml"), {"harmonic_balance.harmonics=3"});
-  HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
-  const double omega = 1.1;
-  const VectorXd x = hbm.linear_solution(omega) * 1.3;
+const FoldScales kUnitScales{0.1, 1.0, 0.1, 1.0};
+
+CaseDefinition two_dof_contact_case() {
+  return load_case(test::source_path("examples/two_dof_contact.toml"), {"harmonic_balance.harmonics=3"});
+}
+
+// Approximate right and left null vectors of R_x at (x, omega): the fold systems' borders.
+void null_vectors_at(HarmonicBalance& hbm, const VectorXd& x, double omega, VectorXd& right, VectorXd& left) {
   VectorXd r;
   MatrixXd j;
   hbm.evaluate(x, omega, r, &j, nullptr);
-  VectorXd right, left;
   approximate_null_vectors(j, right, left);
-  const FoldScales scales{0.1, 1.0, 0.1, 1.0};
-  for (const char* name : {"amplitude", "clearance"}) {
+}
+
+// Both fold systems' Jacobians and parameter derivatives against central differences of their
+// residuals (borders fixed), at (x, omega) with borders from R_x's approximate null vectors.
+void expect_fold_jacobians_match_finite_differences(HarmonicBalance& hbm, const VectorXd& x, double omega,
+                                                    const std::vector<std::string>& parameters) {
+  VectorXd right, left;
+  null_vectors_at(hbm, x, omega, right, left);
+  const FoldScales& scales = kUnitScales;
+  for (const std::string& name : parameters) {
     const int p = hbm.parameters().find(name);
     const double gamma = hbm.parameters().value(p);
     BorderedFoldSystem bordered(hbm, p, scales);
@@ -94,22 +106,43 @@ TEST(FoldSystems, JacobiansMatchFiniteDifferencesForEveryParameterKind) {
   }
 }
 
+TEST(FoldSystems, JacobiansMatchFiniteDifferencesForEveryParameterKind) {
+  // Two-dof contact: amplitude (linear, no x dependence) and clearance (inside the contact law).
+  CaseDefinition c = two_dof_contact_case();
+  HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+  const double omega = 1.1;
+  expect_fold_jacobians_match_finite_differences(hbm, hbm.linear_solution(omega) * 1.3, omega, {"amplitude", "clearance"});
+}
+
+TEST(FoldSystems, JacobiansMatchFiniteDifferencesWithFrictionAndLanczosFiltering) {
+  // Velocity-dependent forces (friction on the tip contact and a tanh friction element) and
+  // Lanczos factors: the bordered system's products with w go through all of them.
+  test::ContactFixture f = test::contact_fixture(false, 1.0);
+  HarmonicBalanceOptions o;
+  o.harmonics = 3;
+  o.samples = 64;
+  HarmonicBalance hbm(f.model, f.elements, f.parameters, o);
+  const double omega = 1.3;
+  std::srand(5);
+  VectorXd x = 0.01 * VectorXd::Random(hbm.unknowns());
+  const int q = hbm.retained_dofs();
+  x(1 * q + 0) = 0.08;  // the tip's radial dof enters contact over part of the period
+  x(2 * q + 1) = 0.05;
+  expect_fold_jacobians_match_finite_differences(hbm, x, omega, {"amplitude", "mu"});
+}
+
 TEST(FoldSystems, BorderedResidualFromKeptFactorsEqualsAFreshFactorization) {
   // A residual without the Jacobian (a chord iteration) refines the bordered null vector from the
   // factors of the last full evaluation; a fresh system factors the same matrix anew.
-  CaseDefinition c = load_case(test::source_path("examples/two_dof_contact.toml"), {"harmonic_balance.harmonics=3"});
+  CaseDefinition c = two_dof_contact_case();
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const double omega = 1.1;
   const VectorXd x = hbm.linear_solution(omega) * 1.3;
-  VectorXd r;
-  MatrixXd j;
-  hbm.evaluate(x, omega, r, &j, nullptr);
   VectorXd right, left;
-  approximate_null_vectors(j, right, left);
-  const FoldScales scales{0.1, 1.0, 0.1, 1.0};
+  null_vectors_at(hbm, x, omega, right, left);
   const int p = hbm.parameters().find("clearance");
   const double gamma = hbm.parameters().value(p);
-  BorderedFoldSystem kept(hbm, p, scales), fresh(hbm, p, scales);
+  BorderedFoldSystem kept(hbm, p, kUnitScales), fresh(hbm, p, kUnitScales);
   const VectorXd u = kept.start(x, omega, right, left);
   fresh.start(x, omega, right, left);
   VectorXd r_full, r_gamma;

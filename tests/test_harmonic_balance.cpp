@@ -1,7 +1,10 @@
 // The assembled harmonic balance residual: analytic Jacobian, d/d(omega) and d/d(parameter)
-// against finite differences, with and without condensation and Lanczos filtering; condensed and
-// full systems agree.
+// against finite differences, with and without condensation and Lanczos filtering; the
+// time-domain product J_nl^T w against the assembled Jacobian; condensed and full systems agree.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include "hbtrack/continuation/continuation.hpp"
 #include "hbtrack/analysis/nfrc.hpp"
@@ -74,6 +77,72 @@ TEST_P(HarmonicBalanceDerivatives, MatchFiniteDifferences) {
     EXPECT_GT(fd.cwiseAbs().maxCoeff(), 1e-6) << "the state must make dR/d" << name << " non-trivial";
     EXPECT_LT(test::relative_error(analytic, fd), kTolerance) << "dR/d" << name;
   }
+}
+
+namespace {
+
+// The condensed linear part Zr(omega) column by column: with the forcing off, R - f_nl = Zr x
+// exactly (to round-off), whatever x. Columns at a small x keep the contact open.
+MatrixXd condensed_linear_jacobian(HarmonicBalance& hbm, double omega) {
+  double& amplitude = hbm.parameters().value(hbm.amplitude_parameter());
+  const double saved = amplitude;
+  amplitude = 0.0;
+  const double scale = 1e-3;
+  MatrixXd zr(hbm.unknowns(), hbm.unknowns());
+  for (int c = 0; c < hbm.unknowns(); ++c) {
+    const VectorXd x = scale * VectorXd::Unit(hbm.unknowns(), c);
+    VectorXd r;
+    hbm.evaluate(x, omega, r);
+    zr.col(c) = (r - hbm.nonlinear_forces(x, omega)) / scale;
+  }
+  amplitude = saved;
+  return zr;
+}
+
+}  // namespace
+
+TEST_P(HarmonicBalanceDerivatives, NonlinearAdjointProductsMatchTheAssembledDerivatives) {
+  const Variant v = GetParam();
+  test::ContactFixture f = test::contact_fixture(v.general_damping, v.lanczos);
+  HarmonicBalanceOptions o;
+  o.harmonics = 4;
+  o.samples = 64;
+  o.condensation = v.condensation;
+  HarmonicBalance hbm(f.model, f.elements, f.parameters, o);
+  const double omega = 1.3;
+  const VectorXd x = contact_state(hbm);
+  VectorXd r;
+  MatrixXd jac;
+  hbm.evaluate(x, omega, r, &jac);
+  const MatrixXd nonlinear = jac - condensed_linear_jacobian(hbm, omega);
+  const VectorXd w = VectorXd::Random(hbm.unknowns());
+  const VectorXd expected = nonlinear.transpose() * w;
+  VectorXd product;
+  const double w_dot_omega_derivative = hbm.nonlinear_adjoint_products(x, omega, w, product);
+  // Both sides are the same sums in another order (product_matrix equals Gamma^-1 diag(g) Gamma
+  // for any N), so they differ by round-off only: a few ulps of the largest entries, far below 1e-12.
+  EXPECT_GT(expected.cwiseAbs().maxCoeff(), 1.0) << "the contact state must make J_nl non-trivial";
+  EXPECT_LT(test::relative_error(product, expected), 1e-12);
+  // The velocity terms are checked too: the friction dof's entries come from them alone (its
+  // element depends on velocity only and shares the dof with no other element).
+  const int q = hbm.retained_dofs();
+  const auto friction_dof = std::find(hbm.retained().begin(), hbm.retained().end(), 5) - hbm.retained().begin();
+  double friction_part = 0.0;
+  for (int c = 0; c < hbm.basis().coefficients(); ++c) friction_part = std::max(friction_part, std::abs(expected(c * q + friction_dof)));
+  EXPECT_GT(friction_part, 1e-2 * expected.cwiseAbs().maxCoeff());
+
+  // w . df_nl/d(omega): without forcing, R_omega less the linear part (dZr/d(omega)) x. Both
+  // sides are sums of terms up to `scale` (mostly the linear part's), so they agree to round-off
+  // of it; the nonlinear part must stand far above that tolerance.
+  double& amplitude = hbm.parameters().value(hbm.amplitude_parameter());
+  amplitude = 0.0;
+  VectorXd r_omega;
+  hbm.evaluate(x, omega, r, nullptr, &r_omega);
+  const VectorXd linear = hbm.linear_omega_derivative(x, omega);
+  const double expected_omega = w.dot(r_omega - linear);
+  const double scale = w.cwiseAbs().dot(r_omega.cwiseAbs() + linear.cwiseAbs());
+  EXPECT_GT(std::abs(expected_omega), 1e-6 * scale) << "the velocity dependence must make df_nl/domega non-trivial";
+  EXPECT_LT(std::abs(w_dot_omega_derivative - expected_omega), 1e-12 * scale);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllVariants, HarmonicBalanceDerivatives,

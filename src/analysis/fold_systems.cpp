@@ -12,6 +12,9 @@ using Eigen::VectorXd;
 
 namespace {
 constexpr double kEta = 1e-6;  // relative finite-difference step of the second derivatives (paper)
+
+// The forward-difference step along d at x (paper eq 43).
+double difference_step(const VectorXd& x, const VectorXd& d) { return kEta * (x.norm() / d.norm() + kEta); }
 }  // namespace
 
 void approximate_null_vectors(const MatrixXd& j, VectorXd& right, VectorXd& left) {
@@ -49,18 +52,38 @@ void FoldSystem::evaluate_hbm(const VectorXd& x, double omega, double gamma, boo
   if (derivatives) e.r_gamma = hbm_.parameter_derivative(x, omega, parameter_);
 }
 
+void FoldSystem::parameter_derivative_change(const VectorXd& xs, double omega, double eps, const Evaluation& base,
+                                             VectorXd& out) {
+  if (linear_in_parameter_)
+    out.setZero(q_);
+  else
+    out = (hbm_.parameter_derivative(xs, omega, parameter_) - base.r_gamma) / eps;
+}
+
 void FoldSystem::along(const VectorXd& x, double omega, double gamma, const VectorXd& d, const Evaluation& base,
                        SecondDerivatives& out) {
-  const double eps = kEta * (x.norm() / d.norm() + kEta);
+  const double eps = difference_step(x, d);
   const VectorXd xs = x + eps * d;
   hbm_.parameters().value(parameter_) = gamma;
   hbm_.evaluate(xs, omega, shifted_.r, &shifted_.j, &shifted_.r_omega);
   out.j = (shifted_.j - base.j) / eps;
   out.r_omega = (shifted_.r_omega - base.r_omega) / eps;
-  if (linear_in_parameter_)
-    out.r_gamma.setZero(q_);
-  else
-    out.r_gamma = (hbm_.parameter_derivative(xs, omega, parameter_) - base.r_gamma) / eps;
+  parameter_derivative_change(xs, omega, eps, base, out.r_gamma);
+}
+
+void FoldSystem::along_left(const VectorXd& x, double omega, double gamma, const VectorXd& d, const VectorXd& w,
+                            const Evaluation& base, LeftSecondDerivatives& out) {
+  const double eps = difference_step(x, d);
+  const VectorXd xs = x + eps * d;
+  hbm_.parameters().value(parameter_) = gamma;
+  // R_x = Zr(omega) + J_nl(x) and R_omega = Zr'(omega) x - amplitude Fr'(omega) + df_nl/d(omega):
+  // only the nonlinear forces' parts are differenced, the linear one along d is exact.
+  const double base_omega = hbm_.nonlinear_adjoint_products(x, omega, w, base_product_);
+  const double shifted_omega = hbm_.nonlinear_adjoint_products(xs, omega, w, out.jacobian_transpose_w);
+  out.jacobian_transpose_w = (out.jacobian_transpose_w - base_product_) / eps;
+  out.omega = (shifted_omega - base_omega) / eps + w.dot(hbm_.linear_omega_derivative(d, omega));
+  parameter_derivative_change(xs, omega, eps, base, shifted_.r_gamma);
+  out.gamma = w.dot(shifted_.r_gamma);
 }
 
 // ---- extended system ---------------------------------------------------------------------
@@ -160,18 +183,18 @@ void BorderedFoldSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, 
   r.head(q_) = e.r;
   r(q_) = length * g_;
   if (!jacobian) return;
-  // g_z = -w^T (R_x)_z v, all from the second derivatives along v.
-  SecondDerivatives& s = second_;
-  along(x, omega, gamma, v_, e, s);
+  // g_z = -w^T (R_x)_z v, all from the second derivatives along v seen through w.
+  LeftSecondDerivatives& s = left_second_;
+  along_left(x, omega, gamma, v_, w_, e, s);
   jacobian->resize(size(), size());
   jacobian->topLeftCorner(q_, q_) = e.j;
   jacobian->topRightCorner(q_, 1) = e.r_omega;
-  jacobian->bottomLeftCorner(1, q_) = -length * (w_.transpose() * s.j);
-  (*jacobian)(q_, q_) = -length * w_.dot(s.r_omega);
+  jacobian->bottomLeftCorner(1, q_) = -length * s.jacobian_transpose_w.transpose();
+  (*jacobian)(q_, q_) = -length * s.omega;
   if (r_gamma) {
     r_gamma->resize(size());
     r_gamma->head(q_) = e.r_gamma;
-    (*r_gamma)(q_) = -length * w_.dot(s.r_gamma);
+    (*r_gamma)(q_) = -length * s.gamma;
   }
 }
 

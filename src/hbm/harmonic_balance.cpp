@@ -114,6 +114,18 @@ VectorXcd HarmonicBalance::harmonic(const VectorXd& x, int j, int dofs) const {
   return x.segment((2 * j - 1) * dofs, dofs).cast<cd>() - cd(0, 1) * x.segment(2 * j * dofs, dofs).cast<cd>();
 }
 
+void HarmonicBalance::omega_derivative_samples(const ElementSlot& s, MatrixXd& df) const {
+  // d f/d omega = (df/dv) v/omega + explicit dependence; v/omega = the unit-frequency velocity.
+  const ElementResponse& resp = s.response;
+  const int k = static_cast<int>(s.columns.size());
+  df.setZero(resp.force.rows(), k);
+  if (resp.dforce_dv.size() > 0)
+    for (int i = 0; i < k; ++i)
+      for (int jd = 0; jd < k; ++jd)
+        df.col(i).array() += resp.dforce_dv.col(i + k * jd).array() * v_unit_samples_.col(s.columns[static_cast<size_t>(jd)]).array();
+  if (resp.dforce_domega.size() > 0) df += resp.dforce_domega;
+}
+
 void HarmonicBalance::add_condensed_linear_part(const VectorXd& x, VectorXd& r, MatrixXd* jacobian, VectorXd* r_omega) {
   const int q = retained_dofs();
   const double amplitude = parameters_.value(amplitude_index_);
@@ -212,15 +224,8 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
       for (int c = 0; c < nc; ++c) r(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
 
     if (r_omega) {
-      // d f/d omega = (df/dv) v/omega + explicit dependence; v/omega = the unit-frequency velocity.
-      MatrixXd df(resp.force.rows(), k);
-      df.setZero();
-      if (resp.dforce_dv.size() > 0)
-        for (int i = 0; i < k; ++i)
-          for (int jd = 0; jd < k; ++jd)
-            df.col(i).array() += resp.dforce_dv.col(i + k * jd).array() * v_unit_samples_.col(s.columns[static_cast<size_t>(jd)]).array();
-      if (resp.dforce_domega.size() > 0) df += resp.dforce_domega;
-      multiply(basis_.analysis(), df, coeffs_);
+      omega_derivative_samples(s, omega_samples_);
+      multiply(basis_.analysis(), omega_samples_, coeffs_);
       for (int i = 0; i < k; ++i)
         for (int c = 0; c < nc; ++c) (*r_omega)(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
     }
@@ -321,6 +326,65 @@ VectorXd HarmonicBalance::nonlinear_forces(const VectorXd& x, double omega) {
       for (int c = 0; c < basis_.coefficients(); ++c) r(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs(c, i);
   }
   return r;
+}
+
+double HarmonicBalance::nonlinear_adjoint_products(const VectorXd& x, double omega, const VectorXd& w,
+                                                   VectorXd& jacobian_transpose_w) {
+  const int q = retained_dofs();
+  const int nc = basis_.coefficients();
+  if (x.size() != unknowns() || w.size() != unknowns())
+    throw std::invalid_argument("HarmonicBalance::nonlinear_adjoint_products: x or w has the wrong size");
+  const ScopedPhase timing(Phase::aft);
+  sample(x, omega);
+  // Block (i, j) of J_nl is diag(sigma) Gamma^-1 [diag(df_i/dx_j) Gamma + omega diag(df_i/dv_j) Gamma nabla]
+  // (add_element_blocks; product_matrix equals Gamma^-1 diag(g) Gamma for any N). Its transpose
+  // takes w_i to samples by (diag(sigma) Gamma^-1)^T, weighs them by the derivative signals and
+  // returns to coefficients by Gamma^T and (Gamma nabla)^T. The same samples of w give
+  // w . diag(sigma) Gamma^-1 df/d(omega) as a dot product in time.
+  adjoint_x_.setZero(basis_.samples(), q);
+  adjoint_v_.setZero(basis_.samples(), q);
+  double w_dot_omega_derivative = 0.0;
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    const NonlinearElement& element = *elements_[e];
+    ElementSlot& s = slots_[e];
+    const int k = element.local_dofs();
+    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    const ElementResponse& resp = s.response;
+    coeffs_.resize(nc, k);
+    for (int i = 0; i < k; ++i)
+      for (int c = 0; c < nc; ++c) coeffs_(c, i) = s.sigma(c) * w(c * q + s.columns[static_cast<size_t>(i)]);
+    adjoint_local_.noalias() = basis_.analysis().transpose() * coeffs_;
+    omega_derivative_samples(s, omega_samples_);
+    w_dot_omega_derivative += (adjoint_local_.array() * omega_samples_.array()).sum();
+    const bool with_v = resp.dforce_dv.size() > 0;
+    for (int jd = 0; jd < k; ++jd) {
+      const int column = s.columns[static_cast<size_t>(jd)];
+      for (int i = 0; i < k; ++i) {
+        adjoint_x_.col(column).array() += resp.dforce_dx.col(i + k * jd).array() * adjoint_local_.col(i).array();
+        if (with_v) adjoint_v_.col(column).array() += resp.dforce_dv.col(i + k * jd).array() * adjoint_local_.col(i).array();
+      }
+    }
+  }
+  jacobian_transpose_w.resize(unknowns());
+  Eigen::Map<MatrixXd> out_coeffs(jacobian_transpose_w.data(), q, nc);
+  out_coeffs.noalias() = adjoint_x_.transpose() * basis_.synthesis();
+  out_coeffs.noalias() += omega * (adjoint_v_.transpose() * basis_.derivative_synthesis());
+  return w_dot_omega_derivative;
+}
+
+VectorXd HarmonicBalance::linear_omega_derivative(const VectorXd& d, double omega) {
+  const int q = retained_dofs();
+  if (d.size() != unknowns()) throw std::invalid_argument("HarmonicBalance::linear_omega_derivative: d has the wrong size");
+  const ScopedPhase timing(Phase::jacobian);
+  condenser_->update(omega);
+  VectorXd out = VectorXd::Zero(unknowns());
+  for (int j = 0; j <= options_.harmonics; ++j) {
+    // Amplitude 0: without the forcing term, omega_derivative is linear in z.
+    const VectorXcd dc = condenser_->omega_derivative(j, harmonic(d, j, q), 0.0);
+    out.segment(j == 0 ? 0 : (2 * j - 1) * q, q) += dc.real();
+    if (j > 0) out.segment(2 * j * q, q) -= dc.imag();
+  }
+  return out;
 }
 
 }  // namespace hbtrack

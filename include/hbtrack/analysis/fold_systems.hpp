@@ -11,7 +11,8 @@
 //
 // Second derivatives of R come from one forward difference along the null vector (eqs 30-43:
 // eps = eta (|x| / |d| + eta), eta = 1e-6): d/de R_x(x + e d) is both (R_x d)_x and, by the
-// symmetry of second derivatives, the gradient of w^T R_x d. They only shape Newton's
+// symmetry of second derivatives, the gradient of w^T R_x d (the bordered system differences
+// only that gradient, a transposed product cheaper than a Jacobian). They only shape Newton's
 // Jacobian; the residual (the fold condition itself) is exact. The amplitude enters R
 // linearly and independently of x, so its mixed derivative is exactly zero and skipped.
 #include <Eigen/Dense>
@@ -67,9 +68,24 @@ class FoldSystem : public ContinuationProblem {
   };
   void along(const Eigen::VectorXd& x, double omega, double gamma, const Eigen::VectorXd& d, const Evaluation& base,
              SecondDerivatives& out);
+  // (R_gamma(xs) - R_gamma(x)) / eps with R_gamma(x) in `base`; zero for the amplitude.
+  void parameter_derivative_change(const Eigen::VectorXd& xs, double omega, double eps, const Evaluation& base,
+                                   Eigen::VectorXd& out);
+  // The same derivatives seen through a left vector w, all the bordered system needs:
+  // d/de of R_x(x + e d)^T w, w . R_omega and w . R_gamma. Only the nonlinear forces' parts of
+  // R_x and R_omega are differenced, and their products with w are formed in the time domain,
+  // so no q x q Jacobian is assembled at x + e d.
+  struct LeftSecondDerivatives {
+    Eigen::VectorXd jacobian_transpose_w;
+    double omega = 0, gamma = 0;
+  };
+  void along_left(const Eigen::VectorXd& x, double omega, double gamma, const Eigen::VectorXd& d, const Eigen::VectorXd& w,
+                  const Evaluation& base, LeftSecondDerivatives& out);
   // Workspaces reused by every evaluation (q x q matrices: no allocation per Newton iteration).
   Evaluation base_, shifted_;
   SecondDerivatives second_;
+  LeftSecondDerivatives left_second_;
+  Eigen::VectorXd base_product_;  // J_nl(x)^T w in along_left
 
   HarmonicBalance& hbm_;
   int parameter_;

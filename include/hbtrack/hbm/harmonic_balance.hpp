@@ -56,6 +56,15 @@ class HarmonicBalance {
   Eigen::VectorXd linear_solution(double omega);
   // Nonlinear force harmonics on the retained dofs (unknown layout), Lanczos filter included.
   Eigen::VectorXd nonlinear_forces(const Eigen::VectorXd& x, double omega);
+  // Products of w with the nonlinear forces' derivatives, from one set of time samples and
+  // without forming a q x q matrix (about one residual evaluation):
+  // jacobian_transpose_w = J_nl(x, omega)^T w, J_nl = d f_nl/dx the nonlinear forces' part of
+  // dR/dx (Lanczos filter and velocity dependence included); returns w . d f_nl/d(omega).
+  double nonlinear_adjoint_products(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& w,
+                                    Eigen::VectorXd& jacobian_transpose_w);
+  // d/d(omega) of the condensed linear stiffness applied to d, (dZr/d(omega)) d: the part of
+  // R_omega that depends on x, without the forcing's.
+  Eigen::VectorXd linear_omega_derivative(const Eigen::VectorXd& d, double omega);
   // Matrices of Hill's quadratic eigenproblem (l^2 D2 + l D1 + J) p = 0 on the full,
   // uncondensed system (every dof, n(2H+1), harmonic-major), at the solution x (unknown layout):
   //   jacobian = dR_full/dx_full,  damping = D1 = 2 w (nabla x M) + I x C + Gamma^-1 (df/dv) Gamma.
@@ -77,6 +86,8 @@ class HarmonicBalance {
   void add_condensed_linear_part(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
                                  Eigen::VectorXd* r_omega);
   Eigen::VectorXcd harmonic(const Eigen::VectorXd& x, int j, int dofs) const;
+  // d f/d(omega) samples (N x k) of an evaluated element: velocity and explicit dependence.
+  void omega_derivative_samples(const ElementSlot& slot, Eigen::MatrixXd& df) const;
 
   StructuralModel model_;
   ElementList elements_;
@@ -91,6 +102,10 @@ class HarmonicBalance {
   Eigen::MatrixXd x_samples_, v_unit_samples_;
   Eigen::MatrixXd coefficient_rows_;  // the harmonics of x, (2H+1) x q: one row per coefficient
   Eigen::MatrixXd block_, block_v_, coeffs_, coeffs_v_;
+  // Workspace of nonlinear_adjoint_products: samples per retained dof (N x q) of the terms
+  // paired with the displacement and with the unit-frequency velocity, and an element's samples
+  // of w (N x k). The element's d f/d(omega) samples (N x k) serve evaluate too.
+  Eigen::MatrixXd adjoint_x_, adjoint_v_, adjoint_local_, omega_samples_;
 };
 
 }  // namespace hbtrack
