@@ -38,18 +38,22 @@ VectorXd contact_state(HarmonicBalance& hbm) {
 constexpr double kStep = 1e-7;
 constexpr double kTolerance = 1e-6;
 
-}  // namespace
-
-class HarmonicBalanceDerivatives : public ::testing::TestWithParam<Variant> {};
-
-TEST_P(HarmonicBalanceDerivatives, MatchFiniteDifferences) {
-  const Variant v = GetParam();
+// The contact fixture of a variant, at H = 4 and N = 64.
+HarmonicBalance variant_model(const Variant& v) {
   test::ContactFixture f = test::contact_fixture(v.general_damping, v.lanczos);
   HarmonicBalanceOptions o;
   o.harmonics = 4;
   o.samples = 64;
   o.condensation = v.condensation;
-  HarmonicBalance hbm(f.model, f.elements, f.parameters, o);
+  return HarmonicBalance(f.model, f.elements, f.parameters, o);
+}
+
+}  // namespace
+
+class HarmonicBalanceDerivatives : public ::testing::TestWithParam<Variant> {};
+
+TEST_P(HarmonicBalanceDerivatives, MatchFiniteDifferences) {
+  HarmonicBalance hbm = variant_model(GetParam());
   const double omega = 1.3;
   const VectorXd x = contact_state(hbm);
 
@@ -102,13 +106,7 @@ MatrixXd condensed_linear_jacobian(HarmonicBalance& hbm, double omega) {
 }  // namespace
 
 TEST_P(HarmonicBalanceDerivatives, NonlinearAdjointProductsMatchTheAssembledDerivatives) {
-  const Variant v = GetParam();
-  test::ContactFixture f = test::contact_fixture(v.general_damping, v.lanczos);
-  HarmonicBalanceOptions o;
-  o.harmonics = 4;
-  o.samples = 64;
-  o.condensation = v.condensation;
-  HarmonicBalance hbm(f.model, f.elements, f.parameters, o);
+  HarmonicBalance hbm = variant_model(GetParam());
   const double omega = 1.3;
   const VectorXd x = contact_state(hbm);
   VectorXd r;
