@@ -132,8 +132,8 @@ int main(int argc, char** argv) {
   for (const Run& r : nfrc_runs) print_row(r, per_point);
   for (const Run& r : tracking) print_row(r, per_point);
   std::printf("\nIterations: the corrector's, Newton and chord (in parentheses: chord iterations, a residual and a solve with "
-              "kept factors each). LUs: the continuation's dense factorizations (the bordered fold system factors its "
-              "own bordered matrix at every residual besides).\n");
+              "kept factors each). LUs: the continuation's dense factorizations (the bordered fold system also factors "
+              "its own bordered matrix at each Newton iteration; its chord residuals refine from those factors).\n");
   std::printf("\nStability (Hill's method, %zu points sampled, %d unstable): %.0f ms per point, %.2f x the continuation's cost per point.\n",
               hill_times.size(), unstable, 1e3 * hill_point, hill_point / per_point);
   return 0;
