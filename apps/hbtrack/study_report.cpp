@@ -82,7 +82,13 @@ void simulation_section(std::ostream& out, const json& s) {
   const json& m = s["simulation"];
   out << "## Time integration of the resonance\n\nFrom the HBM state of NFRC point " << m.value("point", 0) << " (omega = "
       << num(m.value("omega", 0.0), "%.2f") << " rad/s), " << m.value("periods", 0) << " periods of HHT-alpha Newmark in "
-      << num(m.value("wall_s", 0.0), "%.1f") << " s ([simulate/](simulate/)).\n\n| quantity | HBM | simulation | difference |\n|---|---|---|---|\n";
+      << num(m.value("wall_s", 0.0), "%.1f") << " s ([simulate/](simulate/)).";
+  if (!m.value("converged", false))
+    out << " Not periodic to `simulate`'s criterion within these periods (last period-to-period change "
+        << num(m.value("last_change", 0.0), "%.1e")
+        << "; a lightly damped resonance forgets its start slowly): the differences below include what is left of the "
+           "transient, and the step's exit code is 1.";
+  out << "\n\n| quantity | HBM | simulation | difference |\n|---|---|---|---|\n";
   for (const auto& o : m["outputs"])
     out << "| " << o.value("name", "") << " | " << num(o.value("hbm", 0.0), "%.5g") << " | " << num(o.value("simulation", 0.0), "%.5g") << " | "
         << num(100 * o.value("relative_difference", 0.0), "%+.2f") << " % |\n";

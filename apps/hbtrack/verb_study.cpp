@@ -318,6 +318,7 @@ class Study {
     const std::vector<double>& row = b.rows[static_cast<size_t>(point)];
     const json s = read_summary(dir_ + "/simulate");
     json cmp = {{"point", point}, {"omega", row[0]}, {"periods", s.value("periods", 0)}, {"converged", s.value("converged", false)},
+                {"last_change", s.value("last_change", 0.0)},
                 {"wall_s", s.contains("timings") ? s["timings"].value("wall_s", 0.0) : 0.0}, {"outputs", json::array()}};
     for (const auto& out : c_.outputs)
       for (const char* kind : {"max_", "min_", "h1_"}) {

@@ -179,7 +179,8 @@ struct Scaled {
   // With options.reuse_factorization, an iteration after the first keeps the factors of the
   // last Newton matrix (a chord step: one residual and an O(m^2) solve instead of a Jacobian
   // and an O(m^3) factorization) as long as each step shrinks the error by options.contraction;
-  // a step that does not is taken again from where it started, as a Newton step.
+  // after a step that does not, the corrector goes on as Newton, from where that step started
+  // when it made the error worse.
   bool correct(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere,
                const ContinuationOptions& options, int& iterations) {
     newton_factors_current = false;
