@@ -206,4 +206,21 @@ TEST(TrackCli, BadFlagsFailWithOneLineNamingTheFlag) {
   EXPECT_NE(not_track.err.find("options.tracking.parameter missing"), std::string::npos) << not_track.err;
 }
 
+TEST(TrackCli, FailureOnANonSmoothLawNamesTheElementAndTheLaw) {
+  // The two-dof example's unilateral spring is C0: the fold systems cannot converge on it, and
+  // the one-line error says which element is to blame and what to use instead.
+  const std::string case_file = hbtrack::test::source_path("examples/two_dof_contact.toml");
+  const fs::path base = fs::temp_directory_path() / ("hbtrack_track_c0_" + std::to_string(getpid()));
+  fs::remove_all(base);
+  ASSERT_EQ(run_cli("frc " + case_file + " -o " + (base / "frc").string() + " -q").exit_code, 0);
+  const CliRun r = run_cli("track " + case_file + " --from " + (base / "frc").string() +
+                           " --lp 1 --param amplitude --range 0.5:2 -q -o " + (base / "track").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("tracking stopped: no_convergence_at_start"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("elements[0] (unilateral_spring): law \"penalty\" is only C0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("law = \"sqrt\""), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  fs::remove_all(base);
+}
+
 }  // namespace

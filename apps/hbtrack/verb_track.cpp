@@ -79,6 +79,20 @@ HbmState starting_fold(const std::string& dir, long lp) {
   return read_hbm_state(dir + "/special_states.csv", row);
 }
 
+// After a failed tracking run: the elements whose law the fold systems cannot differentiate, the
+// likely cause ("" when every law is smooth).
+std::string smoothness_hint(const HarmonicBalance& hbm) {
+  std::string hint;
+  for (size_t i = 0; i < hbm.elements().size(); ++i) {
+    const std::string limit = hbm.elements()[i]->smoothness_limit();
+    if (limit.empty()) continue;
+    hint += hint.empty() ? "; " : ", ";
+    hint += "elements[" + std::to_string(i) + "] (" + hbm.elements()[i]->type() + "): " + limit;
+  }
+  if (!hint.empty()) hint += ": limit-point tracking needs a law with a smooth Jacobian (law = \"sqrt\")";
+  return hint;
+}
+
 int run_track(TrackOptions o) {
   const auto t0 = Clock::now();
   if (!o.resume.empty()) {
@@ -159,7 +173,8 @@ int run_track(TrackOptions o) {
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
   write_json_atomically(dir + "/summary.json", summary);
   if (!ok)
-    throw RunFailed{"tracking stopped: " + failure + " after " + std::to_string(r.curve_points()) + " points (kept in " + dir + ")"};
+    throw RunFailed{"tracking stopped: " + failure + " after " + std::to_string(r.curve_points()) + " points (kept in " + dir + ")" +
+                    smoothness_hint(hbm)};
   if (!o.common.quiet)
     std::fprintf(stderr, "track: %d points, %zu extrema of %s, %s, %.3f s -> %s\n", r.curve_points(), r.extrema.size(), o.param.c_str(),
                  r.closed ? "closed" : "both ways to the range", summary["timings"]["wall_s"].get<double>(), dir.c_str());

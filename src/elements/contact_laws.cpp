@@ -21,6 +21,15 @@ std::string to_string(ContactLawKind kind) {
   return "?";
 }
 
+std::string smoothness_limit(ContactLawKind kind) {
+  switch (kind) {
+    case ContactLawKind::penalty: return "law \"penalty\" is only C0";
+    case ContactLawKind::polynomial: return "law \"polynomial\" is only C1";
+    case ContactLawKind::sqrt: return "";
+  }
+  return "";
+}
+
 ContactForce contact_force(ContactLawKind kind, double g, double k, double width) {
   ContactForce out;
   const double s = k * g;  // the force the plain penalty law would give

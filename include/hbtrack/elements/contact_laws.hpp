@@ -13,6 +13,8 @@ enum class ContactLawKind {
 
 ContactLawKind parse_contact_law(const std::string& name);  // throws std::invalid_argument
 std::string to_string(ContactLawKind kind);
+// "" for the C-infinity sqrt law, otherwise e.g. "law \"penalty\" is only C0".
+std::string smoothness_limit(ContactLawKind kind);
 
 struct ContactForce {
   double force = 0;     // f_N

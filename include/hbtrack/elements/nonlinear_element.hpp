@@ -36,6 +36,9 @@ class NonlinearElement {
   virtual const std::vector<std::string>& property_names() const = 0;
   virtual bool depends_on_velocity() const = 0;
   virtual bool depends_on_omega() const { return false; }
+  // Why the force is not twice continuously differentiable ("" when it is): limit-point tracking
+  // differentiates the Jacobian and cannot follow a fold through such a law.
+  virtual std::string smoothness_limit() const { return ""; }
   // Evaluates forces and derivatives. x, v: N x k samples; property_values: one per property.
   virtual void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                         const std::vector<double>& property_values, ElementResponse& out,

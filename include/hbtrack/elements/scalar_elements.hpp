@@ -44,6 +44,7 @@ class GapContact final : public ScalarElement {
   std::string type() const override { return type_name_; }
   const std::vector<std::string>& property_names() const override;
   bool depends_on_velocity() const override { return false; }
+  std::string smoothness_limit() const override { return hbtrack::smoothness_limit(kind_); }
   ContactLawKind law_kind() const { return kind_; }
 
  protected:

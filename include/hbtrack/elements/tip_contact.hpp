@@ -17,6 +17,7 @@ class TipContact final : public NonlinearElement {
   const std::vector<std::string>& property_names() const override;
   bool depends_on_velocity() const override { return true; }
   bool depends_on_omega() const override { return true; }
+  std::string smoothness_limit() const override { return hbtrack::smoothness_limit(kind_); }
   void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                 const std::vector<double>& property_values, ElementResponse& out,
                 bool want_property_derivatives) const override;
