@@ -69,8 +69,7 @@ struct Scaled {
   VectorXd solution{}, refinement_residual{}, product{};
   VectorXd y_before{};  // where the corrector's last step started
   int residual_evaluations = 0;
-  int chord_steps = 0;  // chord steps taken since the caller last set it to 0
-  int chord_iterations = 0;  // all chord steps, for the summary
+  int chord_iterations = 0;  // all chord steps so far
   // lu holds the factors of the last Newton iteration of the corrector that just converged:
   // the tangent may start from them. Only within one corrector, so that a run resumed from a
   // saved state (which carries no factors) repeats the original exactly.
@@ -185,12 +184,10 @@ struct Scaled {
                const ContinuationOptions& options, int& iterations) {
     newton_factors_current = false;
     const double plane_tolerance = 1e-8 * ds * std::max(1.0, ds);
-    bool jacobian_at_y = false;  // jac holds the Jacobian at y
     double last_error = std::numeric_limits<double>::infinity();
     for (int it = 0; it <= options.max_iterations; ++it) {
       const bool chord = options.reuse_factorization && newton_factors_current;
       const double residual = chord ? evaluate_residual(y) : evaluate(y);
-      jacobian_at_y = !chord;
       const VectorXd d = y - x;
       double p;
       VectorXd p_row;
@@ -205,7 +202,7 @@ struct Scaled {
       // The error in units of the tolerances: converged at <= 1.
       const double error = std::max(residual / options.tolerance, std::abs(p) / plane_tolerance);
       if (std::isfinite(residual) && error <= 1.0) {
-        if (!jacobian_at_y) evaluate(y);  // the tangent needs the Jacobian at y
+        if (chord) evaluate(y);  // the tangent needs the Jacobian at y
         iterations = it;
         return true;
       }
@@ -227,7 +224,7 @@ struct Scaled {
       }
       newton_factors_current = true;
       if (!solution.allFinite()) return false;
-      if (chord) ++chord_steps, ++chord_iterations;
+      if (chord) ++chord_iterations;
       y_before = y;
       last_error = error;
       y += solution;
@@ -466,7 +463,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     const VectorXd prediction = x + ds * direction_vec;
     VectorXd y = prediction;
     int iterations = 0;
-    s.chord_steps = 0;
+    const int chords_before = s.chord_iterations;
     const bool converged = s.correct(y, x, direction_vec, ds, hypersphere, options, iterations);
 
     // Reject a corrector that did not converge, went back along the branch, jumped away from
@@ -565,7 +562,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     s.rescale(s.unknowns(x), {&x, &x_prev_prev}, t);
     // A chord step counts half: it gains about half the digits of a Newton step near the
     // solution (linear against quadratic convergence) at a fraction of the cost.
-    const double work = iterations - 0.5 * s.chord_steps;
+    const double work = iterations - 0.5 * (s.chord_iterations - chords_before);
     const double factor = work == 0 ? 1.5 : std::clamp(options.target_iterations / work, 0.5, 1.5);
     ds = std::min(ds * factor, options.step_max);
   }
