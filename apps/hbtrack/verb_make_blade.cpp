@@ -1,13 +1,17 @@
-// `hbtrack make-blade`: the parametric fan blade (hbtrack/model/blade_generator.hpp) as a full
-// finite-element model, ready for `hbtrack reduce`: M.mtx, K.mtx, nodes.csv, boundary.txt and a
-// summary with its lowest modes named (1B, 2B, 1T, ...).
+// `hbtrack make-blade`: a fan blade as a full finite-element model, ready for `hbtrack reduce`:
+// M.mtx, K.mtx, nodes.csv, boundary.txt and a summary with its lowest modes named (1B, 2B, 1T,
+// ...). Either the parametric plate (hbtrack/model/blade_generator.hpp) or, with --geometry, a
+// blade meshed from published stream-surface sections (data/rotor67/sections.csv: NASA rotor 67).
 #include <chrono>
 #include <cstdio>
 
 #include "cli_common.hpp"
+#include "hbtrack/io/blade_sections_reader.hpp"
 #include "hbtrack/io/matrix_readers.hpp"
 #include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/model/blade_generator.hpp"
 #include "hbtrack/model/blade_mode_classifier.hpp"
+#include "hbtrack/model/section_blade.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
 #include "node_table.hpp"
 
@@ -22,33 +26,69 @@ constexpr double kPaperFrequencies[] = {2039.78, 6343.69, 10745.26};
 
 struct MakeBladeOptions {
   std::string out_dir;
+  std::string geometry;  // a section table; empty: the parametric blade
   int refinement = 1;
+  double rim_depth = -1;  // m; < 0: the section blade's default
   int modes = 6;
   bool quiet = false;
 };
 
-json geometry_json(const BladeGeometry& g) {
-  return {{"hub_radius", g.hub_radius},
-          {"tip_radius", g.tip_radius},
-          {"root_chord", g.root_chord},
-          {"tip_chord", g.tip_chord},
-          {"root_thickness", g.root_thickness},
-          {"tip_thickness", g.tip_thickness},
-          {"root_stagger_deg", g.root_stagger_deg},
-          {"tip_stagger_deg", g.tip_stagger_deg},
-          {"camber", g.camber},
-          {"youngs_modulus", g.material.youngs_modulus},
-          {"poisson_ratio", g.material.poisson_ratio},
-          {"density", g.material.density}};
+json material_json(const IsotropicMaterial& m) {
+  return {{"youngs_modulus", m.youngs_modulus}, {"poisson_ratio", m.poisson_ratio}, {"density", m.density}};
+}
+
+json parametric_geometry_json(const BladeGeometry& g) {
+  json j = {{"kind", "parametric"},
+            {"hub_radius", g.hub_radius},
+            {"tip_radius", g.tip_radius},
+            {"root_chord", g.root_chord},
+            {"tip_chord", g.tip_chord},
+            {"root_thickness", g.root_thickness},
+            {"tip_thickness", g.tip_thickness},
+            {"root_stagger_deg", g.root_stagger_deg},
+            {"tip_stagger_deg", g.tip_stagger_deg},
+            {"camber", g.camber}};
+  j.update(material_json(g.material));
+  return j;
+}
+
+json section_geometry_json(const std::string& path, const SectionBladeOptions& o, const SectionBlade& blade) {
+  json j = {{"kind", "sections"},
+            {"sections", path},
+            {"tip_clearance_m", o.shape.tip_clearance},
+            {"minimum_thickness_m", o.shape.minimum_thickness},
+            {"rim_depth_m", o.rim_depth},
+            {"rim_layers", blade.rim_layers},
+            // The blade moves towards +theta (sense +1) or -theta (-1) of the tip frames: the
+            // case's tip_contact elements take engine_order = sense (eqs 47-48's rho * Omega).
+            {"rotation_sense", blade.rotation.sense},
+            {"leading_edge_lead_m", blade.rotation.leading_edge_lead},
+            {"pressure_side", blade.rotation.pressure_side}};
+  j.update(material_json(o.material));
+  return j;
 }
 
 int run_make_blade(const MakeBladeOptions& o) {
   const auto t0 = Clock::now();
   if (o.refinement < 1) throw CaseError("--refine: must be >= 1");
   if (o.modes < 3) throw CaseError("--modes: must be >= 3");
-  const BladeGeometry geometry;
-  const BladeModel blade = generate_blade(geometry, o.refinement);
-  const AssembledMatrices matrices = assemble_blade(blade);
+  json geometry;
+  std::unique_ptr<BladeMesh> blade;
+  if (o.geometry.empty()) {
+    if (o.rim_depth >= 0) throw CaseError("--rim-depth: only with --geometry (the parametric blade is clamped at its root)");
+    const BladeGeometry parametric;
+    blade = std::make_unique<BladeModel>(generate_blade(parametric, o.refinement));
+    geometry = parametric_geometry_json(parametric);
+  } else {
+    SectionBladeOptions options;
+    options.refinement = o.refinement;
+    if (o.rim_depth >= 0) options.rim_depth = o.rim_depth;
+    const BladeSections sections = read_blade_sections(o.geometry);
+    auto section_blade = std::make_unique<SectionBlade>(generate_section_blade(sections, options));
+    geometry = section_geometry_json(o.geometry, options, *section_blade);
+    blade = std::move(section_blade);
+  }
+  const AssembledMatrices matrices = assemble_blade(*blade);
   NormalModes modes;
   try {
     modes = lowest_sparse_modes(matrices.stiffness, matrices.mass, o.modes);
@@ -58,9 +98,9 @@ int run_make_blade(const MakeBladeOptions& o) {
 
   // Node ids are mesh indices + 1; nodes.csv lists the free nodes in matrix row order.
   std::vector<NodeRecord> free_nodes;
-  for (int node : blade.dofs.free_nodes()) free_nodes.push_back({node + 1, blade.grid.mesh().nodes[static_cast<size_t>(node)]});
+  for (int node : blade->dofs.free_nodes()) free_nodes.push_back({node + 1, blade->grid.mesh().nodes[static_cast<size_t>(node)]});
   std::vector<int> boundary_ids;
-  for (int node : blade.tip_nodes) boundary_ids.push_back(node + 1);
+  for (int node : blade->tip_nodes) boundary_ids.push_back(node + 1);
 
   ensure_directory(o.out_dir);
   write_matrix_market(o.out_dir + "/M.mtx", matrices.mass);
@@ -68,20 +108,22 @@ int run_make_blade(const MakeBladeOptions& o) {
   write_node_table(o.out_dir + "/nodes.csv", free_nodes);
   write_node_list(o.out_dir + "/boundary.txt", boundary_ids, "tip nodes at mid-thickness, leading edge (n1) to trailing edge (n9)");
 
-  json frequencies = json::array(), types = json::array(), paper = json::array();
+  json frequencies = json::array(), types = json::array(), paper = json::array(), tip_radii = json::array();
   for (Eigen::Index r = 0; r < modes.frequencies.size(); ++r) {
     frequencies.push_back(modes.frequencies(r));
-    types.push_back(classify_blade_mode(blade, modes.shapes.col(r)).label());
+    types.push_back(classify_blade_mode(*blade, modes.shapes.col(r)).label());
   }
   for (int r = 0; r < 3; ++r) paper.push_back(modes.frequencies(r) / kPaperFrequencies[r] - 1.0);
-  const auto& grid = blade.grid;
+  for (const auto& frame : blade->tip_frames) tip_radii.push_back(frame.radius);
+  const auto& grid = blade->grid;
   json summary = {{"verb", "make-blade"},
-                  {"geometry", geometry_json(geometry)},
+                  {"geometry", geometry},
                   {"refinement", o.refinement},
                   {"elements", {{"chord", grid.cells(0)}, {"thickness", grid.cells(1)}, {"span", grid.cells(2)}, {"total", grid.mesh().elements.size()}}},
                   {"nodes", grid.mesh().node_count()},
-                  {"dofs", blade.dofs.free_dofs()},
+                  {"dofs", blade->dofs.free_dofs()},
                   {"boundary_node_ids", boundary_ids},
+                  {"boundary_node_radii", tip_radii},
                   {"natural_frequencies", frequencies},
                   {"mode_types", types},
                   {"paper_frequencies", kPaperFrequencies},
@@ -89,7 +131,7 @@ int run_make_blade(const MakeBladeOptions& o) {
                   {"timings", {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}}}};
   write_json_atomically(o.out_dir + "/summary.json", summary);
   if (!o.quiet) {
-    std::fprintf(stderr, "make-blade: %d elements, %d dofs -> %s\n", static_cast<int>(grid.mesh().elements.size()), blade.dofs.free_dofs(),
+    std::fprintf(stderr, "make-blade: %d elements, %d dofs -> %s\n", static_cast<int>(grid.mesh().elements.size()), blade->dofs.free_dofs(),
                  o.out_dir.c_str());
     for (Eigen::Index r = 0; r < modes.frequencies.size(); ++r)
       std::fprintf(stderr, "  mode %lld %-3s %10.2f rad/s\n", static_cast<long long>(r + 1), types[static_cast<size_t>(r)].get<std::string>().c_str(),
@@ -100,9 +142,13 @@ int run_make_blade(const MakeBladeOptions& o) {
 
 void add_make_blade_verbs(CLI::App& app, VerbList& verbs) {
   static MakeBladeOptions options;
-  CLI::App* make = app.add_subcommand("make-blade", "generate the parametric fan blade (full FE model) for `reduce`");
+  CLI::App* make = app.add_subcommand("make-blade", "generate a fan blade's full FE model for `reduce` (the parametric plate, or --geometry sections)");
   make->add_option("-o,--output", options.out_dir, "output folder (created if missing)")->required();
-  make->add_option("--refine", options.refinement, "multiply the element counts (4 x 2 x 12) by R (default 1)");
+  make->add_option("--geometry", options.geometry,
+                   "blade section table (e.g. data/rotor67/sections.csv: NASA rotor 67); without it, the parametric plate");
+  make->add_option("--refine", options.refinement, "multiply the element counts by R (default 1)");
+  make->add_option("--rim-depth", options.rim_depth,
+                   "with --geometry: depth (m) of the disk-rim sector under the hub, clamped at its bottom; 0 clamps the hub section");
   make->add_option("--modes", options.modes, "lowest modes computed and named (default 6)");
   make->add_flag("-q,--quiet", options.quiet, "no closing report");
   verbs.push_back({make, [] { return run_make_blade(options); }});

@@ -24,6 +24,8 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 struct ReduceOptions {
   std::string mass, stiffness, calculix, nodes, boundary_file, out_dir;
   std::vector<int> boundary;
+  std::string axis = "x";         // x, y, z or "AX,AY,AZ": the rotation axis of the model
+  std::vector<double> axis_origin{0.0, 0.0, 0.0};
   int modes = 12;
   int compare = 6;
   bool quiet = false;
@@ -83,6 +85,19 @@ void check_square_pair(const FullModel& m) {
                     std::to_string(n) + "x" + std::to_string(m.stiffness.cols()) + ") must be square and of the same size");
 }
 
+// "x", "y", "z" (either case) or three comma-separated numbers.
+Eigen::Vector3d parse_axis(const std::string& text) {
+  if (text == "x" || text == "X") return Eigen::Vector3d::UnitX();
+  if (text == "y" || text == "Y") return Eigen::Vector3d::UnitY();
+  if (text == "z" || text == "Z") return Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d v;
+  char c1 = 0, c2 = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%lf %c %lf %c %lf %c", &v(0), &c1, &v(1), &c2, &v(2), &extra) != 5 || c1 != ',' || c2 != ',' || !v.allFinite() ||
+      !(v.norm() > 0))
+    throw CaseError("--axis: '" + text + "' must be x, y, z or a nonzero direction AX,AY,AZ");
+  return v;
+}
+
 json to_json(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
 int run_reduce(const ReduceOptions& o) {
@@ -92,6 +107,10 @@ int run_reduce(const ReduceOptions& o) {
   if (o.calculix.empty() && (o.mass.empty() || o.stiffness.empty())) throw CaseError("reduce: --mass and --stiffness go together");
   if (o.boundary.empty() == o.boundary_file.empty()) throw CaseError("reduce: give exactly one of --boundary and --boundary-file");
   if (o.modes < 0) throw CaseError("--modes: must be >= 0");
+  const Eigen::Vector3d axis = parse_axis(o.axis);
+  if (o.axis_origin.size() != 3) throw CaseError("--axis-origin: give three numbers X,Y,Z");
+  const Eigen::Vector3d axis_origin(o.axis_origin[0], o.axis_origin[1], o.axis_origin[2]);
+  if (!axis_origin.allFinite()) throw CaseError("--axis-origin: must be finite");
 
   const std::vector<NodeRecord> nodes = read_node_table(o.nodes);
   const std::vector<int> boundary_ids = o.boundary.empty() ? read_node_list(o.boundary_file) : o.boundary;
@@ -115,7 +134,7 @@ int run_reduce(const ReduceOptions& o) {
       b.dofs[static_cast<size_t>(d)] = row->second;
     }
     try {
-      frames.push_back(cylindrical_frame_about_x(found->second->position));
+      frames.push_back(cylindrical_frame(found->second->position, axis_origin, axis));
     } catch (const std::invalid_argument& e) {
       throw CaseError("reduce: boundary node " + std::to_string(id) + ": " + e.what());
     }
@@ -167,6 +186,7 @@ int run_reduce(const ReduceOptions& o) {
         {"fixed_interface_modes", o.modes},
         {"reduced_dofs", rom.mass.rows()}}},
       {"boundary_node_ids", boundary_ids},
+      {"rotation_axis", {{"origin", {axis_origin.x(), axis_origin.y(), axis_origin.z()}}, {"direction", {axis.x(), axis.y(), axis.z()}}}},
       {"dof_names", rom.dof_names},
       {"natural_frequencies", to_json(reduced_modes.frequencies)},
       {"fixed_interface_frequencies", to_json(rom.fixed_interface_frequencies)},
@@ -192,6 +212,8 @@ void add_reduce_verbs(CLI::App& app, VerbList& verbs) {
   reduce->add_option("--nodes", options.nodes, "node table node,x,y,z (for matrix files: rows 3k..3k+2 are node k's x, y, z)")->required();
   reduce->add_option("--boundary", options.boundary, "boundary node ids, in order (n1, n2, ...)")->delimiter(',');
   reduce->add_option("--boundary-file", options.boundary_file, "file of boundary node ids, in order");
+  reduce->add_option("--axis", options.axis, "rotation axis of the model, for the boundary nodes' (r, t, z) frames: x, y, z or AX,AY,AZ (default x)");
+  reduce->add_option("--axis-origin", options.axis_origin, "a point of the rotation axis X,Y,Z (default 0,0,0)")->delimiter(',')->expected(3);
   reduce->add_option("--modes", options.modes, "fixed-interface modes kept (default 12)");
   reduce->add_option("--compare", options.compare, "full-model modes computed to check the reduced model (default 6)");
   reduce->add_option("-o,--output", options.out_dir, "output folder (created if missing)")->required();

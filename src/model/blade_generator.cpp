@@ -82,29 +82,9 @@ BladeModel generate_blade(const BladeGeometry& geometry, int refinement) {
                                  geometry.span_elements * refinement};
   StructuredHex20Grid grid(cells, [&](const Eigen::Vector3d& unit) { return blade_point(geometry, unit); });
   DofNumbering dofs(root_face_clamped(grid));
-  BladeModel blade{geometry, refinement, std::move(grid), std::move(dofs), {}, {}, {}, {}, {}};
-
-  const int mid_thickness = blade.grid.cells(1);  // doubled-grid index of the mid-plane
-  const int tip = 2 * blade.grid.cells(2);
-  const int chord_end = 2 * blade.grid.cells(0);
-  // Nine chord stations at every (refinement)-th doubled-grid position: 0, 1/8, ..., 1 of the chord.
-  for (int station = 0; station <= 8; ++station) {
-    const int node = blade.grid.node_at(station * refinement, mid_thickness, tip);
-    blade.tip_nodes.push_back(node);
-    blade.tip_frames.push_back(cylindrical_frame_about_x(blade.grid.mesh().nodes[static_cast<size_t>(node)]));
-  }
-  // Span stations at element corners (even k), where leading edge, mid-chord and trailing edge
-  // all have a mid-thickness node.
-  for (int k = 0; k <= tip; k += 2) {
-    blade.leading_edge_line.push_back(blade.grid.node_at(0, mid_thickness, k));
-    blade.mid_chord_line.push_back(blade.grid.node_at(chord_end / 2, mid_thickness, k));
-    blade.trailing_edge_line.push_back(blade.grid.node_at(chord_end, mid_thickness, k));
-  }
+  BladeModel blade{{geometry.material, std::move(grid), std::move(dofs), {}, {}, {}, {}, {}, {}, {}}, geometry, refinement};
+  find_blade_lines(blade, 0);
   return blade;
-}
-
-AssembledMatrices assemble_blade(const BladeModel& blade) {
-  return assemble_hex20(blade.grid.mesh(), blade.geometry.material, blade.dofs);
 }
 
 }  // namespace hbtrack

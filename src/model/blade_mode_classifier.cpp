@@ -11,7 +11,7 @@ namespace {
 // round-off and the tiny motion near the clamped root must not count as a nodal line.
 constexpr double kSignThreshold = 0.05;
 
-Eigen::Vector3d displacement(const BladeModel& blade, const Eigen::VectorXd& shape, int node) {
+Eigen::Vector3d displacement(const BladeMesh& blade, const Eigen::VectorXd& shape, int node) {
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   for (int k = 0; k < 3; ++k) {
     const int dof = blade.dofs.dof(node, k);
@@ -36,9 +36,9 @@ int sign_changes(const Eigen::VectorXd& values) {
 
 std::string BladeModeType::label() const { return family == '?' ? "?" : std::to_string(order) + family; }
 
-BladeModeType classify_blade_mode(const BladeModel& blade, const Eigen::VectorXd& shape) {
+BladeModeType classify_blade_mode(const BladeMesh& blade, const Eigen::VectorXd& shape) {
   if (shape.size() != blade.dofs.free_dofs()) throw std::invalid_argument("blade mode: shape size does not match the blade's dofs");
-  const Eigen::Vector3d normal = blade.out_of_plane_direction(1.0), chord = blade.chord_direction(1.0);
+  const Eigen::Vector3d normal = blade.station_normal.back(), chord = blade.station_chord.back();
   const auto tip_count = static_cast<Eigen::Index>(blade.tip_nodes.size());
   Eigen::VectorXd out_of_plane(tip_count);
   double flap = 0, edge = 0, all = 0;
@@ -57,8 +57,8 @@ BladeModeType classify_blade_mode(const BladeModel& blade, const Eigen::VectorXd
   Eigen::VectorXd along_span(stations);
   for (Eigen::Index k = 0; k < stations; ++k) {
     const auto station = static_cast<size_t>(k);
-    const double s = blade.span_fraction(blade.mid_chord_line[station]);
-    const Eigen::Vector3d n = blade.out_of_plane_direction(s), c = blade.chord_direction(s);
+    const Eigen::Vector3d& n = blade.station_normal[station];
+    const Eigen::Vector3d& c = blade.station_chord[station];
     if (flap < edge) {
       type.family = 'E';
       along_span(k) = displacement(blade, shape, blade.mid_chord_line[station]).dot(c);

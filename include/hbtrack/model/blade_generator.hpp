@@ -9,8 +9,7 @@
 // 10745.26 rad/s (scripts/make-blade-rom.sh prints them and the mesh convergence).
 #include <vector>
 
-#include "hbtrack/model/cylindrical_frame.hpp"
-#include "hbtrack/model/fe_assembly.hpp"
+#include "hbtrack/model/blade_mesh.hpp"
 
 namespace hbtrack {
 
@@ -37,17 +36,9 @@ struct BladeGeometry {
   void validate() const;  // throws std::invalid_argument
 };
 
-struct BladeModel {
+struct BladeModel : BladeMesh {
   BladeGeometry geometry;
   int refinement = 1;
-  StructuredHex20Grid grid;  // axes: chord (leading edge at 0), thickness, span (root at 0)
-  DofNumbering dofs;         // root-face nodes clamped
-  // The 9 boundary nodes: tip, mid-thickness, leading edge (node 1) to trailing edge (node 9).
-  std::vector<int> tip_nodes;
-  std::vector<CylindricalFrame> tip_frames;
-  // Mid-thickness nodes from root to tip along the leading edge, mid-chord and trailing edge
-  // (span stations shared by the three lines): the mode classifier reads them.
-  std::vector<int> leading_edge_line, mid_chord_line, trailing_edge_line;
 
   // Unit vectors of the section at span fraction s in [0, 1]: along the chord (leading to
   // trailing edge) and out of plane (the thickness direction).
@@ -59,6 +50,5 @@ struct BladeModel {
 // Builds the mesh with every element count multiplied by `refinement` (>= 1); the 9 tip nodes
 // stay at the same chord stations. Throws std::invalid_argument for a bad geometry.
 BladeModel generate_blade(const BladeGeometry& geometry, int refinement = 1);
-AssembledMatrices assemble_blade(const BladeModel& blade);
 
 }  // namespace hbtrack

@@ -1,5 +1,5 @@
 #pragma once
-// Names a mode of the generated blade from its shape: family from the tip (the 9 mid-thickness
+// Names a mode of a generated blade from its shape: family from the tip (the 9 mid-thickness
 // tip nodes), order from the span.
 //   bending (B):   tip motion dominated by the out-of-plane (thickness) direction, same sign at
 //                  every chord station;
@@ -9,7 +9,7 @@
 // (bending), of the twist (torsion) or of the chordwise displacement (edgewise).
 #include <string>
 
-#include "hbtrack/model/blade_generator.hpp"
+#include "hbtrack/model/blade_mesh.hpp"
 
 namespace hbtrack {
 
@@ -20,6 +20,6 @@ struct BladeModeType {
 };
 
 // `shape` is over the blade's free dofs (as assembled), any normalisation.
-BladeModeType classify_blade_mode(const BladeModel& blade, const Eigen::VectorXd& shape);
+BladeModeType classify_blade_mode(const BladeMesh& blade, const Eigen::VectorXd& shape);
 
 }  // namespace hbtrack

@@ -1,7 +1,8 @@
 #pragma once
-// The local frame of a point of a rotor whose rotation axis is X: radial (from the axis to the
-// point, perpendicular to X), circumferential (axial x radial) and axial (X). The tip contact
-// element works in this frame.
+// The local frame of a point of a rotor: radial (from the rotation axis to the point,
+// perpendicular to it), circumferential (axial x radial: the direction a positive rotation about
+// the axis moves the point) and axial (the axis direction). The tip contact element works in
+// this frame.
 #include <Eigen/Dense>
 
 namespace hbtrack {
@@ -14,7 +15,10 @@ struct CylindricalFrame {
   Eigen::Vector3d axial() const { return directions.col(2); }
 };
 
-// Throws std::invalid_argument for a point on the axis (no radial direction).
+// The axis passes through `origin` along `direction` (any length > 0). Throws
+// std::invalid_argument for a zero direction or a point on the axis (no radial direction).
+CylindricalFrame cylindrical_frame(const Eigen::Vector3d& position, const Eigen::Vector3d& origin, const Eigen::Vector3d& direction);
+// About the X axis through the origin (the generated blades' convention).
 CylindricalFrame cylindrical_frame_about_x(const Eigen::Vector3d& position);
 
 }  // namespace hbtrack
