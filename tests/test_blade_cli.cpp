@@ -169,7 +169,7 @@ TEST_F(BladeCli, ModesOfTheShippedBladeCase) {
 // The nominal contact study end to end, coarsened to keep the suite quick: H = 5 and N = 256
 // follow the same curve as the shipped H = 10, N = 1024 (peak within 0.2 %), and the per-point
 // stability (Hill's method, which would triple the time) is not what this test is about.
-TEST_F(BladeCli, NominalContactCaseRunsEndToEndAboveTheLinearResonance) {
+TEST_F(BladeCli, NominalContactCaseRunsEndToEndBelowTheLinearResonance) {
   if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers; run by the Release pass";
   const std::string coarser = " --set harmonic_balance.harmonics=5 --set harmonic_balance.samples=256 --set stability.method=none";
   const CliRun r = run("frc " + hbtrack::test::source_path("examples/blade/nominal.toml") + coarser + " -q -o " + path("nominal"));
@@ -182,7 +182,9 @@ TEST_F(BladeCli, NominalContactCaseRunsEndToEndAboveTheLinearResonance) {
   for (const json& p : s["special_points"])
     if (p["type"] == "LP") ++limit_points;
   EXPECT_GE(limit_points, 2);
-  // The resonance peak of the leading edge, in contact, lies above the linear 1B frequency.
+  // The resonance peak of the leading edge, in contact, lies below the linear 1B frequency: the
+  // friction of a blade turning with its leading edge ahead pushes that edge into the casing and
+  // softens the response (the fold at 0.90 x 1B at H = 10).
   std::ifstream branch(path("nominal/branch.csv"));
   std::string line, cell;
   std::getline(branch, line);
@@ -197,7 +199,7 @@ TEST_F(BladeCli, NominalContactCaseRunsEndToEndAboveTheLinearResonance) {
     if (row[column] > peak) peak = row[column], peak_omega = row[0];
   }
   EXPECT_GT(peak, 4e-4) << "the leading edge reaches the casing";
-  EXPECT_GT(peak_omega, 1.02 * linear_1b);
+  EXPECT_LT(peak_omega, 0.95 * linear_1b);
 }
 
 }  // namespace

@@ -90,9 +90,9 @@ def test_blade_frc_matches_cli(results_dir):
     cli = read_result(folder)
     assert "stable" in cli["branch"] and len(cli["branch"]["omega"]) > 5
     assert cli["summary"]["stop_reason"] == "reached_end"
-    # Up the resonance into contact: the second half of the branch rubs.
+    # Down the resonance into contact: the branch starts clear of the casing and ends rubbing.
     in_contact = cli["branch"]["max_le"] > BLADE_CLEARANCE
-    assert not in_contact[0] and in_contact[len(in_contact) // 2:].all()
+    assert not in_contact[0] and in_contact[-1]
     assert_same_columns(api["branch"], cli["branch"])
     assert_same_special_points(api["special_points"], cli["special_points"])
 
