@@ -7,6 +7,8 @@
 //   crossings_P_J/        the limit points of the tracking curves at that value, located
 //   isolas_P_J/           the branches through the crossings no validation NFRC holds
 //   simulate/             time integration from the stable resonance point of the NFRC
+//   simulate_isola/       time integration from the stable isola point of largest output
+//   converged/            with [study] convergence: the NFRC and tracking curves at more H, N
 //   figures/, index.md    the figures and a page with the numbers (study_report.cpp)
 #include <algorithm>
 #include <cmath>
@@ -17,6 +19,7 @@
 #include "cli_common.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
+#include "study_checks.hpp"
 #include "study_curves.hpp"
 #include "study_report.hpp"
 #include "task_runner.hpp"
@@ -71,7 +74,7 @@ class Study {
     summary_ = {{"verb", "study"},         {"case", o_.common.case_path}, {"jobs", runner_.slots()},
                 {"runner", runner_.description()}, {"stop_reason", "running"},    {"steps", json::array()}};
     save();
-    const bool ok = nominal() && tracking() && validation_and_simulation() && isolas();
+    const bool ok = nominal() && tracking() && validation_and_simulation() && isolas() && isola_simulation() && convergence();
     for (const StudyTrack& t : tracked_) summary_["tracking"].push_back(entries_[t.parameter]);
     save();  // the figures script reads it
     figures();
@@ -188,7 +191,11 @@ class Study {
     std::vector<Step> frcs, crossings;
     for (const StudyTrack& t : tracked_) {
       if (curves_[t.parameter].empty()) continue;
-      const std::vector<double> probes = probe_values(curves_[t.parameter], t.min, t.max, kProbeOffset);
+      std::vector<double> probes = probe_values(curves_[t.parameter], t.min, t.max, kProbeOffset);
+      // The case's own values (a paper's validation NFRCs), unless one is already there.
+      for (double v : t.validate)
+        if (std::none_of(probes.begin(), probes.end(), [&](double p) { return std::abs(p - v) <= 1e-12 * std::abs(v); })) probes.push_back(v);
+      std::sort(probes.begin(), probes.end());
       for (size_t j = 0; j < probes.size(); ++j) {
         const std::string tag = t.parameter + "_" + std::to_string(j + 1), at = number_text(probes[j]);
         probes_.push_back({&t, probes[j], tag});
@@ -314,20 +321,75 @@ class Study {
   }
 
   void compare_simulation(long point) {
-    const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
-    const std::vector<double>& row = b.rows[static_cast<size_t>(point)];
-    const json s = read_summary(dir_ + "/simulate");
-    json cmp = {{"point", point}, {"omega", row[0]}, {"periods", s.value("periods", 0)}, {"converged", s.value("converged", false)},
-                {"last_change", s.value("last_change", 0.0)},
-                {"wall_s", s.contains("timings") ? s["timings"].value("wall_s", 0.0) : 0.0}, {"outputs", json::array()}};
-    for (const auto& out : c_.outputs)
-      for (const char* kind : {"max_", "min_", "h1_"}) {
-        const std::string key = kind + out.name;
-        const double hbm = row[static_cast<size_t>(b.column(key))], sim = s.value(key, 0.0);
-        cmp["outputs"].push_back({{"name", key}, {"hbm", hbm}, {"simulation", sim}, {"relative_difference", (sim - hbm) / std::abs(hbm)}});
-      }
-    summary_["simulation"] = cmp;
+    summary_["simulation"] = compare_with_simulation(dir_ + "/nfrc", point, read_summary(dir_ + "/simulate"), c_.outputs);
     save();
+  }
+
+  // The paper's Fig. 12: a stable point of an isolated branch, integrated in time.
+  bool isola_simulation() {
+    if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return true;
+    json tracking = json::array();
+    for (const StudyTrack& t : tracked_) tracking.push_back(entries_[t.parameter]);
+    const auto at = stable_isola_point(dir_, tracking, first_output());
+    if (!at) return true;
+    const int periods = c_.study.simulate_periods;
+    // `simulate --from` takes the isola's parameter values from its folder's summary.
+    const std::string from = dir_ + "/" + at->folder;
+    std::vector<std::string> args{"simulate", o_.common.case_path, "--from", from, "--point", std::to_string(at->point), "--max-periods",
+                                  std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods))};
+    if (!run_steps({{"simulate_isola", args, false}})) return false;
+    summary_["isola_simulation"] = compare_with_simulation(from, at->point, read_summary(dir_ + "/simulate_isola"), c_.outputs);
+    summary_["isola_simulation"]["folder"] = at->folder;
+    save();
+    return true;
+  }
+
+  // Every event recomputed with more harmonics and samples: the nominal NFRC, then each tracking
+  // curve from the refined NFRC's limit point nearest the original's.
+  bool convergence() {
+    const int h = c_.study.convergence_harmonics, n = c_.study.convergence_samples;
+    if (h <= 0) return true;
+    const std::vector<std::string> refine{"--set", "harmonic_balance.harmonics=" + std::to_string(h), "--set",
+                                          "harmonic_balance.samples=" + std::to_string(n)};
+    auto with_refine = [&](std::vector<std::string> args) {
+      args.insert(args.end(), refine.begin(), refine.end());
+      return args;
+    };
+    if (!run_steps({{"converged/nfrc", with_refine({"frc", o_.common.case_path, "--set", "stability.method=none"}), false}})) return false;
+    const json refined = read_summary(dir_ + "/converged/nfrc");
+    json report = {{"harmonics", h}, {"samples", n},
+                   {"limit_points", compare_limit_points(summary_["nfrc"]["special_points"], refined.value("special_points", json::array()), first_output())},
+                   {"tracking", json::array()}};
+    std::vector<Step> steps;
+    std::vector<const StudyTrack*> which;
+    for (const StudyTrack& t : tracked_)
+      for (const auto& curve : entries_[t.parameter]["curves"]) {
+        if (!curve.contains("folder")) continue;
+        // The refined NFRC's limit point nearest this curve's starting one (1-based).
+        const double omega = curve.value("omega", 0.0);
+        int lp = 0, k = 0;
+        double best = 1e300;
+        for (const auto& sp : refined.value("special_points", json::array()))
+          if (sp.value("type", "") == "LP" && (++k, std::abs(sp.value("omega", 0.0) - omega) < best)) best = std::abs(sp.value("omega", 0.0) - omega), lp = k;
+        if (lp == 0) continue;
+        const std::string folder = "converged/" + curve.value("folder", std::string());
+        steps.push_back({folder,
+                         with_refine({"track", o_.common.case_path, "--from", dir_ + "/converged/nfrc", "--lp", std::to_string(lp), "--param",
+                                      t.parameter, "--range", number_text(t.min) + ":" + number_text(t.max), "--set",
+                                      "continuation.max_points=" + std::to_string(c_.study.max_points)}),
+                         false});
+        which.push_back(&t);
+      }
+    if (!run_steps(steps)) return false;
+    std::map<std::string, std::vector<TrackingCurve>> refined_curves;
+    for (size_t i = 0; i < steps.size(); ++i)
+      refined_curves[which[i]->parameter].push_back(read_tracking_curve_folder(dir_ + "/" + steps[i].folder, which[i]->parameter, first_output()));
+    for (const StudyTrack& t : tracked_)
+      report["tracking"].push_back({{"parameter", t.parameter},
+                                    {"extrema", compare_extrema(entries_[t.parameter]["extrema"], refined_curves[t.parameter], first_output())}});
+    summary_["convergence"] = report;
+    save();
+    return true;
   }
 
   // Figures are a convenience: a missing matplotlib costs the pictures, not the study.

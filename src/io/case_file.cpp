@@ -550,19 +550,27 @@ void read_study(const Reader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value* st = in.find(root, "study");
   if (!st) return;
   in.table(*st, "study");
-  in.check_keys(*st, "study", {"track", "max_points", "simulate_periods"});
+  in.check_keys(*st, "study", {"track", "max_points", "simulate_periods", "convergence"});
   StudySettings& study = c.study;
   study.max_points = in.integer_or(*st, "max_points", "study.max_points", study.max_points);
   if (study.max_points < 2) in.fail(&st->at("max_points"), "study.max_points", "must be >= 2");
   study.simulate_periods = in.integer_or(*st, "simulate_periods", "study.simulate_periods", study.simulate_periods);
   if (study.simulate_periods < 0) in.fail(&st->at("simulate_periods"), "study.simulate_periods", "must be >= 0");
+  if (const toml::value* conv = in.find(*st, "convergence")) {
+    in.table(*conv, "study.convergence");
+    in.check_keys(*conv, "study.convergence", {"harmonics", "samples"});
+    study.convergence_harmonics = in.integer_or(*conv, "harmonics", "study.convergence.harmonics", 0);
+    study.convergence_samples = in.integer_or(*conv, "samples", "study.convergence.samples", 0);
+    if (study.convergence_harmonics < 1 || study.convergence_samples < 2 * study.convergence_harmonics + 1)
+      in.fail(conv, "study.convergence", "expected {harmonics = H >= 1, samples = N >= 2 H + 1}");
+  }
   const toml::value* track = in.find(*st, "track");
   if (!track) return;
   if (!track->is_array()) in.fail(track, "study.track", "expected an array of tables {parameter = ..., range = [lo, hi]}");
   for (size_t i = 0; i < track->as_array().size(); ++i) {
     const std::string field = "study.track[" + std::to_string(i) + "]";
     const toml::value& t = in.table(track->as_array()[i], field);
-    in.check_keys(t, field, {"parameter", "range"});
+    in.check_keys(t, field, {"parameter", "range", "validate"});
     StudyTrack s;
     const toml::value& name = in.require(t, "parameter", field + ".parameter");
     s.parameter = in.string(name, field + ".parameter");
@@ -578,6 +586,13 @@ void read_study(const Reader& in, const toml::value& root, CaseDefinition& c) {
     const double value = c.parameters.value(c.parameters.find(s.parameter));
     if (!(s.min <= value && value <= s.max))
       in.fail(&range, field + ".range", "must contain the case's " + s.parameter + " = " + std::to_string(value) + " (tracking starts there)");
+    if (const toml::value* validate = in.find(t, "validate")) {
+      const VectorXd v = in.vector(*validate, field + ".validate");
+      for (Eigen::Index k = 0; k < v.size(); ++k) {
+        if (!(s.min <= v(k) && v(k) <= s.max)) in.fail(validate, field + ".validate", "every value must lie in the range");
+        s.validate.push_back(v(k));
+      }
+    }
     for (const StudyTrack& other : study.track)
       if (other.parameter == s.parameter) in.fail(&name, field + ".parameter", "'" + s.parameter + "' is tracked twice");
     study.track.push_back(s);

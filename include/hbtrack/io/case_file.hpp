@@ -26,11 +26,15 @@ class CaseError : public std::runtime_error {
 struct StudyTrack {
   std::string parameter;
   double min = 0, max = 0;
+  std::vector<double> validate;  // extra validation NFRCs at these values (e.g. a paper's)
 };
 struct StudySettings {
   std::vector<StudyTrack> track;
   int max_points = 400;       // per leg of a tracking curve
   int simulate_periods = 60;  // periods of the time-integration check, 0 for none
+  // The convergence check: the nominal NFRC and the tracking curves recomputed with these
+  // harmonics and samples (0: no check), their limit points and extrema compared.
+  int convergence_harmonics = 0, convergence_samples = 0;
 };
 
 struct CaseDefinition {
