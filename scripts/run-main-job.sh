@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The main job: builds hbtrack, then the study of the shipped blade (data/blade, reduced from the
-# parametric blade by scripts/make-blade-rom.sh) with `hbtrack study`, and the same chain on the
-# small examples (NFRCs, Duffing limit points tracked to their cusp, isolas search) with figures,
-# into results/, and the isola of the nonlinear absorber example.
+# The main job: builds hbtrack, then the paper's study of NASA rotor 67 (data/rotor67, built from
+# NASA's sections by scripts/make-rotor67-rom.sh) with `hbtrack study`, side by side with the
+# paper's numbers; the study of the small parametric blade (data/blade); and the small examples
+# (NFRCs, Duffing limit points tracked to their cusp, isolas search) with figures, into results/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null
@@ -10,9 +10,20 @@ cmake --build build -j "$(nproc)"
 hbtrack=./build/hbtrack
 mkdir -p results
 
-# The blade study (the [study] section of its case): nominal NFRC with stability, every limit
-# point tracked in amplitude, friction coefficient and clearance, validation NFRCs, isolas,
-# a time-integration check, figures and results/blade_study/index.md.
+# Rotor 67 (the [study] section of its case): nominal NFRC with stability, every limit point
+# tracked in amplitude, friction coefficient and clearance, validation NFRCs (the paper's values
+# and next to every extremum), isolas, time integration, the events at H = 15 and N = 2048,
+# figures and results/rotor67_study/index.md; then the same NFRC with the friction sense reversed
+# and the page against the paper, results/rotor67_study/paper_comparison.md.
+$hbtrack modes examples/rotor67/nominal.toml --count 6 -o results/rotor67_modes
+$hbtrack study examples/rotor67/nominal.toml --units m -o results/rotor67_study
+reversed=()
+for k in 0 1 2 3 4 5 6 7 8; do reversed+=(--set "elements[$k].engine_order=1"); done
+$hbtrack frc examples/rotor67/nominal.toml "${reversed[@]}" -o results/rotor67_reversed_nfrc
+/usr/bin/python3 python/compare_with_paper.py results/rotor67_study --paper data/rotor67/paper_values.json \
+  --model data/rotor67/summary.json --reversed results/rotor67_reversed_nfrc
+
+# The parametric blade: the same study on a small, fast model.
 $hbtrack modes examples/blade/nominal.toml --count 6 -o results/blade_modes
 $hbtrack study examples/blade/nominal.toml --units m -o results/blade_study
 
@@ -35,5 +46,6 @@ $hbtrack isolas examples/nltva.toml --from results/nltva_track --at 0.15 -o resu
 for folder in results/duffing_track_lp1 results/duffing_track_lp2 results/duffing_isolas results/nltva_track results/nltva_isolas; do
   $hbtrack plot "$folder"
 done
+echo "rotor 67 study: results/rotor67_study/index.md and paper_comparison.md (figures in results/rotor67_study/figures/)"
 echo "blade study: results/blade_study/index.md (figures in results/blade_study/figures/)"
 echo "examples: results/*/nfrc.png, results/*tracking.png, results/nltva_isola.png"

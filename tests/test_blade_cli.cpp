@@ -147,6 +147,9 @@ TEST_F(BladeCli, ReduceRejectsBadInputWithOneLineErrors) {
       {" --mass " + path("fe/M.mtx") + " --nodes " + path("fe/nodes.csv") + " --boundary " + tip, "go together"},
       {" --mass " + path("fe/nodes.csv") + " --stiffness " + path("fe/K.mtx") + " --nodes " + path("fe/nodes.csv") + " --boundary " + tip, "--mass: "},
       {" --mass x.mat --stiffness " + path("fe/K.mtx") + " --nodes " + path("fe/nodes.csv") + " --boundary " + tip, "name the variable"},
+      {matrices + " --boundary " + tip + " --axis 0,0", "--axis: '0,0' must be x, y, z or a nonzero direction AX,AY,AZ"},
+      {matrices + " --boundary " + tip + " --axis 0,0,0", "must be x, y, z or a nonzero direction"},
+      {matrices + " --boundary " + tip + " --axis x --axis-origin 0,0", "--axis-origin"},
   };
   for (const Case& c : cases) {
     const CliRun r = run("reduce" + c.args + " -o " + path("rom"));

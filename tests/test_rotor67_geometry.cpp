@@ -150,3 +150,21 @@ TEST(BladeGenerator, ParametricBladeTurnsWithItsLeadingEdgeAhead) {
 }
 
 }  // namespace
+
+namespace {
+
+// `reduce --axis`: the frame about any axis is the frame about X carried by the rotation that
+// takes X to that axis (here X -> Y -> Z -> X, and an axis through another origin).
+TEST(CylindricalFrame, AboutAnyAxisIsTheFrameAboutXRotated) {
+  Eigen::Matrix3d turn;
+  turn << 0, 0, 1, 1, 0, 0, 0, 1, 0;  // X -> Y, Y -> Z, Z -> X
+  const Eigen::Vector3d p(0.03, 0.24, -0.05), origin(1.0, -2.0, 0.5);
+  const hbtrack::CylindricalFrame about_x = hbtrack::cylindrical_frame_about_x(p);
+  const hbtrack::CylindricalFrame about_y = hbtrack::cylindrical_frame(origin + turn * p, origin, 3.0 * Eigen::Vector3d::UnitY());
+  EXPECT_NEAR(about_y.radius, about_x.radius, 1e-15);
+  EXPECT_LT((about_y.directions - turn * about_x.directions).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_THROW(hbtrack::cylindrical_frame(p, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), std::invalid_argument);
+  EXPECT_THROW(hbtrack::cylindrical_frame(Eigen::Vector3d(2, 0, 0), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()), std::invalid_argument);
+}
+
+}  // namespace

@@ -1,0 +1,249 @@
+"""A study side by side with a paper's published numbers (data/rotor67/paper_values.json for the
+GT2023 paper on rotor 67): the tables as Markdown and the counterparts of the paper's Figs 3, 7
+and 12 in STUDY_DIR/figures/paper_fig*.png|pdf.
+
+    /usr/bin/python3 python/compare_with_paper.py STUDY_DIR --paper data/rotor67/paper_values.json \
+        --model data/rotor67/summary.json [--reversed NFRC_DIR]
+
+Frequencies are also given as omega / omega_1B of each model (ours and the paper's), because the
+two blades' first bending frequencies differ (data/rotor67/README.md). The paper's ||r(t)||_inf
+values are signed extremes of the radial displacement (inward, negative): they compare with
+min_le and min_te.
+"""
+import argparse
+import json
+import os
+import sys
+
+from .results import read_result, tracking_curve
+
+
+def _load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def _mm(v):
+    return f"{1e3 * v:.3f}"
+
+
+def _limit_points(summary):
+    return [p for p in summary.get("special_points", []) if p.get("type") == "LP"]
+
+
+def _resonance(points):
+    """The limit point of most negative leading-edge extreme: the nonlinear resonance."""
+    return min(points, key=lambda p: p.get("min_le", 0.0)) if points else None
+
+
+def frequency_tables(paper, full_model, reduced):
+    rows = ["| mode | paper (Table 2) | this model, full FE | vs paper | reduced (39 dofs) |", "|---|---|---|---|---|"]
+    for k, (mode, w_paper) in enumerate(paper["table2_rad_s"].items()):
+        w = full_model["natural_frequencies"][k]
+        rows.append(f"| {mode} | {w_paper:.2f} | {w:.2f} | {100 * (w / w_paper - 1):+.1f} % | {reduced['natural_frequencies'][k]:.2f} |")
+    return rows
+
+
+def nfrc_table(paper, nfrc, w1b, label):
+    lps = _limit_points(nfrc)
+    rows = [f"| {label} | LPs | omega (rad/s) | omega / omega_1B | min le (mm) | min te (mm) |", "|---|---|---|---|---|---|"]
+    for k, p in enumerate(lps, start=1):
+        rows.append(f"| LP{k} | | {p['omega']:.2f} | {p['omega'] / w1b:.4f} | {_mm(p['min_le'])} | {_mm(p['min_te'])} |")
+    peak = _resonance(lps)
+    if peak:
+        rows.append(f"| resonance (LP{lps.index(peak) + 1}) | {len(lps)} | {peak['omega']:.2f} | {peak['omega'] / w1b:.4f} | "
+                    f"{_mm(peak['min_le'])} | {_mm(peak['min_te'])} |")
+    f3 = paper["fig3"]
+    rows.append(f"| paper, resonance ({f3['resonance']}) | {f3['limit_points']} | | | {_mm(f3['min_le_m'])} | {_mm(f3['min_te_m'])} |")
+    return rows
+
+
+def events_table(paper, entry, w1b, w1b_paper):
+    """Births (minima of the amplitude along the tracking curves) and merges (maxima)."""
+    rows = ["| event | source | omega (rad/s) | omega / omega_1B | A |", "|---|---|---|---|---|"]
+    for kind, name in (("min", "birth"), ("max", "merge")):
+        for e in sorted((e for e in entry.get("extrema", []) if e["type"] == kind), key=lambda e: e["value"]):
+            rows.append(f"| {name} | this model | {e['omega']:.2f} | {e['omega'] / w1b:.4f} | {e['value']:.2f} |")
+        for e in paper["table3_births" if kind == "min" else "table4_merges"]:
+            rows.append(f"| {name} {e['family']} | paper | {e['omega']:.2f} | {e['omega'] / w1b_paper:.4f} | {e['amplitude']:.2f} |")
+    return rows
+
+
+def extrema_and_isolas(entry):
+    param = entry["parameter"]
+    rows = [f"| {param} extremum | value | omega (rad/s) | curve |", "|---|---|---|---|"]
+    for e in sorted(entry.get("extrema", []), key=lambda e: e["value"]):
+        rows.append(f"| {e['type']} | {e['value']:.6g} | {e['omega']:.2f} | {e['curve']} |")
+    isolas = [(v["value"], b) for v in entry.get("validations", []) for b in v.get("isola_branches", [])]
+    rows += ["", f"Isolated branches computed ({len(isolas)}):", ""]
+    if isolas:
+        rows += [f"| {param} | omega range (rad/s) | points | unstable points |", "|---|---|---|---|"]
+        rows += [f"| {value:.6g} | {b['omega_range'][0]:.2f} - {b['omega_range'][1]:.2f} | {b['points']} | {b['unstable_points']} |"
+                 for value, b in isolas]
+    failed = [v for v in entry.get("validations", []) if v.get("stop_reason") != "reached_end"]
+    if failed:
+        rows += ["", "Validation NFRCs that did not reach the end of the range: " +
+                 ", ".join(f"{v['value']:.6g} ({v['stop_reason']})" for v in failed) + "."]
+    return rows
+
+
+def convergence_rows(summary):
+    conv = summary.get("convergence")
+    if not conv:
+        return ["No convergence check in this study."]
+    rows = [f"H = 10, N = 1024 against H = {conv['harmonics']}, N = {conv['samples']}:", "",
+            "| event | omega | refined omega | difference | value | refined value | difference |", "|---|---|---|---|---|---|---|"]
+    for lp in conv.get("limit_points", []):
+        if "refined_omega" in lp:
+            rows.append(f"| NFRC LP | {lp['omega']:.2f} | {lp['refined_omega']:.2f} | {100 * lp['relative_difference_omega']:+.3f} % | "
+                        f"max le {_mm(lp['max_le'])} mm | {_mm(lp['refined_max_le'])} mm | {100 * lp['relative_difference_max_le']:+.2f} % |")
+    for t in conv.get("tracking", []):
+        for e in t.get("extrema", []):
+            if "refined_value" in e:
+                rows.append(f"| {t['parameter']} {e['type']} | {e['omega']:.2f} | {e['refined_omega']:.2f} | "
+                            f"{100 * e['relative_difference_omega']:+.3f} % | {e['value']:.6g} | {e['refined_value']:.6g} | "
+                            f"{100 * e['relative_difference_value']:+.2f} % |")
+            else:
+                rows.append(f"| {t['parameter']} {e['type']} | {e['omega']:.2f} | none found | | {e['value']:.6g} | | |")
+    return rows
+
+
+def simulation_rows(summary):
+    rows = []
+    for key, title in (("simulation", "nominal NFRC, stable point next to the resonance"), ("isola_simulation", "isolated branch, stable point")):
+        s = summary.get(key)
+        if not s:
+            rows.append(f"- {title}: none")
+            continue
+        diffs = ", ".join(f"{o['name']} {100 * o['relative_difference']:+.2f} %" for o in s["outputs"] if o["name"].startswith(("max_", "min_")))
+        rows.append(f"- {title} (omega = {s['omega']:.2f}, {s['periods']} periods, periodic: {s['converged']}): {diffs}")
+    return rows
+
+
+def write_figures(study_dir, paper, w1b, reversed_dir=None):
+    import matplotlib
+    if "MPLBACKEND" not in os.environ:
+        matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from .plots import save_figure
+
+    files = []
+    nfrc = read_result(os.path.join(study_dir, "nfrc"))
+    # Fig. 3: the signed inward extremes of leading and trailing edge, limit points numbered.
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    b = nfrc["branch"]
+    if reversed_dir:
+        r = read_result(reversed_dir)["branch"]
+        ax.plot(r["omega"] / w1b, 1e3 * r["min_le"], color="0.75", lw=1, label="le, friction sense reversed")
+        ax.plot(r["omega"] / w1b, 1e3 * r["min_te"], color="0.75", lw=1, ls="--", label="te, friction sense reversed")
+    ax.plot(b["omega"] / w1b, 1e3 * b["min_le"], color="C0", lw=1.3, label="leading edge (n1)")
+    ax.plot(b["omega"] / w1b, 1e3 * b["min_te"], color="C1", lw=1.3, ls="--", label="trailing edge (n9)")
+    for k, p in enumerate(_limit_points(nfrc["summary"]), start=1):
+        for key, dy in (("min_le", 6), ("min_te", -12)):
+            ax.plot(p["omega"] / w1b, 1e3 * p[key], "o", color="k", ms=4)
+        ax.annotate(f"LP{k}", (p["omega"] / w1b, 1e3 * p["min_le"]), textcoords="offset points", xytext=(5, 6), fontsize=8)
+    f3 = paper["fig3"]
+    for value, style, label in ((f3["min_le_m"], ":", "paper, le at LP3"), (f3["min_te_m"], "-.", "paper, te at LP3")):
+        ax.axhline(1e3 * value, color="C3", ls=style, lw=1, label=label)
+    ax.set_xlabel(r"$\omega / \omega_{1B}$")
+    ax.set_ylabel(r"inward extreme of $r(t)$ [mm]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="lower left")
+    fig.tight_layout()
+    files += save_figure(fig, os.path.join(study_dir, "figures", "paper_fig3"))
+
+    # Fig. 7: the amplitude tracking curves in (omega / omega_1B, A), births and merges marked.
+    summary = _load(os.path.join(study_dir, "summary.json"))
+    entry = next((t for t in summary.get("tracking", []) if t["parameter"] == "amplitude"), None)
+    if entry:
+        fig, ax = plt.subplots(figsize=(6.5, 4))
+        for c in entry["curves"]:
+            if "folder" in c:
+                curve = tracking_curve(read_result(os.path.join(study_dir, c["folder"])))
+                ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=f"LP{c['lp']} tracked")
+        for e in entry.get("extrema", []):
+            ax.plot(e["omega"] / w1b, e["value"], "v" if e["type"] == "min" else "^", color="k", ms=6)
+        w_paper = paper["table2_rad_s"]["1B"]
+        for key, marker, label in (("table3_births", "v", "paper, births (Table 3)"), ("table4_merges", "^", "paper, merges (Table 4)")):
+            pts = paper[key]
+            ax.plot([p["omega"] / w_paper for p in pts], [p["amplitude"] for p in pts], marker, mfc="none", color="C3", ms=8, ls="none", label=label)
+        ax.set_xlabel(r"$\omega / \omega_{1B}$ (each model's own 1B)")
+        ax.set_ylabel("A")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        files += save_figure(fig, os.path.join(study_dir, "figures", "paper_fig7"))
+
+    # Fig. 12: the nominal NFRC, the isolas at the nominal parameter values, time integration dots.
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    ax.plot(b["omega"], 1e3 * b["min_le"], color="C0", lw=1.2, label="NFRC, leading edge")
+    nominal = nfrc["summary"]["options"]["parameters"]
+    for t in summary.get("tracking", []):
+        for v in t.get("validations", []):
+            if abs(v["value"] - nominal.get(t["parameter"], float("nan"))) > 1e-9 * abs(v["value"]):
+                continue
+            for br in v.get("isola_branches", []):
+                iso = read_result(os.path.join(study_dir, br["folder"]))["branch"]
+                ax.plot(iso["omega"], 1e3 * iso["min_le"], color="C2", lw=1.2, label="isolated branch")
+    for key in ("simulation", "isola_simulation"):
+        s = summary.get(key)
+        if s:
+            m = next(o for o in s["outputs"] if o["name"] == "min_le")
+            ax.plot(s["omega"], 1e3 * m["simulation"], "o", color="k", ms=5, label="time integration")
+    handles, labels = ax.get_legend_handles_labels()
+    unique = dict(zip(labels, handles))
+    ax.legend(unique.values(), unique.keys(), fontsize=7)
+    ax.set_xlabel(r"$\omega$ [rad/s]")
+    ax.set_ylabel(r"inward extreme of $r_1(t)$ [mm]")
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    files += save_figure(fig, os.path.join(study_dir, "figures", "paper_fig12"))
+    return files
+
+
+def comparison_page(study_dir, paper, model_summary, full_model_summary, reversed_dir=None):
+    summary = _load(os.path.join(study_dir, "summary.json"))
+    nfrc = _load(os.path.join(study_dir, "nfrc", "summary.json"))
+    w1b = model_summary["natural_frequencies"][0]
+    w1b_paper = paper["table2_rad_s"]["1B"]
+    lines = ["# Against the paper", "", f"Source: {paper['source']}.", "",
+             "## Table 2: first frequencies (rad/s)", ""] + frequency_tables(paper, full_model_summary, model_summary)
+    lines += ["", "## Fig. 3: the nominal NFRC (A = 140, mu = 0.15, c = 0.4 mm)", ""] + nfrc_table(paper, nfrc, w1b, "this model")
+    if reversed_dir:
+        lines += ["", "The same with the friction sense reversed (the blade turning with its trailing edge ahead):", ""]
+        lines += nfrc_table(paper, _load(os.path.join(reversed_dir, "summary.json")), w1b, "reversed sense")
+    for t in summary.get("tracking", []):
+        if t["parameter"] == "amplitude":
+            lines += ["", "## Tables 3-4: births and merges of isolated branches in A", ""] + events_table(paper, t, w1b, w1b_paper)
+    for t in summary.get("tracking", []):
+        lines += ["", f"## Tracking in {t['parameter']}", ""] + extrema_and_isolas(t)
+    lines += ["", "Paper, mu: " + paper["mu"] + ".", "", "Paper, clearance: " + paper["clearance"] + "."]
+    lines += ["", "## Convergence of the events", ""] + convergence_rows(summary)
+    lines += ["", "## Time integration", ""] + simulation_rows(summary)
+    lines += ["", "![Fig. 3](figures/paper_fig3.png)", "", "![Fig. 7](figures/paper_fig7.png)", "", "![Fig. 12](figures/paper_fig12.png)", ""]
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="compare_with_paper.py", description=__doc__.splitlines()[0])
+    parser.add_argument("study", help="an hbtrack study folder")
+    parser.add_argument("--paper", required=True, help="the paper's values (JSON, e.g. data/rotor67/paper_values.json)")
+    parser.add_argument("--model", required=True, help="the reduced model's summary (e.g. data/rotor67/summary.json)")
+    parser.add_argument("--full-model", help="the full model's summary (default: full_model_summary.json beside --model)")
+    parser.add_argument("--reversed", help="an NFRC folder of the same case with the friction sense reversed")
+    args = parser.parse_args(argv)
+    try:
+        paper, model = _load(args.paper), _load(args.model)
+        full = _load(args.full_model or os.path.join(os.path.dirname(args.model), "full_model_summary.json"))
+        page = comparison_page(args.study, paper, model, full, args.reversed)
+        files = write_figures(args.study, paper, model["natural_frequencies"][0], args.reversed)
+    except (OSError, KeyError, ValueError) as error:
+        print(f"compare_with_paper.py: {error}", file=sys.stderr)
+        return 2
+    out = os.path.join(args.study, "paper_comparison.md")
+    with open(out + ".tmp", "w") as f:
+        f.write(page)
+    os.replace(out + ".tmp", out)
+    for name in [out, *files]:
+        print(name)
+    return 0
