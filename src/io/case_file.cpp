@@ -561,8 +561,9 @@ void read_study(const Reader& in, const toml::value& root, CaseDefinition& c) {
     in.check_keys(*conv, "study.convergence", {"harmonics", "samples"});
     study.convergence_harmonics = in.integer_or(*conv, "harmonics", "study.convergence.harmonics", 0);
     study.convergence_samples = in.integer_or(*conv, "samples", "study.convergence.samples", 0);
-    if (study.convergence_harmonics < 1 || study.convergence_samples < 2 * study.convergence_harmonics + 1)
-      in.fail(conv, "study.convergence", "expected {harmonics = H >= 1, samples = N >= 2 H + 1}");
+    // harmonics = 0 turns the check off (e.g. with --set study.convergence.harmonics=0).
+    if (study.convergence_harmonics < 0 || (study.convergence_harmonics > 0 && study.convergence_samples < 2 * study.convergence_harmonics + 1))
+      in.fail(conv, "study.convergence", "expected {harmonics = H >= 1, samples = N >= 2 H + 1} (H = 0: no check)");
   }
   const toml::value* track = in.find(*st, "track");
   if (!track) return;
