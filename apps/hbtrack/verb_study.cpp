@@ -19,7 +19,7 @@
 #include "cli_common.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
-#include "study_checks.hpp"
+#include "study_comparisons.hpp"
 #include "study_curves.hpp"
 #include "study_report.hpp"
 #include "task_runner.hpp"

@@ -1,4 +1,4 @@
-#include "study_checks.hpp"
+#include "study_comparisons.hpp"
 
 #include <cmath>
 
