@@ -51,14 +51,16 @@ TEST(BranchSwitching, CoupledDuffingBranchIsAsymmetricAndMeetsTheSymmetricOneAtT
   EXPECT_LT((hb.row(0) - hb.row(1)).norm(), 1e-8 * hb.norm());
 
   // The leg back through the BP turns there in omega (a pitchfork: omega - omega_bp ~ e^2 on
-  // the new branch): its located LP is the BP, to the location tolerance of both (secant on
-  // the Newton-converged branch; 1e-6 relative is far above it and far below a step, 1e-2).
+  // the new branch, x - x_bp ~ e): its located LP is the BP. In omega to 1e-6 relative (both
+  // located by secants on Newton-converged branches; a step is 1e-2). In the state only to the
+  // square root of that accuracy (e ~ sqrt(d omega)): 1e-3 relative, still 300 times below the
+  // branch's asymmetry above (measured: 5e-5).
   const SpecialPoint* meet = nullptr;
   for (const SpecialPoint& sp : s.through.continuation.special_points)
     if (sp.type == "LP" && sp.located && (!meet || std::abs(sp.lambda - bp->lambda) < std::abs(meet->lambda - bp->lambda))) meet = &sp;
   ASSERT_NE(meet, nullptr);
   EXPECT_NEAR(meet->lambda, bp->lambda, 1e-6 * bp->lambda);
-  EXPECT_LT((meet->u - bp->u).cwiseAbs().maxCoeff(), 1e-6 * bp->u.cwiseAbs().maxCoeff());
+  EXPECT_LT((meet->u - bp->u).cwiseAbs().maxCoeff(), 1e-3 * bp->u.cwiseAbs().maxCoeff());
 }
 
 TEST(SwitchCli, FollowsTheNewBranchAndRejectsAPointThatIsNoBranchPoint) {
