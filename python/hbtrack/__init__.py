@@ -13,7 +13,7 @@ there); plotting and reading result folders also work from python/ without a bui
 """
 from . import plots
 from ._core import core as _core
-from .analysis import frc, isolas, limit_point, track
+from .analysis import backbone, continuation, frc, isolas, limit_point, track
 from .cases import case_from_arrays, load_case
 from .model import normal_modes, output_harmonics, reduce
 from .results import read_result
@@ -23,6 +23,6 @@ if _core is not None:
     from ._hbtrack import (Case, ContinuationOptions, FoldTrackingOptions, HarmonicBalanceOptions, NfrcOptions,
                            StabilityOptions, SteadyStateOptions)
 
-__all__ = ["load_case", "case_from_arrays", "frc", "track", "isolas", "limit_point", "simulate", "reduce",
+__all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "track", "isolas", "limit_point", "simulate", "reduce",
            "normal_modes", "output_harmonics", "read_result", "plots", "Case", "ContinuationOptions",
            "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]

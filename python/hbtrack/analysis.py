@@ -6,7 +6,7 @@ functions. Results are dicts holding what the CLI writes to a result folder:
     special_points  list of dicts, as summary.json's special_points
     special_states  2-D array, special_states.csv (frc only)
     summary         dict, as summary.json
-    kind            "frc", "track", "isolas" (as hbtrack.results.read_result names folders)
+    kind            "frc", "continue", "track", "isolas" (as hbtrack.results.read_result names folders)
 
 A run that stops early (summary["stop_reason"]) still returns what it computed, as the CLI keeps
 its points; bad arguments raise ValueError naming the argument.
@@ -20,6 +20,36 @@ def frc(case):
     """The NFRC of `case` over its frequency range, with stability and special points."""
     result = require_core().frc(case)
     result["kind"] = "frc"
+    return result
+
+
+def continuation(case, *, param, omega, range):  # noqa: A002 - the CLI's --range
+    """`hbtrack continue`: the periodic solution at fixed frequency `omega` followed in the named
+    parameter `param` from range[0] towards range[1], with stability and special points (LPs in
+    the parameter located). branch holds the parameter as a column beside omega."""
+    try:
+        start, end = (float(v) for v in range)
+    except (TypeError, ValueError):
+        raise ValueError(f"range: expected (LO, HI), got {range!r}") from None
+    result = require_core().continuation(case, param, float(omega), start, end)
+    result["kind"] = "continue"
+    return result
+
+
+def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
+    """`hbtrack backbone`: the nonlinear mode of linear mode `mode` (from 1) by the extended
+    periodic motion concept, from modal amplitude range[0] (near the linear mode) to range[1].
+    branch holds amplitude, omega, damping_ratio, xi and the outputs' extremes and harmonics."""
+    if isinstance(mode, bool) or not isinstance(mode, (int, np.integer)) or mode < 1:
+        raise ValueError(f"mode: must be an integer >= 1, got {mode!r}")
+    try:
+        start, end = (float(v) for v in range)
+    except (TypeError, ValueError):
+        raise ValueError(f"range: expected (LO, HI), got {range!r}") from None
+    if not 0 < start < end:
+        raise ValueError(f"range: must be (LO, HI) with 0 < LO < HI, got {range!r}")
+    result = require_core().backbone(case, int(mode), start, end)
+    result["kind"] = "backbone"
     return result
 
 

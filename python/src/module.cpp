@@ -25,4 +25,5 @@ PYBIND11_MODULE(_hbtrack, m) {
   hbtrack::python::bind_analysis(m);
   hbtrack::python::bind_timeint(m);
   hbtrack::python::bind_model(m);
+  hbtrack::python::bind_continuation(m);
 }

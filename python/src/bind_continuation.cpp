@@ -1,0 +1,110 @@
+// Continuation in a named parameter at fixed omega and nonlinear modes (backbones): the
+// computations of hbtrack continue / backbone, with the same tables and summary fields.
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "bindings.hpp"
+#include "hbtrack/analysis/backbone.hpp"
+#include "hbtrack/analysis/parameter_continuation.hpp"
+#include "hbtrack/io/backbone_tables.hpp"
+#include "hbtrack/io/case_file.hpp"
+#include "hbtrack/io/parameter_tables.hpp"
+#include "hbtrack/io/result_tables.hpp"
+
+namespace hbtrack::python {
+
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+HarmonicBalance system_of(const CaseDefinition& c) {
+  try {
+    return HarmonicBalance(c.model, c.elements, c.parameters, c.harmonic_balance);
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(c.path + ": " + e.what());
+  }
+}
+
+py::dict continuation(const CaseDefinition& c, const std::string& param, double omega, double start, double end) {
+  const auto t0 = Clock::now();
+  if (!(omega > 0) || !std::isfinite(omega)) throw CaseError("omega: must be > 0 and finite");
+  if (!std::isfinite(start) || !std::isfinite(end) || start == end) throw CaseError("range: must be (LO, HI), finite, LO != HI");
+  HarmonicBalance hbm = system_of(c);
+  const int parameter = parameter_index(hbm.parameters(), param, "param");
+  json summary = {{"verb", "continue"}, {"options", options_json(c, hbm)}};
+  summary["options"]["continue"] = parameter_continuation_options(param, omega, start, end);
+  const double nominal = hbm.parameters().value(parameter);
+  ParameterBranchResult r;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    r = continue_in_parameter(hbm, parameter, omega, start, end, c.nfrc, c.outputs,
+                              [&](const BranchPoint&, const ParameterBranchPoint&, int) { return !(interrupted = python_interrupted()); });
+  }
+  if (interrupted) throw py::error_already_set();
+  hbm.parameters().value(parameter) = nominal;
+  Table branch{parameter_branch_header(c, param), {}}, states{state_header(hbm.unknowns()), {}}, special{state_header(hbm.unknowns()), {}};
+  for (size_t i = 0; i < r.points.size(); ++i) {
+    branch.rows.push_back(parameter_branch_row(r.points[i]));
+    states.rows.push_back(state_row(omega, r.continuation.points[i].u));
+  }
+  for (const auto& sp : r.continuation.special_points) special.rows.push_back(state_row(omega, sp.u));
+  add_parameter_branch_summary(summary, c, hbm, r, parameter);
+  summary["timings"] = {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}, {"continuation_s", r.continuation.summary.wall_s}};
+  py::dict out;
+  out["branch"] = branch.columns();
+  out["states"] = states.matrix();
+  out["special_states"] = special.matrix();
+  out["summary"] = to_python(summary);
+  out["special_points"] = out["summary"]["special_points"];
+  return out;
+}
+
+// `hbtrack backbone`: the case with every dof as unknown (the CLI's override), mode from 1.
+py::dict backbone(CaseDefinition c, int mode, double start, double end) {
+  const auto t0 = Clock::now();
+  c.harmonic_balance.condensation = "none";
+  HarmonicBalance hbm = system_of(c);
+  BackboneOptions options;
+  options.mode = mode;
+  options.amplitude_start = start;
+  options.amplitude_end = end;
+  options.continuation = c.nfrc.continuation;
+  json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}};
+  summary["options"]["backbone"] = backbone_options_json(options);
+  BackboneResult r;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    r = compute_backbone(hbm, options, c.outputs, [&](const BranchPoint&, const BackbonePoint&, int) { return !(interrupted = python_interrupted()); });
+  }
+  if (interrupted) throw py::error_already_set();
+  Table branch{backbone_header(c, hbm.basis().harmonics()), {}}, states{backbone_state_header(hbm.unknowns()), {}};
+  for (size_t i = 0; i < r.points.size(); ++i) {
+    branch.rows.push_back(backbone_row(r.points[i]));
+    states.rows.push_back(backbone_state_row(r.points[i], r.continuation.points[i].u, hbm.unknowns()));
+  }
+  add_backbone_summary(summary, c, hbm, r);
+  summary["timings"] = {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}, {"continuation_s", r.continuation.summary.wall_s}};
+  py::dict out;
+  out["branch"] = branch.columns();
+  out["states"] = states.matrix();
+  out["summary"] = to_python(summary);
+  out["special_points"] = out["summary"]["special_points"];
+  return out;
+}
+
+}  // namespace
+
+void bind_continuation(py::module_& m) {
+  m.def("continuation", &continuation, py::arg("case"), py::arg("param"), py::arg("omega"), py::arg("start"), py::arg("end"),
+        "continuation in a named parameter at fixed omega: {branch, states, special_points, special_states, summary}");
+  m.def("backbone", &backbone, py::arg("case"), py::arg("mode"), py::arg("start"), py::arg("end"),
+        "nonlinear mode (EPMC) from the linear mode: {branch, states, special_points, summary}");
+}
+
+}  // namespace hbtrack::python

@@ -1,0 +1,57 @@
+#include "hbtrack/io/parameter_tables.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "hbtrack/io/result_tables.hpp"
+
+namespace hbtrack {
+
+using nlohmann::json;
+
+std::vector<std::string> parameter_branch_header(const CaseDefinition& c, const std::string& parameter) {
+  std::vector<std::string> h = branch_header(c);
+  h.insert(h.begin() + 1, parameter);
+  return h;
+}
+
+std::vector<double> parameter_branch_row(const ParameterBranchPoint& p) {
+  std::vector<double> row = branch_row(p.recorded);
+  row.insert(row.begin() + 1, p.parameter);
+  return row;
+}
+
+json parameter_continuation_options(const std::string& parameter, double omega, double start, double end) {
+  return {{"parameter", parameter}, {"omega", omega}, {"range", {start, end}}};
+}
+
+void add_parameter_branch_summary(json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const ParameterBranchResult& r,
+                                  int parameter) {
+  const auto& s = r.continuation.summary;
+  const std::string& name = hbm.parameters().names()[static_cast<size_t>(parameter)];
+  summary["stop_reason"] = s.stop_reason;
+  summary["points"] = s.points;
+  summary["newton_iterations"] = s.newton_iterations;
+  summary["failed_steps"] = s.failed_steps;
+  summary["step_halvings"] = s.step_halvings;
+  summary["jacobian_evaluations"] = s.jacobian_evaluations;
+  summary["chord_iterations"] = s.chord_iterations;
+  summary["residual_evaluations"] = s.residual_evaluations;
+  summary["factorizations"] = s.factorizations;
+  summary["options"]["continuation"]["length_scale"] = r.length_scale;
+  summary["outputs"] = outputs_json(c);
+  const double omega = summary["options"]["continue"]["omega"].get<double>();
+  const double kept = hbm.parameters().value(parameter);
+  json special = json::array();
+  for (const auto& sp : r.continuation.special_points) {
+    json j = {{"type", sp.type}, {"index", sp.index}, {"omega", omega}, {name, sp.lambda}, {"located", sp.located}};
+    j["parameters"] = summary["options"]["parameters"];
+    j["parameters"][name] = sp.lambda;
+    hbm.parameters().value(parameter) = sp.lambda;  // the outputs of the point itself
+    add_outputs(j, c, record_point(hbm, sp.u, omega, c.outputs));
+    special.push_back(j);
+  }
+  hbm.parameters().value(parameter) = kept;
+  summary["special_points"] = special;
+}
+
+}  // namespace hbtrack
