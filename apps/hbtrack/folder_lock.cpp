@@ -44,13 +44,14 @@ void lock_result_folder(const std::string& dir) {
   if (held.count(key)) return;
   const std::string path = lock_path(dir);
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error(path + ": cannot open: " + std::strerror(errno));
+  if (fd < 0) throw std::runtime_error(path + ": cannot open for writing: " + std::strerror(errno));
   struct flock l = whole_file(F_WRLCK);
   if (::fcntl(fd, F_OFD_SETLK, &l) != 0) {
     const int error = errno;
     const long owner = pid_in(fd);
     ::close(fd);
-    if (error != EAGAIN && error != EACCES) throw std::runtime_error(path + ": cannot lock: " + std::strerror(error));
+    // A file system without record locks (some network or FUSE mounts): run unguarded, as before.
+    if (error != EAGAIN && error != EACCES) return;
     throw CaseError("-o: " + dir + " is being written by another hbtrack run" + (owner > 0 ? " (pid " + std::to_string(owner) + ")" : "") +
                     "; wait for it to end or stop it");
   }
