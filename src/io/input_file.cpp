@@ -24,13 +24,15 @@ std::string read_bounded_file(const std::string& path, std::size_t max_bytes, co
   require_regular_file(path, what);
   std::ifstream file(path, std::ios::binary);
   if (!file) throw CaseError(path + ": cannot read: " + std::strerror(errno));
-  // Read at most one byte past the limit: the file may grow between the check and the read.
-  std::string text(max_bytes + 1, '\0');
-  file.read(text.data(), static_cast<std::streamsize>(text.size()));
+  // In chunks, stopping one byte past the limit: the file may grow after the check.
+  std::string text;
+  char chunk[1 << 16];
+  while (text.size() <= max_bytes && file.read(chunk, sizeof chunk).gcount() > 0)
+    text.append(chunk, static_cast<std::size_t>(file.gcount()));
   if (file.bad()) throw CaseError(path + ": cannot read: " + std::strerror(errno));
-  text.resize(static_cast<std::size_t>(file.gcount()));
   if (text.size() > max_bytes)
-    throw CaseError(path + ": larger than " + std::to_string(max_bytes >> 20) + " MiB, the limit for " + what);
+    throw CaseError(path + ": larger than " + (max_bytes >= (1u << 20) ? std::to_string(max_bytes >> 20) + " MiB" : std::to_string(max_bytes) + " bytes") +
+                    ", the limit for " + what);
   return text;
 }
 
