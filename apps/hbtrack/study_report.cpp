@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "hbtrack/io/results_writer.hpp"
+
 namespace hbtrack::cli {
 
 namespace {
@@ -109,7 +111,7 @@ void write_study_report(const std::string& dir, const json& s) {
   out << "## Steps\n\n| folder | exit code | time (s) |\n|---|---|---|\n";
   for (const auto& st : s["steps"])
     out << "| " << st.value("folder", "") << " | " << st.value("exit_code", 0) << " | " << num(st.value("wall_s", 0.0), "%.1f") << " |\n";
-  std::ofstream(dir + "/index.md") << out.str();
+  write_file_atomically(dir + "/index.md", out.str());
 }
 
 }  // namespace hbtrack::cli

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "cli_common.hpp"
+#include "hbtrack/io/input_file.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -17,6 +18,14 @@ namespace {
 // 12 significant digits: LO:HI:COUNT steps print without round-off tails (0.3, not
 // 0.30000000000000004), and the text is what the task gets, so sweep.csv is exact.
 std::string value_text(double v) { return number_text(v, 12); }
+
+// `count` as text: "2000000", or "more than 100000" where reading stopped at the limit.
+CaseError too_many_tasks(const std::string& where, const std::string& count) {
+  return CaseError(where + ": " + count + " tasks, more than the " + std::to_string(kMaxSweepTasks) +
+                   " one sweep runs (split it into several sweeps)");
+}
+
+std::string more_than_the_limit() { return "more than " + std::to_string(kMaxSweepTasks); }
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
@@ -57,12 +66,14 @@ std::vector<std::string> parse_sweep_values(const std::string& name, const std::
   if (range.size() == 3) {
     const double lo = parse_number(flag + " LO", trimmed(range[0])), hi = parse_number(flag + " HI", trimmed(range[1]));
     const long count = parse_integer(flag + " COUNT", trimmed(range[2]), 1);
+    if (static_cast<unsigned long>(count) > kMaxSweepTasks) throw too_many_tasks(flag + " COUNT", std::to_string(count));
     for (long i = 0; i < count; ++i)
       values.push_back(value_text(i + 1 == count && count > 1 ? hi : lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(std::max(count - 1, 1L))));
     return values;
   }
   if (range.size() != 1) throw CaseError(flag + ": expected A,B,... or LO:HI:COUNT, got '" + spec + "'");
   for (const std::string& item : split(spec, ',')) {
+    if (values.size() == kMaxSweepTasks) throw too_many_tasks(flag, more_than_the_limit());
     if (trimmed(item).empty()) throw CaseError(flag + ": empty value in the list '" + spec + "'");
     values.push_back(value_text(parse_number(flag, trimmed(item))));
   }
@@ -74,9 +85,20 @@ SweepGrid cartesian_grid(const std::vector<std::string>& names, const std::vecto
   if (names.size() != specs.size())
     throw CaseError("--values: one per --param, in the same order (got " + std::to_string(names.size()) + " --param and " +
                     std::to_string(specs.size()) + " --values)");
+  std::vector<std::vector<std::string>> value_lists;
+  double count = 1;  // a double: the product of many counts overflows no integer check
+  for (size_t j = 0; j < names.size(); ++j) {
+    value_lists.push_back(parse_sweep_values(names[j], specs[j]));
+    count *= static_cast<double>(value_lists.back().size());
+  }
+  if (count > static_cast<double>(kMaxSweepTasks)) {
+    char text[32];
+    std::snprintf(text, sizeof text, count < 1e15 ? "%.0f" : "%.3g", count);
+    throw too_many_tasks("--values", text);
+  }
   SweepGrid grid{names, {{}}};
   for (size_t j = 0; j < names.size(); ++j) {
-    const std::vector<std::string> values = parse_sweep_values(names[j], specs[j]);
+    const std::vector<std::string>& values = value_lists[j];
     std::vector<std::vector<std::string>> product;
     for (const auto& task : grid.tasks)
       for (const std::string& v : values) {
@@ -89,8 +111,7 @@ SweepGrid cartesian_grid(const std::vector<std::string>& names, const std::vecto
 }
 
 SweepGrid read_samples(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw CaseError("--samples: cannot read " + path);
+  std::istringstream in(read_bounded_file(path, kMaxCaseFileBytes, "a --samples CSV table"));
   std::string line;
   if (!std::getline(in, line) || trimmed(line).empty()) throw CaseError(path + ":1: empty, expected a header naming the parameters (e.g. mu,clearance)");
   SweepGrid grid;
@@ -108,6 +129,7 @@ SweepGrid read_samples(const std::string& path) {
     const std::string where = path + ":" + std::to_string(number);
     if (cells.size() != grid.names.size())
       throw CaseError(where + ": expected " + std::to_string(grid.names.size()) + " values, got " + std::to_string(cells.size()));
+    if (grid.tasks.size() == kMaxSweepTasks) throw too_many_tasks(path, more_than_the_limit());
     std::vector<std::string> task;
     for (const std::string& cell : cells) task.push_back(value_text(parse_number(where, trimmed(cell))));
     grid.tasks.push_back(task);

@@ -24,6 +24,10 @@ struct SweepTracking {
   double min = 0, max = 0;
 };
 
+// The most tasks one sweep runs (README, Sweeps): each is a child process and a folder, and a
+// typo such as 1:2:100000000 must fail at once rather than exhaust memory or the disk.
+inline constexpr std::size_t kMaxSweepTasks = 100000;
+
 // "A,B,C" or "LO:HI:COUNT" (COUNT evenly spaced values, both ends included; COUNT = 1 gives LO).
 std::vector<std::string> parse_sweep_values(const std::string& name, const std::string& spec);
 

@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "cli_common.hpp"
+#include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -97,9 +99,8 @@ void write_sweep_table(const std::string& dir, const SweepGrid& grid, const std:
     header.insert(header.end(), {tracking->parameter + "_minima", tracking->parameter + "_maxima"});
   }
 
-  const std::string path = dir + "/sweep.csv", temporary = path + ".tmp";
+  std::ostringstream out;
   {
-    std::ofstream out(temporary);
     for (size_t c = 0; c < header.size(); ++c) out << (c ? "," : "") << header[c];
     out << '\n';
     for (size_t i = 0; i < count; ++i) {
@@ -143,7 +144,7 @@ void write_sweep_table(const std::string& dir, const SweepGrid& grid, const std:
       out << '\n';
     }
   }
-  std::filesystem::rename(temporary, path);
+  write_file_atomically(dir + "/sweep.csv", out.str());
 }
 
 }  // namespace hbtrack::cli

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cli_common.hpp"
+#include "folder_lock.hpp"
 #include "hbtrack/io/continuation_state_file.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
@@ -39,6 +40,7 @@ int run_frc(const FrcOptions& options) {
   std::optional<SavedContinuation> resumed;
   if (!options.resume.empty()) resumed = checkpoint_to_resume(dir, {"reached_end", "left_range", "closed"}, settings, read_continuation_state);
   ensure_directory(dir);
+  lock_result_folder(dir);
   const int rows_kept = resumed ? resumed->state.points : 0;
   // A resumed run appends to its CSVs; a folder that does not fit its checkpoint is bad input.
   CsvAppender branch = open_result_csv(dir + "/branch.csv", branch_header(c), resumed.has_value(), rows_kept);
@@ -89,6 +91,7 @@ int run_solve(const CommonOptions& o, double omega) {
   if (!(omega > 0) || !std::isfinite(omega)) throw CaseError("--omega: must be > 0 and finite");
   HarmonicBalance hbm = make_system(c);
   ensure_directory(o.out_dir);
+  lock_result_folder(o.out_dir);
   const auto& co = c.nfrc.continuation;
   const FixedFrequencySolution s = solve_at_frequency(hbm, omega, c.outputs, co.tolerance, 4 * co.max_iterations);
   json summary = {{"verb", "solve"},

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cli_common.hpp"
+#include "folder_lock.hpp"
 #include "result_folder.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "hbtrack/timeint/dormand_prince_integrator.hpp"
@@ -106,6 +107,7 @@ int run_simulate(const SimulateOptions& o) {
   }
 
   ensure_directory(o.common.out_dir);
+  lock_result_folder(o.common.out_dir);
   json summary = {{"verb", "simulate"}, {"options", options_json(c, hbm)}, {"omega", omega}, {"stop_reason", "running"}};
   summary["options"]["simulation"] = simulation_options_json(o.method, !o.from.empty(), steps_per_period, steady);
   summary["options"]["simulation"].update(method_options);

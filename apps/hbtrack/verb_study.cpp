@@ -17,6 +17,7 @@
 #include <map>
 
 #include "cli_common.hpp"
+#include "folder_lock.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
 #include "study_comparisons.hpp"
@@ -71,6 +72,7 @@ class Study {
   int run() {
     const auto t0 = Clock::now();
     ensure_directory(dir_);
+    lock_result_folder(dir_);
     summary_ = {{"verb", "study"},         {"case", o_.common.case_path}, {"jobs", runner_.slots()},
                 {"runner", runner_.description()}, {"stop_reason", "running"},    {"steps", json::array()}};
     save();

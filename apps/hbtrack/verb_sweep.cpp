@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "cli_common.hpp"
+#include "folder_lock.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
 #include "sweep_definition.hpp"
@@ -44,6 +45,7 @@ void claim_folder(const std::string& dir, const json& definition) {
   namespace fs = std::filesystem;
   const std::string saved_path = dir + "/sweep.json";
   if (fs::exists(saved_path)) {
+    lock_result_folder(dir);
     std::ifstream in(saved_path);
     json saved;
     try {
@@ -59,6 +61,7 @@ void claim_folder(const std::string& dir, const json& definition) {
   if (fs::exists(dir) && (!fs::is_directory(dir) || !fs::is_empty(dir)))
     throw CaseError("-o: " + dir + " is not empty and holds no sweep.json (not a sweep folder)");
   ensure_directory(dir);
+  lock_result_folder(dir);
   write_json_atomically(saved_path, definition);
 }
 
@@ -150,15 +153,24 @@ class Sweep {
   void run_phase(const std::string& phase, const std::vector<Task>& all) {
     std::vector<const Task*> todo;
     std::vector<ChildTask> children;
+    size_t owned_elsewhere = 0;
     for (const Task& t : all) {
       if (finished_result(t.folder)) continue;
+      // Still computed by a run this sweep did not start (the orphan of a killed sweep): a
+      // second writer would mix the two runs' rows, so it is left alone and stays unfinished.
+      if (const long owner = result_folder_owner(t.folder); owner != 0) {
+        ++owned_elsewhere;  // said even with -q: it is why the sweep ends unfinished
+        std::fprintf(stderr, "sweep: %s: %s is still being computed by pid %ld, not started again\n", phase.c_str(),
+                     t.folder.substr(dir_.size() + 1).c_str(), owner);
+        continue;
+      }
       ensure_directory(t.folder);
       std::vector<std::string> args = t.args;
       args.insert(args.end(), {"-q", "-o", t.folder});
       children.push_back(hbtrack_task(args, t.folder + "/log.txt"));
       todo.push_back(&t);
     }
-    const size_t skipped = all.size() - todo.size();
+    const size_t skipped = all.size() - todo.size() - owned_elsewhere;
     summary_["skipped"] = summary_["skipped"].get<size_t>() + skipped;
     if (!o_.common.quiet && skipped > 0)
       std::fprintf(stderr, "sweep: %s: %zu of %zu already finished in %s, not recomputed\n", phase.c_str(), skipped, all.size(), dir_.c_str());

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cli_common.hpp"
+#include "folder_lock.hpp"
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/io/continuation_state_file.hpp"
 #include "hbtrack/io/results_writer.hpp"
@@ -134,6 +135,7 @@ int run_track(TrackOptions o) {
   std::optional<SavedTracking> resumed;
   if (!o.resume.empty()) resumed = checkpoint_to_resume(dir, {"completed", "closed"}, settings, read_tracking_state);
   ensure_directory(dir);
+  lock_result_folder(dir);
   const int rows_kept = resumed ? resumed->state.curve_points : 0;
   std::vector<std::string> state_cols{"leg", "omega", o.param};
   for (int i = 0; i < hbm.unknowns(); ++i) state_cols.push_back("x" + std::to_string(i));
@@ -225,6 +227,7 @@ int run_isolas(const IsolaOptions& o) {
   const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
 
   ensure_directory(o.common.out_dir);
+  lock_result_folder(o.common.out_dir);
   json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
   summary["options"]["isolas"] = {{"from", o.from}, {"parameter", parameter_name}, {"at", value}};
   write_json_atomically(o.common.out_dir + "/summary.json", summary);

@@ -55,6 +55,8 @@ def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
 
 def limit_point(result, lp):
     """State row [omega, x0, ...] of the lp-th (from 1) limit point of an frc result."""
+    if not isinstance(result, dict) or "special_points" not in result or "special_states" not in result:
+        raise ValueError("start: expected an frc result (from hbtrack.frc, or read_result of an frc folder)")
     if isinstance(lp, bool) or not isinstance(lp, (int, np.integer)) or lp < 1:
         raise ValueError(f"lp: must be an integer >= 1, got {lp!r}")
     rows = [i for i, sp in enumerate(result["special_points"]) if sp["type"] == "LP"]
@@ -84,6 +86,9 @@ def isolas(case, tracks, *, at):
         tracks = [tracks]
     if not tracks:
         raise ValueError("tracks: needs at least one track result")
+    for t in tracks:
+        if not isinstance(t, dict) or "states" not in t or "tracking" not in t.get("summary", {}).get("options", {}):
+            raise ValueError("tracks: expected track results (from hbtrack.track, or read_result of a track folder)")
     names = {t["summary"]["options"]["tracking"]["parameter"] for t in tracks}
     if len(names) != 1:
         raise ValueError(f"tracks: the curves track different parameters: {', '.join(sorted(names))}")

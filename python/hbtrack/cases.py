@@ -13,6 +13,15 @@ import numpy as np
 from ._core import require_core
 
 
+def toml_key(key):
+    """A dict key as a TOML key: bare when it is one, else a quoted string (so that a key holding
+    '=', brackets or a newline cannot change the document around it)."""
+    key = str(key)
+    if key and all(c.isascii() and (c.isalnum() or c in "_-") for c in key):
+        return key
+    return json.dumps(key)
+
+
 def toml_value(value):
     """A Python value (number, string, bool, sequence, dict, numpy array) as TOML text."""
     if isinstance(value, (bool, np.bool_)):
@@ -26,12 +35,14 @@ def toml_value(value):
         if math.isinf(x):
             return "inf" if x > 0 else "-inf"
         return repr(x)  # shortest text that reads back to the same double
+    if isinstance(value, (complex, np.complexfloating)):
+        raise ValueError(f"cannot write the complex number {value!r} into a case (models are real)")
     if isinstance(value, str):
         return json.dumps(value)  # a TOML basic string
     if isinstance(value, np.ndarray):
         return toml_value(value.tolist())
     if isinstance(value, dict):
-        return "{" + ", ".join(f"{key} = {toml_value(v)}" for key, v in value.items()) + "}"
+        return "{" + ", ".join(f"{toml_key(key)} = {toml_value(v)}" for key, v in value.items()) + "}"
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(toml_value(v) for v in value) + "]"
     raise TypeError(f"cannot write {type(value).__name__} {value!r} into a case")
@@ -64,6 +75,9 @@ def case_from_arrays(M, K, dofs, *, C=None, damping=None, forcing=(), elements=(
     arrays of n entries); elements: [{"type": "cubic_spring", "dofs": ["x"], "cubic_stiffness": 0.1}];
     continuation: {"omega_start": ..., "omega_end": ..., ...}; outputs: [{"name": ..., "dof": ...}]
     (default: every dof under its own name)."""
+    for name, array in (("M", M), ("K", K), ("C", C)):
+        if array is not None and np.iscomplexobj(np.asarray(array)):
+            raise ValueError(f"{name}: complex values (the model is real; the imaginary part would be lost)")
     M, K = np.asarray(M, dtype=float), np.asarray(K, dtype=float)
     if C is not None and damping is not None:
         raise ValueError("damping: give C or damping, not both")
@@ -81,11 +95,11 @@ def case_from_arrays(M, K, dofs, *, C=None, damping=None, forcing=(), elements=(
     lines = []
     for name, table in sections:
         lines.append(f"[{name}]")
-        lines += [f"{key} = {toml_value(value)}" for key, value in table.items()]
+        lines += [f"{toml_key(key)} = {toml_value(value)}" for key, value in table.items()]
     for name, entries in (("forcing", forcing), ("elements", elements), ("outputs", outputs)):
         for entry in entries:
             lines.append(f"[[{name}]]")
-            lines += [f"{key} = {toml_value(value)}" for key, value in entry.items()]
+            lines += [f"{toml_key(key)} = {toml_value(value)}" for key, value in entry.items()]
     with tempfile.TemporaryDirectory(prefix="hbtrack-") as folder:
         path = os.path.join(folder, "arrays.toml")
         with open(path, "w") as f:

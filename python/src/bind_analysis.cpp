@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
+#include "gil_release.hpp"
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/result_tables.hpp"
@@ -55,7 +56,7 @@ py::dict frc(const CaseDefinition& c) {
   NfrcResult r;
   bool interrupted = false;
   {
-    py::gil_scoped_release release;
+    GilRelease release;
     r = compute_nfrc(hbm, c.nfrc, c.outputs, [&](const BranchPoint&, const RecordedPoint&, int) { return !(interrupted = python_interrupted()); });
   }
   if (interrupted) throw py::error_already_set();
@@ -91,7 +92,7 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
   FoldTrackingResult r;
   bool interrupted = false;
   {
-    py::gil_scoped_release release;
+    GilRelease release;
     r = track_fold(hbm, parameter, x, omega, scales, tracking, c.outputs, [&](const FoldCurvePoint& p, int) {
       branch.rows.push_back(tracking_row(p));
       std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
@@ -144,7 +145,7 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
   const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
   std::vector<IsolaCandidate> found;
   {
-    py::gil_scoped_release release;
+    GilRelease release;
     found = compute_isolas(hbm, parameter, at, curves, scales, c.nfrc, c.outputs);
   }
   json crossings = json::array();

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "gil_release.hpp"
 #include "hbtrack/model/craig_bampton.hpp"
 #include "hbtrack/model/damping.hpp"
 
@@ -26,7 +27,7 @@ py::dict reduce(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, c
   const Eigen::SparseMatrix<double> m = mass.sparseView(), k = stiffness.sparseView();
   CraigBamptonModel r;
   {
-    py::gil_scoped_release release;
+    GilRelease release;
     r = craig_bampton(m, k, nodes, modes);
   }
   py::dict out;

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "bindings.hpp"
+#include "gil_release.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/result_tables.hpp"
 #include "hbtrack/timeint/dormand_prince_integrator.hpp"
@@ -75,7 +76,7 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
   SteadyStateResult r;
   bool interrupted = false;
   {
-    py::gil_scoped_release release;
+    GilRelease release;
     r = integrate_to_steady_state(*integrator, initial, c.outputs, steady, [&](int, double) { return !(interrupted = python_interrupted()); });
   }
   if (interrupted) throw py::error_already_set();

@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
+#include "gil_release.hpp"
 
 namespace hbtrack::python {
 
@@ -31,6 +32,8 @@ py::array_t<double> Table::matrix() const {
 }
 
 bool python_interrupted() {
+  // Taking the GIL while the interpreter exits would end this thread inside the computation.
+  if (interpreter_exiting()) return true;
   py::gil_scoped_acquire acquire;
   return PyErr_CheckSignals() != 0;  // leaves KeyboardInterrupt set for the caller to raise
 }

@@ -15,6 +15,7 @@
 
 #include "hbtrack/elements/scalar_elements.hpp"
 #include "hbtrack/elements/tip_contact.hpp"
+#include "hbtrack/io/input_file.hpp"
 #include "hbtrack/io/matrix_readers.hpp"
 #include "hbtrack/model/damping.hpp"
 #include "utf8_validation.hpp"
@@ -443,7 +444,7 @@ void read_elements(const Reader& in, const toml::value& root, CaseDefinition& c)
     for (size_t p = 0; p < specs.size(); ++p) {
       const std::string& name = specs[p].name;
       const bool must_be_positive = name == "stiffness" || name == "regularization_velocity" ||
-                                    (name == "width" && type != "unilateral_spring") || name == "radius";
+                                    (name == "width" && type != "unilateral_spring") || name == "radius" || name == "engine_order";
       const bool must_be_nonnegative = name == "mu" || name == "normal_load" || name == "clearance";
       const toml::value* v = in.find(e, name);
       if (must_be_positive && !(values[p] > 0)) in.fail(v ? v : &e, field + "." + name, "must be > 0");
@@ -451,6 +452,8 @@ void read_elements(const Reader& in, const toml::value& root, CaseDefinition& c)
     }
     element->lanczos_exponent = in.number_or(e, "lanczos", field + ".lanczos", 0.0);
     if (element->lanczos_exponent < 0) in.fail(&e.at("lanczos"), field + ".lanczos", "must be >= 0 (0 disables the filter)");
+    // sinc(j/(H+1))^p: beyond p = 10 the higher harmonics of the force vanish (1e9 removed them all).
+    if (element->lanczos_exponent > 10) in.fail(&e.at("lanczos"), field + ".lanczos", "must be <= 10");
     c.elements.push_back(std::move(element));
   }
 }
@@ -606,11 +609,21 @@ void apply_overrides(const Reader& in, toml::value& root, const std::vector<std:
     const size_t eq = o.find('=');
     if (eq == std::string::npos || eq == 0) throw CaseError("--set " + o + ": expected NAME=VALUE");
     const std::string name = o.substr(0, eq), text = o.substr(eq + 1);
+    // One value only: a newline or a comment would let a second key or text after the value
+    // pass unseen.
+    if (text.find_first_of("\n\r") != std::string::npos) throw CaseError("--set " + name + ": the value must be on one line");
+    check_toml_nesting(text, "--set " + name);
     toml::value value;
+    bool parsed = false;
     try {
       std::istringstream ss("v = " + text);
-      value = toml::parse(ss, "--set").at("v");
+      const toml::value table = toml::parse(ss, "--set");
+      if (table.as_table().size() == 1) value = table.at("v"), parsed = true;
     } catch (const std::exception&) {
+    }
+    if (!parsed) {
+      if (text.find_first_of("[]{}#\"'=,") != std::string::npos)
+        throw CaseError("--set " + name + ": '" + text + "' is not one TOML value (quote a string: " + name + "='\"...\"')");
       value = toml::value(text);  // an unquoted word: take it as a string
     }
     if (name.find('.') == std::string::npos) {
@@ -619,7 +632,8 @@ void apply_overrides(const Reader& in, toml::value& root, const std::vector<std:
       if (!params.is_table()) params = toml::table{};
       if (!params.contains(name) && name != "amplitude") {
         std::vector<std::string> known{"amplitude"};
-        for (const auto& [k, v] : params.as_table()) known.push_back(k);
+        for (const auto& [k, v] : params.as_table())
+          if (k != "amplitude") known.push_back(k);
         const std::string guess = nearest(name, known);
         throw CaseError("--set " + name + ": unknown parameter" + (guess.empty() ? " (known: " + join(known) + ")" : " (did you mean '" + guess + "'?)"));
       }
@@ -677,17 +691,14 @@ void apply_overrides(const Reader& in, toml::value& root, const std::vector<std:
 }  // namespace
 
 CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides) {
-  if (!fs::exists(path)) throw CaseError(path + ": file does not exist");
-  if (fs::is_directory(path)) throw CaseError(path + ": is a directory, expected a TOML case file");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw CaseError(path + ": cannot read: " + std::strerror(errno));
-  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string text = read_bounded_file(path, kMaxCaseFileBytes, "a TOML case file");
   // TOML is UTF-8. Checked here because toml11 3.7 reads out of bounds when it reports invalid
   // UTF-8 inside a string (fuzzing: a literal string holding the byte 0xE0).
   if (const std::size_t bad = first_invalid_utf8(text); bad != std::string_view::npos) {
     const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n');
     throw CaseError(path + ":" + std::to_string(line) + ": not valid UTF-8 (byte " + std::to_string(bad) + "); a TOML case file must be UTF-8");
   }
+  check_toml_nesting(text, path);
   toml::value root;
   try {
     std::istringstream stream(text);

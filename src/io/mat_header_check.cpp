@@ -4,12 +4,20 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 
 namespace hbtrack {
 namespace {
+
+std::string number_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) { throw std::runtime_error(path + ": " + what); }
 
@@ -49,6 +57,7 @@ class MatHeaderCheck {
 
  private:
   static constexpr std::uint32_t kMatrix = 14;
+  static constexpr std::uint64_t kMaxSparseDimension = 5'000'000;  // matrix_readers.cpp's kMaxDimension
   static constexpr std::uint32_t kCompressed = 15;
   static constexpr std::uint64_t kMaxZlibRatio = 1032;
   // From a matrix element's tag: its tag (8), the array flags (8 + 8), the dims tag's type (4).
@@ -186,8 +195,39 @@ class MatHeaderCheck {
       if (name > remain || data > remain - name)
         fail(path_, "corrupt MAT file: the v4 record at byte " + std::to_string(at) + " claims " + std::to_string(name) + " + " +
                         std::to_string(data) + " bytes, " + std::to_string(remain) + " remain");
+      if (type % 10 == 2) check_v4_sparse_size(at, at + 20 + name, word32(h + 4), word32(h + 8), precision);
       at += 20 + name + data;
     }
+  }
+
+  // A v4 sparse matrix is stored as rows of (i, j, value) ending with a row (m, n, 0) that gives
+  // its size: libmatio allocates the n + 1 column pointers from that number, read from the data
+  // (a 264-byte file asked for 3.94 GiB). So the size row is read and bounded here.
+  void check_v4_sparse_size(std::uint64_t record, std::uint64_t data, std::uint32_t rows, std::uint32_t columns, std::uint32_t precision) {
+    if (rows == 0 || columns < 3) return;  // libmatio reads no size row then
+    for (std::uint32_t column = 0; column < 2; ++column) {
+      double value = 0;
+      if (!read_v4_number(data, (std::uint64_t{column} * rows + rows - 1), precision, value)) return;
+      if (!(value >= 0 && value <= static_cast<double>(kMaxSparseDimension)))
+        fail(path_, "corrupt MAT file: the v4 sparse record at byte " + std::to_string(record) + " claims " +
+                        std::string(column == 0 ? "rows" : "columns") + " = " + number_text(value) + " (the limit is " +
+                        std::to_string(kMaxSparseDimension) + ")");
+    }
+  }
+  bool read_v4_number(std::uint64_t data, std::uint64_t index, std::uint32_t precision, double& value) {
+    static constexpr unsigned kWidth[] = {8, 4, 4, 2, 2, 1};
+    unsigned char b[8];
+    if (!read_at(data + index * kWidth[precision], b, kWidth[precision])) return false;
+    if (swap_) std::reverse(b, b + kWidth[precision]);
+    switch (precision) {
+      case 0: { double d; std::memcpy(&d, b, 8); value = d; break; }
+      case 1: { float f; std::memcpy(&f, b, 4); value = f; break; }
+      case 2: { std::int32_t i; std::memcpy(&i, b, 4); value = i; break; }
+      case 3: { std::int16_t i; std::memcpy(&i, b, 2); value = i; break; }
+      case 4: { std::uint16_t i; std::memcpy(&i, b, 2); value = i; break; }
+      default: value = b[0];
+    }
+    return true;
   }
 
   const std::string& path_;

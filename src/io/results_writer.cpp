@@ -1,6 +1,11 @@
 #include "hbtrack/io/results_writer.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -39,13 +44,7 @@ CsvAppender CsvAppender::continuing(const std::string& path, const std::vector<s
   if (found < rows)
     throw std::runtime_error(path + ": holds " + std::to_string(found) + " rows, the checkpoint " + std::to_string(rows));
   in.close();
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << kept;
-    if (!out) throw std::runtime_error(tmp + ": write failed (disk full?)");
-  }
-  std::filesystem::rename(tmp, path);
+  write_file_atomically(path, kept);
   return CsvAppender(path, header.size());
 }
 
@@ -61,15 +60,38 @@ void CsvAppender::append(const std::vector<double>& row) {
   if (!out_) throw std::runtime_error(path_ + ": write failed (disk full?)");
 }
 
-void write_json_atomically(const std::string& path, const nlohmann::json& document) {
+void write_file_atomically(const std::string& path, const std::string& bytes) {
+  // POSIX calls rather than a stream: a stream keeps the bytes in its buffer and reports a full
+  // disk only when it is closed, where a destructor cannot say so (summary.json came out empty).
   const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) throw std::runtime_error(tmp + ": cannot open for writing");
-    out << document.dump(2) << '\n';
-    if (!out) throw std::runtime_error(tmp + ": write failed (disk full?)");
+  const auto fail = [&](const std::string& what, int error) {
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(tmp + ": " + what + ": " + std::strerror(error) + (error == ENOSPC || error == EFBIG ? " (disk full?)" : ""));
+  };
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw std::runtime_error(tmp + ": cannot open for writing: " + std::strerror(errno));
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      fail("write failed", error);
+    }
+    done += static_cast<std::size_t>(n);
   }
-  std::filesystem::rename(tmp, path);
+  // On the disk before the rename: after a crash the file is the old one or the whole new one.
+  if (::fsync(fd) != 0 && errno != EINVAL) {
+    const int error = errno;
+    ::close(fd);
+    fail("fsync failed", error);
+  }
+  if (::close(fd) != 0) fail("close failed", errno);
+  if (::rename(tmp.c_str(), path.c_str()) != 0) fail("cannot rename to " + path, errno);
+}
+
+void write_json_atomically(const std::string& path, const nlohmann::json& document) {
+  write_file_atomically(path, document.dump(2) + '\n');
 }
 
 void ensure_directory(const std::string& dir) {

@@ -26,7 +26,12 @@ class CsvAppender {
   size_t columns_;
 };
 
-// Writes to DIR/name.tmp then renames over DIR/name.
+// Writes `bytes` to PATH.tmp, checks every write, fsyncs and closes it, then renames it over
+// PATH: PATH is the old file or the complete new one, never a partial one. Throws
+// std::runtime_error naming the file and the reason (a full disk) and removes PATH.tmp.
+void write_file_atomically(const std::string& path, const std::string& bytes);
+
+// write_file_atomically of the document, indented by 2.
 void write_json_atomically(const std::string& path, const nlohmann::json& document);
 
 // Creates DIR (and parents); throws std::runtime_error naming it on failure.
