@@ -444,10 +444,14 @@ void read_elements(const Reader& in, const toml::value& root, CaseDefinition& c)
     for (size_t p = 0; p < specs.size(); ++p) {
       const std::string& name = specs[p].name;
       const bool must_be_positive = name == "stiffness" || name == "regularization_velocity" ||
-                                    (name == "width" && type != "unilateral_spring") || name == "radius" || name == "engine_order";
+                                    (name == "width" && type != "unilateral_spring") || name == "radius";
+      // The sign of engine_order is the sense of rotation (rotor 67 and the parametric blade
+      // turn towards -theta of their tip frames); 0 would stop the rotor.
+      const bool must_be_nonzero = name == "engine_order";
       const bool must_be_nonnegative = name == "mu" || name == "normal_load" || name == "clearance";
       const toml::value* v = in.find(e, name);
       if (must_be_positive && !(values[p] > 0)) in.fail(v ? v : &e, field + "." + name, "must be > 0");
+      if (must_be_nonzero && !(values[p] != 0)) in.fail(v ? v : &e, field + "." + name, "must be nonzero (its sign is the sense of rotation)");
       if (must_be_nonnegative && values[p] < 0) in.fail(v ? v : &e, field + "." + name, "must be >= 0");
     }
     element->lanczos_exponent = in.number_or(e, "lanczos", field + ".lanczos", 0.0);
