@@ -298,28 +298,29 @@ class Study {
     return true;
   }
 
-  // The resonance a user checks first: the stable NFRC point where the first output peaks, moved
-  // down in omega by kSimulationDetuning. At the fold itself the truncated HBM's limit point may
-  // lie a little beyond the full model's, and a simulation there slowly leaves the orbit.
+  // The resonance a user checks first: the stable NFRC point of largest first-harmonic amplitude
+  // of the first output, at least kSimulationDetuning (relative omega) away from every limit
+  // point. At a fold itself the truncated HBM's limit point may lie a little beyond the full
+  // model's, and a simulation there leaves the orbit; the first harmonic, not the maximum,
+  // measures the resonance when a casing caps the outward excursion.
   long simulation_point() const {
     constexpr double kSimulationDetuning = 2e-3;
     if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return -1;
     const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
-    const auto peak = static_cast<size_t>(b.column("max_" + first_output()));
+    const auto amplitude = static_cast<size_t>(b.column("h1_" + first_output()));
     const bool has_stability = std::find(b.header.begin(), b.header.end(), "stable") != b.header.end();
     const auto stable = has_stability ? static_cast<size_t>(b.column("stable")) : 0;
-    auto best_below = [&](double omega_max) {
-      long best = -1;
-      for (size_t i = 0; i < b.rows.size(); ++i)
-        if ((!has_stability || b.rows[i][stable] == 1.0) && b.rows[i][0] <= omega_max &&
-            (best < 0 || b.rows[i][peak] > b.rows[static_cast<size_t>(best)][peak]))
-          best = static_cast<long>(i);
-      return best;
+    auto near_a_fold = [&](double omega) {
+      for (const auto& lp : limit_points_)
+        if (std::abs(omega - lp.value("omega", 0.0)) <= kSimulationDetuning * std::abs(omega)) return true;
+      return false;
     };
-    const long top = best_below(1e300);
-    if (top < 0) return -1;
-    const long detuned = best_below((1.0 - kSimulationDetuning) * b.rows[static_cast<size_t>(top)][0]);
-    return detuned >= 0 ? detuned : top;
+    long best = -1;
+    for (size_t i = 0; i < b.rows.size(); ++i)
+      if ((!has_stability || b.rows[i][stable] == 1.0) && !near_a_fold(b.rows[i][0]) &&
+          (best < 0 || b.rows[i][amplitude] > b.rows[static_cast<size_t>(best)][amplitude]))
+        best = static_cast<long>(i);
+    return best;
   }
 
   void compare_simulation(long point) {
