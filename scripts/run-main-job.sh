@@ -28,7 +28,7 @@ $hbtrack frc examples/rotor67/nominal.toml "${reversed[@]}" -o results/rotor67_r
 $hbtrack study examples/rotor67/nominal.toml --only amplitude "${reversed[@]}" --set study.convergence.harmonics=0 --units m \
   -o results/rotor67_reversed_study || echo "rotor 67 reversed-sense study: exit $?"
 /usr/bin/python3 python/compare_with_paper.py results/rotor67_reversed_study --paper data/rotor67/paper_values.json \
-  --model data/rotor67/summary.json
+  --model data/rotor67/summary.json --label 'friction sense reversed'
 
 # The parametric blade: the same study on a small, fast model.
 $hbtrack modes examples/blade/nominal.toml --count 6 -o results/blade_modes

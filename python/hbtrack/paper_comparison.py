@@ -129,24 +129,28 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
 
     files = []
     nfrc = read_result(os.path.join(study_dir, "nfrc"))
-    # Fig. 3: the signed inward extremes of leading and trailing edge, limit points numbered.
+    # Fig. 3: the signed inward extremes of leading and trailing edge (solid: stable, dashed:
+    # unstable), limit points numbered, their labels offset four ways so that neighbours do not overlap.
+    from .plots import _plot_split, _stable_masks
     fig, ax = plt.subplots(figsize=(6.5, 4))
     b = nfrc["branch"]
     if reversed_dir:
         r = read_result(reversed_dir)["branch"]
-        ax.plot(r["omega"] / w1b, 1e3 * r["min_le"], color="0.75", lw=1, label="le, friction sense reversed")
-        ax.plot(r["omega"] / w1b, 1e3 * r["min_te"], color="0.75", lw=1, ls="--", label="te, friction sense reversed")
-    ax.plot(b["omega"] / w1b, 1e3 * b["min_le"], color="C0", lw=1.3, label="leading edge (n1)")
-    ax.plot(b["omega"] / w1b, 1e3 * b["min_te"], color="C1", lw=1.3, ls="--", label="trailing edge (n9)")
+        ax.plot(r["omega"] / w1b, 1e3 * r["min_le"], color="0.8", lw=1, label="le, friction sense reversed")
+        ax.plot(r["omega"] / w1b, 1e3 * r["min_te"], color="0.6", lw=1, label="te, friction sense reversed")
+    stable, unstable = _stable_masks(b)
+    _plot_split(ax, b["omega"] / w1b, 1e3 * b["min_le"], stable, unstable, "C0", "leading edge (n1)")
+    _plot_split(ax, b["omega"] / w1b, 1e3 * b["min_te"], stable, unstable, "C1", "trailing edge (n9)")
     for k, p in enumerate(_limit_points(nfrc["summary"]), start=1):
-        for key, dy in (("min_le", 6), ("min_te", -12)):
-            ax.plot(p["omega"] / w1b, 1e3 * p[key], "o", color="k", ms=4)
-        ax.annotate(f"LP{k}", (p["omega"] / w1b, 1e3 * p["min_le"]), textcoords="offset points", xytext=(5, 6), fontsize=8)
+        for key in ("min_le", "min_te"):
+            ax.plot(p["omega"] / w1b, 1e3 * p[key], "o", color="k", ms=4, zorder=5)
+        ax.annotate(f"LP{k}", (p["omega"] / w1b, 1e3 * p["min_le"]), textcoords="offset points",
+                    xytext=[(6, 6), (-30, -12), (6, -14), (-30, 8)][(k - 1) % 4], fontsize=8)
     f3 = paper["fig3"]
     for value, style, label in ((f3["min_le_m"], ":", "paper, le at LP3"), (f3["min_te_m"], "-.", "paper, te at LP3")):
         ax.axhline(1e3 * value, color="C3", ls=style, lw=1, label=label)
     ax.set_xlabel(r"$\omega / \omega_{1B}$")
-    ax.set_ylabel(r"inward extreme of $r(t)$ [mm]")
+    ax.set_ylabel(r"inward extreme of $r(t)$ [mm] (solid: stable, dashed: unstable)", fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower left")
     fig.tight_layout()
@@ -174,22 +178,26 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
         fig.tight_layout()
         files += save_figure(fig, os.path.join(study_dir, "figures", "paper_fig7"))
 
-    # Fig. 12: the nominal NFRC, the isolas at the nominal parameter values, time integration dots.
+    # Fig. 12: the nominal NFRC, the isolas at the nominal parameter values and the one the
+    # isola's time integration started on, time integration as dots.
     fig, ax = plt.subplots(figsize=(6.5, 4))
     ax.plot(b["omega"], 1e3 * b["min_le"], color="C0", lw=1.2, label="NFRC, leading edge")
     nominal = nfrc["summary"]["options"]["parameters"]
+    simulated_isola = (summary.get("isola_simulation") or {}).get("folder")
     for t in summary.get("tracking", []):
         for v in t.get("validations", []):
-            if abs(v["value"] - nominal.get(t["parameter"], float("nan"))) > 1e-9 * abs(v["value"]):
-                continue
+            at_nominal = abs(v["value"] - nominal.get(t["parameter"], float("nan"))) <= 1e-9 * abs(v["value"])
             for br in v.get("isola_branches", []):
+                if not at_nominal and br["folder"] != simulated_isola:
+                    continue
                 iso = read_result(os.path.join(study_dir, br["folder"]))["branch"]
-                ax.plot(iso["omega"], 1e3 * iso["min_le"], color="C2", lw=1.2, label="isolated branch")
-    for key in ("simulation", "isola_simulation"):
+                label = "isolated branch" + ("" if at_nominal else f" at {t['parameter']} = {v['value']:.4g}")
+                ax.plot(iso["omega"], 1e3 * iso["min_le"], color="C2" if at_nominal else "C4", lw=1.2, label=label)
+    for key, label in (("simulation", "time integration, NFRC point"), ("isola_simulation", "time integration, isola point")):
         s = summary.get(key)
         if s:
             m = next(o for o in s["outputs"] if o["name"] == "min_le")
-            ax.plot(s["omega"], 1e3 * m["simulation"], "o", color="k", ms=5, label="time integration")
+            ax.plot(s["omega"], 1e3 * m["simulation"], "o" if key == "simulation" else "s", color="k", ms=5, label=label)
     handles, labels = ax.get_legend_handles_labels()
     unique = dict(zip(labels, handles))
     ax.legend(unique.values(), unique.keys(), fontsize=7)
@@ -201,14 +209,14 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     return files
 
 
-def comparison_page(study_dir, paper, model_summary, full_model_summary, reversed_dir=None):
+def comparison_page(study_dir, paper, model_summary, full_model_summary, reversed_dir=None, label=None):
     summary = _load(os.path.join(study_dir, "summary.json"))
     nfrc = _load(os.path.join(study_dir, "nfrc", "summary.json"))
     w1b = model_summary["natural_frequencies"][0]
     w1b_paper = paper["table2_rad_s"]["1B"]
-    lines = ["# Against the paper", "", f"Source: {paper['source']}.", "",
+    lines = ["# Against the paper" + (f": {label}" if label else ""), "", f"Source: {paper['source']}.", "",
              "## Table 2: first frequencies (rad/s)", ""] + frequency_tables(paper, full_model_summary, model_summary)
-    lines += ["", "## Fig. 3: the nominal NFRC (A = 140, mu = 0.15, c = 0.4 mm)", ""] + nfrc_table(paper, nfrc, w1b, "this model")
+    lines += ["", "## Fig. 3: the NFRC at A = 140, mu = 0.15, c = 0.4 mm", ""] + nfrc_table(paper, nfrc, w1b, "this model")
     if reversed_dir:
         lines += ["", "The same with the friction sense reversed (the blade turning with its trailing edge ahead):", ""]
         lines += nfrc_table(paper, _load(os.path.join(reversed_dir, "summary.json")), w1b, "reversed sense")
@@ -231,11 +239,12 @@ def main(argv=None):
     parser.add_argument("--model", required=True, help="the reduced model's summary (e.g. data/rotor67/summary.json)")
     parser.add_argument("--full-model", help="the full model's summary (default: full_model_summary.json beside --model)")
     parser.add_argument("--reversed", help="an NFRC folder of the same case with the friction sense reversed")
+    parser.add_argument("--label", help="what this study is, for the page's title (e.g. 'friction sense reversed')")
     args = parser.parse_args(argv)
     try:
         paper, model = _load(args.paper), _load(args.model)
         full = _load(args.full_model or os.path.join(os.path.dirname(args.model), "full_model_summary.json"))
-        page = comparison_page(args.study, paper, model, full, args.reversed)
+        page = comparison_page(args.study, paper, model, full, args.reversed, args.label)
         files = write_figures(args.study, paper, model["natural_frequencies"][0], args.reversed)
     except (OSError, KeyError, ValueError) as error:
         print(f"compare_with_paper.py: {error}", file=sys.stderr)
