@@ -30,15 +30,6 @@ Eigen::Vector3d blade_point(const BladeGeometry& g, const Eigen::Vector3d& unit)
           along * std::sin(beta) + across * std::cos(beta)};
 }
 
-std::vector<bool> root_face_clamped(const StructuredHex20Grid& grid) {
-  std::vector<bool> clamped(static_cast<size_t>(grid.mesh().node_count()), false);
-  for (int j = 0; j <= 2 * grid.cells(1); ++j)
-    for (int i = 0; i <= 2 * grid.cells(0); ++i) {
-      const int node = grid.node_at(i, j, 0);
-      if (node >= 0) clamped[static_cast<size_t>(node)] = true;
-    }
-  return clamped;
-}
 
 }  // namespace
 

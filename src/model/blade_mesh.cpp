@@ -6,6 +6,16 @@ namespace hbtrack {
 
 AssembledMatrices assemble_blade(const BladeMesh& blade) { return assemble_hex20(blade.grid.mesh(), blade.material, blade.dofs); }
 
+std::vector<bool> root_face_clamped(const StructuredHex20Grid& grid) {
+  std::vector<bool> clamped(static_cast<size_t>(grid.mesh().node_count()), false);
+  for (int j = 0; j <= 2 * grid.cells(1); ++j)
+    for (int i = 0; i <= 2 * grid.cells(0); ++i) {
+      const int node = grid.node_at(i, j, 0);
+      if (node >= 0) clamped[static_cast<size_t>(node)] = true;
+    }
+  return clamped;
+}
+
 void find_blade_lines(BladeMesh& blade, int first_airfoil_span_index) {
   const auto& grid = blade.grid;
   const auto& nodes = grid.mesh().nodes;

@@ -19,15 +19,6 @@ Eigen::Vector3d rim_point(const SectionBladeShape& shape, double pitch, double d
   return cartesian_point(hub(0), hub(1) - rho * depth, hub(2) + (0.5 - unit.y()) * width);
 }
 
-std::vector<bool> bottom_face_clamped(const StructuredHex20Grid& grid) {
-  std::vector<bool> clamped(static_cast<size_t>(grid.mesh().node_count()), false);
-  for (int j = 0; j <= 2 * grid.cells(1); ++j)
-    for (int i = 0; i <= 2 * grid.cells(0); ++i) {
-      const int node = grid.node_at(i, j, 0);
-      if (node >= 0) clamped[static_cast<size_t>(node)] = true;
-    }
-  return clamped;
-}
 
 }  // namespace
 
@@ -57,7 +48,7 @@ SectionBlade generate_section_blade(const BladeSections& sections, const Section
     }
     return rim_point(shape, pitch, options.rim_depth, rim_layers, unit, (hub_level - unit.z()) / hub_level);
   });
-  DofNumbering dofs(bottom_face_clamped(grid));
+  DofNumbering dofs(root_face_clamped(grid));
   SectionBlade blade{{options.material, std::move(grid), std::move(dofs), {}, {}, {}, {}, {}, {}, {}}, rotation_sense(sections), rim_layers};
   find_blade_lines(blade, 2 * rim_layers);
   return blade;

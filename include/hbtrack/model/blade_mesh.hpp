@@ -26,6 +26,9 @@ struct BladeMesh {
 
 AssembledMatrices assemble_blade(const BladeMesh& blade);
 
+// The nodes of the grid's first span face (the blade's root, or its rim's bottom) marked clamped.
+std::vector<bool> root_face_clamped(const StructuredHex20Grid& grid);
+
 // Mid-thickness nodes at the even span positions of the grid's lines and the 9 tip nodes (every
 // (chord cells / 8)-th doubled position at the tip), and the stations' directions measured on
 // the mesh: fills those fields of `blade` from its grid. The lines start at the doubled-grid span
