@@ -232,6 +232,22 @@ def comparison_page(study_dir, paper, model_summary, full_model_summary, reverse
     return "\n".join(lines)
 
 
+def _link_from_the_study_page(study_dir):
+    """Puts a link to paper_comparison.md at the top of the study's index.md (once)."""
+    index = os.path.join(study_dir, "index.md")
+    if not os.path.exists(index):
+        return
+    with open(index) as f:
+        text = f.read()
+    link = "Side by side with the paper: [paper_comparison.md](paper_comparison.md)."
+    if link in text:
+        return
+    first, _, rest = text.partition("\n")
+    with open(index + ".tmp", "w") as f:
+        f.write(f"{first}\n\n{link}\n{rest}")
+    os.replace(index + ".tmp", index)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="compare_with_paper.py", description=__doc__.splitlines()[0])
     parser.add_argument("study", help="an hbtrack study folder")
@@ -253,6 +269,7 @@ def main(argv=None):
     with open(out + ".tmp", "w") as f:
         f.write(page)
     os.replace(out + ".tmp", out)
+    _link_from_the_study_page(args.study)
     for name in [out, *files]:
         print(name)
     return 0
