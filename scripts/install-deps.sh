@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
+  ccache                 # rebuilds (and CI runs on a machine that built before) reuse compiled objects
   libeigen3-dev          # dense/sparse linear algebra
   libcli11-dev           # command line
   nlohmann-json3-dev     # summary.json

@@ -9,7 +9,15 @@ jobs=${JOBS:-$(nproc)}
 # CI (CI=true) runs no benchmark and skips building them: it has 30 minutes on 2 cores.
 bench=ON
 [ -n "${CI:-}" ] && bench=OFF
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 -DHBTRACK_BUILD_BENCH=$bench
+# ccache when installed: a second build of unchanged sources takes seconds.
+launcher=()
+if command -v ccache > /dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # Precompiled headers need these to be cached; paths relative to the clone, so that another
+  # clone of the same sources hits the same entries.
+  export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime CCACHE_BASEDIR="$PWD"
+fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 -DHBTRACK_BUILD_BENCH=$bench "${launcher[@]}"
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs"
 
@@ -17,7 +25,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   # -O1 keeps Eigen fast enough under the sanitizers; benchmarks are not built, nor the Python
   # module (python cannot load an ASan-instrumented extension; its tests ran above).
   cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
-    -DHBTRACK_SANITIZE=ON -DHBTRACK_BUILD_BENCH=OFF -DHBTRACK_PYTHON=OFF
+    -DHBTRACK_SANITIZE=ON -DHBTRACK_BUILD_BENCH=OFF -DHBTRACK_PYTHON=OFF "${launcher[@]}"
   cmake --build build-sanitize -j "$jobs"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-sanitize --output-on-failure -j "$jobs"
