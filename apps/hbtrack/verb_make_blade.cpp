@@ -4,6 +4,7 @@
 // blade meshed from published stream-surface sections (data/rotor67/sections.csv: NASA rotor 67).
 #include <chrono>
 #include <cstdio>
+#include <optional>
 
 #include "cli_common.hpp"
 #include "hbtrack/io/blade_sections_reader.hpp"
@@ -73,20 +74,24 @@ int run_make_blade(const MakeBladeOptions& o) {
   if (o.refinement < 1) throw CaseError("--refine: must be >= 1");
   if (o.modes < 3) throw CaseError("--modes: must be >= 3");
   json geometry;
-  std::unique_ptr<BladeMesh> blade;
+  // Held by value: BladeMesh has no virtual destructor, so neither blade is owned through it.
+  std::optional<BladeModel> parametric_blade;
+  std::optional<SectionBlade> section_blade;
+  const BladeMesh* blade = nullptr;
   if (o.geometry.empty()) {
     if (o.rim_depth >= 0) throw CaseError("--rim-depth: only with --geometry (the parametric blade is clamped at its root)");
     const BladeGeometry parametric;
-    blade = std::make_unique<BladeModel>(generate_blade(parametric, o.refinement));
+    parametric_blade.emplace(generate_blade(parametric, o.refinement));
+    blade = &*parametric_blade;
     geometry = parametric_geometry_json(parametric);
   } else {
     SectionBladeOptions options;
     options.refinement = o.refinement;
     if (o.rim_depth >= 0) options.rim_depth = o.rim_depth;
     const BladeSections sections = read_blade_sections(o.geometry);
-    auto section_blade = std::make_unique<SectionBlade>(generate_section_blade(sections, options));
+    section_blade.emplace(generate_section_blade(sections, options));
+    blade = &*section_blade;
     geometry = section_geometry_json(o.geometry, options, *section_blade);
-    blade = std::move(section_blade);
   }
   const AssembledMatrices matrices = assemble_blade(*blade);
   NormalModes modes;
