@@ -49,13 +49,7 @@ json backbone_options_json(const BackboneOptions& o) {
 
 void add_backbone_summary(json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const BackboneResult& r) {
   const auto& s = r.continuation.summary;
-  summary["stop_reason"] = s.stop_reason;
-  summary["points"] = s.points;
-  summary["newton_iterations"] = s.newton_iterations;
-  summary["failed_steps"] = s.failed_steps;
-  summary["step_halvings"] = s.step_halvings;
-  summary["jacobian_evaluations"] = s.jacobian_evaluations;
-  summary["factorizations"] = s.factorizations;
+  add_continuation_counts(summary, s);
   summary["linear_mode"] = {{"omega", r.linear_omega}, {"xi", r.linear_xi}, {"damping_ratio", r.linear_xi / (2 * r.linear_omega)}};
   summary["outputs"] = outputs_json(c);
   json special = json::array();

@@ -28,15 +28,7 @@ void add_parameter_branch_summary(json& summary, const CaseDefinition& c, Harmon
                                   int parameter) {
   const auto& s = r.continuation.summary;
   const std::string& name = hbm.parameters().names()[static_cast<size_t>(parameter)];
-  summary["stop_reason"] = s.stop_reason;
-  summary["points"] = s.points;
-  summary["newton_iterations"] = s.newton_iterations;
-  summary["failed_steps"] = s.failed_steps;
-  summary["step_halvings"] = s.step_halvings;
-  summary["jacobian_evaluations"] = s.jacobian_evaluations;
-  summary["chord_iterations"] = s.chord_iterations;
-  summary["residual_evaluations"] = s.residual_evaluations;
-  summary["factorizations"] = s.factorizations;
+  add_continuation_counts(summary, s);
   summary["options"]["continuation"]["length_scale"] = r.length_scale;
   summary["outputs"] = outputs_json(c);
   const double omega = summary["options"]["continue"]["omega"].get<double>();

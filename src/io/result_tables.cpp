@@ -98,8 +98,7 @@ std::vector<double> state_row(double omega, const Eigen::VectorXd& x) {
   return row;
 }
 
-void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r) {
-  const auto& s = r.continuation.summary;
+void add_continuation_counts(json& summary, const ContinuationSummary& s) {
   summary["stop_reason"] = s.stop_reason;
   summary["points"] = s.points;
   summary["newton_iterations"] = s.newton_iterations;
@@ -109,6 +108,11 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   summary["chord_iterations"] = s.chord_iterations;
   summary["residual_evaluations"] = s.residual_evaluations;
   summary["factorizations"] = s.factorizations;
+}
+
+void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r) {
+  const auto& s = r.continuation.summary;
+  add_continuation_counts(summary, s);
   summary["options"]["continuation"]["length_scale"] = r.length_scale;
   summary["outputs"] = outputs_json(c);
   json special = json::array();

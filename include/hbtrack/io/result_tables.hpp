@@ -18,6 +18,9 @@ namespace hbtrack {
 nlohmann::json options_json(const CaseDefinition& c, const HarmonicBalance& hbm);
 // summary.json "outputs": [{name, dof}] per recorded output dof.
 nlohmann::json outputs_json(const CaseDefinition& c);
+// The continuation's stop reason and counters (points, Newton iterations, failed steps, ...)
+// into `summary`, as every branch-writing verb reports them.
+void add_continuation_counts(nlohmann::json& summary, const ContinuationSummary& s);
 // Adds max_NAME, min_NAME, h1_NAME of a recorded point to a JSON object.
 void add_outputs(nlohmann::json& j, const CaseDefinition& c, const RecordedPoint& p);
 
