@@ -14,6 +14,8 @@ char* openblas_get_corename(void);
 }
 #endif
 
+#include "openblas_lock.hpp"
+
 namespace hbtrack {
 
 using Eigen::MatrixXd;
@@ -26,7 +28,10 @@ namespace {
 void lapack_solve(char trans, const MatrixXd& factors, const std::vector<int>& pivots, VectorXd& b) {
   const int n = static_cast<int>(factors.rows()), columns = 1;
   int info = 0;
-  if (n > 0) dgetrs_(&trans, &n, &columns, factors.data(), &n, pivots.data(), b.data(), &n, &info);
+  if (n > 0) {
+    const std::lock_guard<std::mutex> lock(openblas_mutex());
+    dgetrs_(&trans, &n, &columns, factors.data(), &n, pivots.data(), b.data(), &n, &info);
+  }
   if (info < 0) throw std::logic_error("DenseLU: dgetrs rejected argument " + std::to_string(-info));
 }
 }  // namespace
@@ -42,7 +47,10 @@ void DenseLU::compute(const MatrixXd& a) {
   (void)one_thread;
   pivots_.resize(static_cast<size_t>(n));
   int info = 0;
-  if (n > 0) dgetrf_(&n, &n, factors_.data(), &n, pivots_.data(), &info);
+  if (n > 0) {
+    const std::lock_guard<std::mutex> lock(openblas_mutex());
+    dgetrf_(&n, &n, factors_.data(), &n, pivots_.data(), &info);
+  }
   if (info < 0) throw std::logic_error("DenseLU: dgetrf rejected argument " + std::to_string(-info));
   // info > 0 is an exact zero pivot: the factors are still complete (determinant 0, solves inf).
   Eigen::Transpositions<Eigen::Dynamic, Eigen::Dynamic, int> swaps(n);

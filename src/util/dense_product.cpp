@@ -11,6 +11,8 @@ void openblas_set_num_threads(int threads);
 }
 #endif
 
+#include "openblas_lock.hpp"
+
 namespace hbtrack {
 
 void multiply(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& b, Eigen::MatrixXd& c) {
@@ -27,6 +29,7 @@ void multiply(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const
   }
   const int lda = static_cast<int>(a.outerStride()), ldb = static_cast<int>(b.outerStride());
   const double one = 1.0, zero = 0.0;
+  const std::lock_guard<std::mutex> lock(openblas_mutex());
   dgemm_("N", "N", &m, &n, &k, &one, a.data(), &lda, b.data(), &ldb, &zero, c.data(), &m);
 #else
   c.noalias() = a * b;
