@@ -33,14 +33,14 @@ TEST(StabilityContact, TwoDofContactPeriodDoublesByDefault) {
     if (p.omega < 0.7640 || p.omega > 0.7689) continue;
     ++in_band;
     EXPECT_EQ(p.stable, 0) << "omega " << p.omega;
-    EXPECT_EQ(p.stability_method, "monodromy") << "omega " << p.omega;
+    EXPECT_EQ(p.stability_method, "shooting") << "omega " << p.omega;
   }
   EXPECT_GT(in_band, 0) << "no row in the band: the test checks nothing";
   int pd_in_band = 0;
   for (const SpecialPoint& sp : r.continuation.special_points)
     if (sp.type == "PD" && sp.lambda >= 0.763 && sp.lambda <= 0.770) {
       ++pd_in_band;
-      EXPECT_EQ(sp.decided_by, "monodromy");
+      EXPECT_EQ(sp.decided_by, "shooting");
     }
   EXPECT_EQ(pd_in_band, 2) << "the band's two edges";
 }
