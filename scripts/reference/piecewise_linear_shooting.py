@@ -19,8 +19,9 @@ Periodic solutions: Newton on x(T) - x(0) = 0 with Jacobian (monodromy - I), pse
 continuation in w (secant predictor, bordered Newton). Special points are bracketed by sign
 changes of det(Phi - I) (LP: fold; BP if w is not extremal there), det(Phi + I) (PD), the
 bialternate product prod_{i<j}(mu_i mu_j - 1) (NS; a real pair mu, 1/mu is a neutral saddle, not
-a bifurcation) and max q_i - gap (GR: grazing, contact starts or stops), and located by brentq on
-the arclength of the secant between the two points, each trial point corrected onto the branch.
+a bifurcation), max q_i - gap and the number of contact phases per period (GR: grazing, a contact
+phase starts or stops), and located by brentq on the arclength of the secant between the two
+points, each trial point corrected onto the branch.
 
     /usr/bin/python3 scripts/reference/piecewise_linear_shooting.py all
     /usr/bin/python3 scripts/reference/piecewise_linear_shooting.py nlvib_two_dof two_dof_contact
@@ -238,27 +239,29 @@ def point_record(system, u, Phi):
 
 def locate(system, p0, p1, kind):
     """Special point of test function `kind` between records p0 and p1, by brentq on the
-    arclength along their secant (each trial point corrected onto the branch)."""
+    arclength along their secant (each trial point corrected onto the branch). Kind "GC": where
+    the number of contact phases changes without max q_i crossing the gap (a secondary local
+    maximum touches the gap, or two contact phases merge): brentq on a +-1 step is a bisection."""
     d = p1["u"] - p0["u"]
     L = np.linalg.norm(d)
     d = d / L
     cache = {}
+    value = (lambda rec: 1.0 if rec["contacts"] == p0["contacts"] else -1.0) if kind == "GC" \
+        else (lambda rec: rec["tests"][kind])
 
     def phi(s):
-        if s <= 0:
-            return p0["tests"][kind]
-        if s >= L:
-            return p1["tests"][kind]
+        if s <= 0 or s >= L:
+            return value(p0 if s <= 0 else p1)
         done = correct(system, p0["u"] + s * d, d, p0["u"], s)
         if done is None:
             raise RuntimeError(f"corrector failed while locating {kind}")
         cache[s] = point_record(system, *done)
-        return cache[s]["tests"][kind]
+        return value(cache[s])
 
     s = brentq(phi, 0.0, L, xtol=1e-10 * max(1.0, L), rtol=1e-12)
     rec = cache.get(s) or point_record(system, *correct(system, p0["u"] + s * d, d, p0["u"], s))
     w, mu = rec["u"][-1], rec["mu"]
-    label, crossing = kind, None
+    label, crossing = ("GR" if kind == "GC" else kind), None
     if kind == "LP":
         crossing = mu[np.argmin(np.abs(mu - 1))]
         if (w - p0["u"][-1]) * (w - p1["u"][-1]) <= 0:
@@ -275,8 +278,8 @@ def locate(system, p0, p1, kind):
             "multiplier": None if crossing is None else [crossing.real, crossing.imag],
             "abs_multiplier": None if crossing is None else abs(crossing),
             "stable_before": p0["stable"], "stable_after": p1["stable"],
-            "max_q": [e[0] for e in rec["extremes"]], "contacts_per_period": rec["contacts"],
-            "record": rec}
+            "max_q": [e[0] for e in rec["extremes"]], "contacts_before": p0["contacts"], "contacts_after": p1["contacts"],
+            "record": rec, "s": s}
 
 
 def trace_branch(system, w_start, w_end, ds_max, ds_min=1e-6, max_points=5000, log=print):
@@ -313,11 +316,14 @@ def trace_branch(system, w_start, w_end, ds_max, ds_min=1e-6, max_points=5000, l
                                     * (w_end - u_last[-1]) / (u[-1] - u_last[-1]), w_end)
             u = np.append(x, w_end)
         rec = point_record(system, u, Phi)
-        for kind in ("LP", "PD", "NS", "GR"):
-            if points[-1]["tests"][kind] * rec["tests"][kind] < 0:
-                sp = locate(system, points[-1], rec, kind)
-                specials.append(sp)
-                log(f"  {sp['type']:>3} at w = {sp['w']:.9f}  multiplier {sp['multiplier']}")
+        changed = [k for k in ("LP", "PD", "NS", "GR") if points[-1]["tests"][k] * rec["tests"][k] < 0]
+        if points[-1]["contacts"] != rec["contacts"] and "GR" not in changed:
+            changed.append("GC")
+        for kind in changed:
+            sp = locate(system, points[-1], rec, kind)
+            sp["after"] = len(points) - 1  # where its record goes among the points
+            specials.append(sp)
+            log(f"  {sp['type']:>3} at w = {sp['w']:.9f}  multiplier {sp['multiplier']}")
         points.append(rec)
         if u[-1] == w_end:
             break
@@ -336,10 +342,12 @@ def two_dof_contact():
     return UnilateralSystem(np.eye(2), 0.02 * K, K, [0.1, 0.0], 1, 5.0, 0.5), 0.3, 2.0, 0.02
 
 
-def chain(n, zeta=0.05, force=0.03, stiffness=2.0, gap=0.05):
-    """examples/chain_contact.toml with n masses: a fixed-free chain of unit masses and springs
-    (ground - k - m0 - k - ... - m_{n-1}), modal damping zeta on every mode, force on mass 0,
-    the unilateral spring at the free end. Range 0.6 .. 1.6 times the first natural frequency."""
+def chain(n, zeta=0.05, force=0.01, stiffness=2.0, gap=0.05):
+    """examples/chain_contact.toml with n masses (its parameters, so that hbtrack's chain tests
+    can run the example itself): a fixed-free chain of unit masses and springs (ground - k - m0 -
+    k - ... - m_{n-1}), modal damping zeta on every mode, force on mass 0, the unilateral spring
+    at the free end; the linear tip peak is 2.3 (n = 2) and 2.5 (n = 8) gaps. Range 0.6 .. 1.6
+    times the first natural frequency, as bench/bench_chain.cpp."""
     K = 2 * np.eye(n) - np.eye(n, k=1) - np.eye(n, k=-1)
     K[-1, -1] = 1.0
     lam, Phi = np.linalg.eigh(K)  # unit masses: mass-normalised modes, C = Phi diag(2 zeta w) Phi^T
@@ -347,9 +355,12 @@ def chain(n, zeta=0.05, force=0.03, stiffness=2.0, gap=0.05):
     F = np.zeros(n)
     F[0] = force
     w1 = 2 * math.sin(math.pi / (2 * (2 * n + 1)))
-    return UnilateralSystem(np.eye(n), C, K, F, n - 1, stiffness, gap), 0.6 * w1, 1.6 * w1, 0.01
+    return UnilateralSystem(np.eye(n), C, K, F, n - 1, stiffness, gap), 0.6 * w1, 1.6 * w1, 0.004
 
 
+# w windows of the figures' right-hand zoom panels, around the special points
+ZOOM = {"nlvib_two_dof": (0.733, 0.7575), "two_dof_contact": (0.655, 0.775), "chain_2": (0.675, 0.722),
+        "chain_8": (0.205, 0.212)}
 CASES = {"nlvib_two_dof": nlvib_two_dof, "two_dof_contact": two_dof_contact,
          "chain_2": lambda: chain(2), "chain_8": lambda: chain(8)}
 
@@ -365,11 +376,23 @@ def thin(points, system, rows=300):
     spacing = np.linalg.norm(np.diff(X, axis=0), axis=1).sum() / rows
     keep, last = [0], X[0]
     for k in range(1, len(points)):
-        edge = k == len(points) - 1 or stable[k] != stable[k - 1] or stable[k] != stable[k + 1]
+        edge = k == len(points) - 1 or stable[k] != stable[k - 1] or stable[k] != stable[k + 1] \
+            or "special" in points[k]
         if edge or np.linalg.norm(X[k] - last) >= spacing:
             keep.append(k)
             last = X[k]
     return [points[k] for k in keep]
+
+
+def with_special_points(points, specials):
+    """The branch with the located special points inserted where they lie (rows marked by
+    their type), so that the CSV and the curves pass through them."""
+    merged = []
+    for k, p in enumerate(points):
+        merged.append(p)
+        for sp in sorted((sp for sp in specials if sp["after"] == k), key=lambda sp: sp["s"]):
+            merged.append(dict(sp["record"], special=sp["type"]))
+    return merged
 
 
 def mark_grazing(specials):
@@ -388,15 +411,16 @@ def write_outputs(name, system, points, specials, folder, figure):
     n = system.n
     head = ["w"] + [f"q{d}_{m}" for d in range(n) for m in ("max", "min")] + \
            ["stable", "max_abs_mu", "contacts"] + [f"x0_{k}" for k in range(2 * n)] + \
-           [f"mu{k}_{p}" for k in range(2 * n) for p in ("re", "im")]
+           [f"mu{k}_{p}" for k in range(2 * n) for p in ("re", "im")] + ["special"]
     mark_grazing(specials)
+    points = with_special_points(points, specials)
     rows = thin(points, system)
     with open(os.path.join(folder, "branch.csv"), "w") as f:
         f.write(",".join(head) + "\n")
         for p in rows:
             row = [p["u"][-1]] + [v for e in p["extremes"] for v in e] + \
                   [int(p["stable"]), np.abs(p["mu"]).max(), p["contacts"]] + list(p["u"][:-1]) + \
-                  [v for m in p["mu"] for v in (m.real, m.imag)]
+                  [v for m in p["mu"] for v in (m.real, m.imag)] + [p.get("special", "")]
             f.write(",".join(f"{v:.11g}" if isinstance(v, float) else str(v) for v in row) + "\n")
     model = {"M": system.M.tolist(), "C": system.C.tolist(), "K": system.K.tolist(),
              "force_cos": system.force.tolist(), "contact_dof": system.i,
@@ -406,7 +430,8 @@ def write_outputs(name, system, points, specials, folder, figure):
                "w_range": [points[0]["u"][-1], points[-1]["u"][-1]],
                "points_computed": len(points), "points_in_csv": len(rows),
                "newton_tolerance": NEWTON_TOL,
-               "special_points": [{k: v for k, v in sp.items() if k != "record"} for sp in specials]}
+               "special_points": [{k: v for k, v in sp.items() if k not in ("record", "s", "after")}
+                                  for sp in specials]}
     text = json.dumps(summary, indent=1)
     # one line per innermost list (multipliers, states, matrix rows)
     text = re.sub(r"\[\s+([^\[\]{}]*?)\s+\]", lambda m: "[" + re.sub(r"\s+", " ", m.group(1)) + "]", text)
@@ -419,33 +444,43 @@ def plot(name, system, points, specials, figure):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    dofs = sorted({0, system.n - 1})
-    fig, axes = plt.subplots(len(dofs), 1, figsize=(7, 2.6 * len(dofs) + 0.6), sharex=True, squeeze=False)
+    dofs, zoom = sorted({0, system.n - 1}), ZOOM.get(name)
+    if zoom and not any("special" in p and zoom[0] <= p["u"][-1] <= zoom[1] for p in points):
+        zoom = None
+    cols = 1 if zoom is None else 2
+    fig, axes = plt.subplots(len(dofs), cols, figsize=(6.5 * cols, 2.6 * len(dofs) + 0.6), squeeze=False)
     w = np.array([p["u"][-1] for p in points])
     stable = np.array([p["stable"] for p in points])
+    both = stable[:-1] & stable[1:]  # a segment between two points is stable if both ends are
     marks = {"LP": ("o", "k"), "BP": ("s", "m"), "PD": ("^", "C1"), "NS": ("D", "C2"), "GR": ("x", "0.4")}
-    for ax, d in zip(axes[:, 0], dofs):
+    for row, d in zip(axes, dofs):
         amp = np.array([p["extremes"][d][0] for p in points])
-        both = stable[:-1] & stable[1:]  # a segment between two points is stable if both ends are
-        for flag, style, color in ((True, "-", "C0"), (False, "--", "C3")):
-            keep = np.append(both == flag, False) | np.insert(both == flag, 0, False)
-            ax.plot(w, np.where(keep, amp, np.nan), style, color=color, lw=1.3,
-                    label="stable" if flag else "unstable")
-        for t, (m, c) in marks.items():
-            sel = [sp for sp in specials if sp["type"] == t]
-            if sel:
-                ax.plot([sp["w"] for sp in sel], [sp["max_q"][d] for sp in sel], m, color=c,
-                        mfc="none" if t == "GR" else c, label=t, ms=6)
-        if d == system.i:
-            ax.axhline(system.gap, color="0.7", lw=0.8, ls=":")
-        ax.set_ylabel(f"max q{d}")
-        ax.grid(alpha=0.3)
-    axes[0, 0].legend(fontsize=8, ncol=5)
-    axes[0, 0].set_title(f"{name}: exact shooting (solid blue stable, dashed red unstable)", fontsize=10)
-    axes[-1, 0].set_xlabel("w")
+        for col, ax in enumerate(row):
+            for flag, style, color in ((True, "-", "C0"), (False, "--", "C3")):
+                keep = np.append(both == flag, False) | np.insert(both == flag, 0, False)
+                ax.plot(w, np.where(keep, amp, np.nan), style, color=color, lw=1.3,
+                        label="stable" if flag else "unstable")
+            for t, (m, c) in marks.items():
+                sel = [sp for sp in specials if sp["type"] == t]
+                if sel:
+                    ax.plot([sp["w"] for sp in sel], [sp["max_q"][d] for sp in sel], m, color=c,
+                            mfc="none", label=t, ms=6 - 2 * col)
+            if d == system.i:
+                ax.axhline(system.gap, color="0.7", lw=0.8, ls=":")
+            if col == 1:  # the zoom: the part of the branch from its first to its last special point
+                marked = [k for k, p in enumerate(points) if "special" in p and zoom[0] <= w[k] <= zoom[1]]
+                part = slice(max(marked[0] - 20, 0), marked[-1] + 21)
+                inside = amp[part][(w[part] >= zoom[0]) & (w[part] <= zoom[1])]
+                pad = 0.05 * np.ptp(inside)
+                ax.set(xlim=zoom, ylim=(inside.min() - pad, inside.max() + pad), title="zoom")
+            ax.set_ylabel(f"max q{d}")
+            ax.set_xlabel("w")
+            ax.grid(alpha=0.3)
+    axes[0, 0].legend(fontsize=8, ncol=4)
+    fig.suptitle(f"{name}: exact shooting (solid blue stable, dashed red unstable)", fontsize=10)
     fig.tight_layout()
     os.makedirs(os.path.dirname(figure), exist_ok=True)
-    fig.savefig(figure, dpi=110)
+    fig.savefig(figure, dpi=100)
     plt.close(fig)
 
 
