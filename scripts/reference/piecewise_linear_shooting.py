@@ -54,9 +54,7 @@ class UnilateralSystem:
         self.Minv = np.linalg.inv(self.M)
 
     def augmented_matrix(self, w, contact):
-        n, i = self.n, self.i
-        K = self.K.copy()
-        offset = np.zeros(n)
+        n, i, K, offset = self.n, self.i, self.K.copy(), np.zeros(self.n)
         if contact:  # k_c (q_i - gap): stiffness on the diagonal, k_c*gap as a constant force
             K[i, i] += self.kc
             offset[i] = self.kc * self.gap
@@ -91,22 +89,15 @@ class PeriodFlow:
         self.E = [expm(A * self.h) for A in self.A]
         # Eigen-decompositions: cheap evaluation of the in-region solution inside root finding
         # and sampling (states are always re-propagated with expm, so they stay exact).
-        self.eig = []
-        for A in self.A:
-            lam, V = np.linalg.eig(A)
-            self.eig.append((lam, V, np.linalg.inv(V)) if np.linalg.cond(V) < 1e8 else None)
+        self.eig = [(lam, V, np.linalg.inv(V)) if np.linalg.cond(V) < 1e8 else None
+                    for lam, V in map(np.linalg.eig, self.A)]
 
     def state(self, r, y, tau):
         """y(tau) in region r from y(0) = y (tau scalar or array)."""
-        if self.eig[r] is None:
-            return (np.array([expm(self.A[r] * t) @ y for t in np.atleast_1d(tau)]).T
-                    if np.ndim(tau) else expm(self.A[r] * tau) @ y)
+        if self.eig[r] is None:  # ill-conditioned eigenvectors: expm itself
+            return np.squeeze(np.array([expm(self.A[r] * t) @ y for t in np.atleast_1d(tau)]).T)
         lam, V, Vinv = self.eig[r]
         return (V @ (np.exp(np.multiply.outer(lam, tau)).T * (Vinv @ y)).T).real
-
-    def contact_side(self, y):
-        g = y[self.s.i] - self.s.gap
-        return 1 if g > 0 or (g == 0 and y[self.s.n + self.s.i] > 0) else 0
 
     def run(self, x0, keep_segments=False):
         """x(T), the monodromy matrix, the number of contact phases, and the segments
@@ -114,7 +105,8 @@ class PeriodFlow:
         n2 = 2 * self.s.n
         y = np.concatenate([x0, [1.0, 0.0, 1.0]])
         P = np.eye(n2 + 3)
-        r = self.contact_side(y)
+        g = y[self.s.i] - self.s.gap
+        r = 1 if g > 0 or (g == 0 and y[self.s.n + self.s.i] > 0) else 0
         segments, switches, r0, t = [(0.0, r, y.copy())], 0, r, 0.0
         for k in range(self.steps):
             b = self.T if k == self.steps - 1 else (k + 1) * self.h
@@ -278,8 +270,8 @@ def locate(system, p0, p1, kind):
             "multiplier": None if crossing is None else [crossing.real, crossing.imag],
             "abs_multiplier": None if crossing is None else abs(crossing),
             "stable_before": p0["stable"], "stable_after": p1["stable"],
-            "max_q": [e[0] for e in rec["extremes"]], "contacts_before": p0["contacts"], "contacts_after": p1["contacts"],
-            "record": rec, "s": s}
+            "max_q": [e[0] for e in rec["extremes"]], "contacts_before": p0["contacts"],
+            "contacts_after": p1["contacts"], "record": rec, "s": s}
 
 
 def trace_branch(system, w_start, w_end, ds_max, ds_min=1e-6, max_points=5000, log=print):
@@ -413,6 +405,7 @@ def write_outputs(name, system, points, specials, folder, figure):
            ["stable", "max_abs_mu", "contacts"] + [f"x0_{k}" for k in range(2 * n)] + \
            [f"mu{k}_{p}" for k in range(2 * n) for p in ("re", "im")] + ["special"]
     mark_grazing(specials)
+    computed = len(points)
     points = with_special_points(points, specials)
     rows = thin(points, system)
     with open(os.path.join(folder, "branch.csv"), "w") as f:
@@ -428,7 +421,7 @@ def write_outputs(name, system, points, specials, folder, figure):
     summary = {"case": name, "model": model,
                "equation": "M q'' + C q' + K q + k_c max(q_i - gap, 0) e_i = F cos(w t), dofs 0-based",
                "w_range": [points[0]["u"][-1], points[-1]["u"][-1]],
-               "points_computed": len(points), "points_in_csv": len(rows),
+               "points_computed": computed, "points_in_csv": len(rows),
                "newton_tolerance": NEWTON_TOL,
                "special_points": [{k: v for k, v in sp.items() if k not in ("record", "s", "after")}
                                   for sp in specials]}
