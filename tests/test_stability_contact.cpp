@@ -4,12 +4,14 @@
 // example and the chain example with 2 and 8 masses.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
+#include "cli_support.hpp"
 #include "test_support.hpp"
 
 using namespace hbtrack;
@@ -182,4 +184,28 @@ TEST(StabilityContact, CrossCheckOffLeavesHillAlone) {
   const ContactRun run = default_nfrc("examples/two_dof_contact.toml", {"stability.cross_check=\"off\""});
   ASSERT_FALSE(run.r.recorded.empty());
   for (const RecordedPoint& p : run.r.recorded) EXPECT_EQ(p.stability_method, "hill");
+}
+
+// A 64-mass chain with the C0 tip contact, default settings: it reaches the end of its range
+// (issue 18 measured a stop at step_size_underflow for 128 masses and 1833 points for 2 before
+// the law's sample mean). Hill alone decides stability at this size; its NS points on the C0
+// law, which vanish at H = 10 on the 32-mass chain, are listed as warnings with the advice.
+TEST(StabilityContact, SixtyFourMassChainReachesItsEndWithDefaultsAndWarnsOfHillOnlyBifurcations) {
+  namespace fs = std::filesystem;
+  const fs::path out = fs::temp_directory_path() / ("hbtrack_chain64_" + std::to_string(getpid()));
+  fs::remove_all(out);
+  const test::CliRun r = test::run_cli("frc " + test::source_path("examples/chain_contact.toml") + " -q -o " + out.string() +
+                                       " --set model.chain.count=64 --set 'elements[0].dofs=[\"x64\"]' --set 'outputs[0].dof=\"x64\"'"
+                                       " --set continuation.omega_start=0.014611697762397038"
+                                       " --set continuation.omega_end=0.03896452736639211");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(s["stop_reason"], "reached_end");
+  EXPECT_LT(s["points"].get<int>(), 250);
+  int hill_bifurcations = 0;
+  for (const auto& p : s["special_points"]) hill_bifurcations += (p["type"] == "NS" || p["type"] == "PD");
+  bool warned = false;
+  for (const auto& w : s["warnings"]) warned |= w.get<std::string>().find("decided by Hill's method alone") != std::string::npos;
+  EXPECT_EQ(warned, hill_bifurcations > 0) << s["warnings"].dump();
+  fs::remove_all(out);
 }
