@@ -50,7 +50,7 @@ def read_result(folder):
         summary = json.load(f)
     result = {"kind": kind, "folder": folder, "summary": summary,
               "special_points": summary.get("special_points", [])}
-    for name, key in (("branch.csv", "branch"), ("signals.csv", "signals")):
+    for name, key in (("branch.csv", "branch"), ("signals.csv", "signals"), ("stability.csv", "stability")):
         path = os.path.join(folder, name)
         if os.path.exists(path):
             result[key] = read_columns(path)

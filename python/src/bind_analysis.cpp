@@ -41,6 +41,12 @@ py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const Nfrc
   for (const auto& sp : r.continuation.special_points) special.rows.push_back(state_row(sp.lambda, sp.u));
   add_nfrc_summary(summary, c, hbm, r);
   py::dict out;
+  if (c.nfrc.stability.enabled()) {  // stability.csv: the Floquet exponents of every point
+    Table stability{stability_header(), {}};
+    for (size_t i = 0; i < r.recorded.size(); ++i)
+      for (auto& row : stability_rows(static_cast<int>(i), r.recorded[i])) stability.rows.push_back(std::move(row));
+    out["stability"] = stability.columns();
+  }
   out["branch"] = branch.columns();
   out["states"] = states.matrix();
   out["special_states"] = special.matrix();
@@ -185,7 +191,7 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
 }  // namespace
 
 void bind_analysis(py::module_& m) {
-  m.def("frc", &frc, py::arg("case"), "NFRC with stability: {branch, states, special_points, special_states, summary}");
+  m.def("frc", &frc, py::arg("case"), "NFRC with stability: {branch, states, stability, special_points, special_states, summary}");
   m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
         py::arg("parameter_max"), py::arg("method") = "bordered", "limit point (x, omega) tracked in param");
   m.def("isolas", &isolas, py::arg("case"), py::arg("curves"), py::arg("param"), py::arg("at"),

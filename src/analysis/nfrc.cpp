@@ -77,6 +77,8 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
           const FloquetResult& f = monitor.result_for(p);
           rec.stable = f.stable ? 1 : 0;
           rec.max_floquet_real = f.max_real;
+          rec.floquet_exponents = f.exponents;
+          rec.floquet_multipliers = f.multipliers;
         }
         result.recorded.push_back(std::move(rec));
         return !observer || observer(p, result.recorded.back(), index);
