@@ -224,7 +224,7 @@ void add_sweep_verb(CLI::App& app, VerbList& verbs) {
   CLI::App* s = app.add_subcommand("sweep", "NFRCs (or limit-point tracking) over a grid or table of parameter values, on threads or MPI ranks");
   add_common_options(s, options.common);
   s->add_option("--param", options.params, "a named parameter to vary (repeatable, each with its --values)")->type_name("NAME");
-  s->add_option("--values", options.values, "its values: A,B,C or LO:HI:COUNT (evenly spaced, ends included)")->type_name("LIST");
+  s->add_option("--values", options.values, "its values: A,B,C or LO:HI:count=N (N evenly spaced values, ends included; not a step)")->type_name("LIST");
   s->add_option("--samples", options.samples, "a CSV table instead: a header of parameter names, one task per row")->type_name("FILE");
   s->add_option("--track", options.track, "follow every limit point of each NFRC in PARAM over LO:HI (default: the case's [study] range)")
       ->type_name("PARAM[:LO:HI]");
