@@ -62,7 +62,7 @@ int run_frc(const FrcOptions& options) {
   if (resumed) summary["resumed_at_point"] = rows_kept;
   write_json_atomically(dir + "/summary.json", summary);
 
-  Progress progress(o.quiet);
+  Progress progress(o.quiet, c.nfrc.omega_start, c.nfrc.omega_end);
   StopRequest stop(options.time_limit);
   ContinuationRestart restart;
   if (resumed) restart.resume_from = &resumed->state;

@@ -31,15 +31,6 @@ struct SweepOptions {
   int jobs = 0;
 };
 
-std::string duration_text(double seconds) {
-  char buf[32];
-  const long s = static_cast<long>(seconds + 0.5);
-  if (s >= 3600) std::snprintf(buf, sizeof buf, "%ldh%02ldm", s / 3600, s / 60 % 60);
-  else if (s >= 60) std::snprintf(buf, sizeof buf, "%ldm%02lds", s / 60, s % 60);
-  else std::snprintf(buf, sizeof buf, "%lds", s);
-  return buf;
-}
-
 // DIR may be new, empty, or hold this same sweep; anything else is refused before it is touched.
 void claim_folder(const std::string& dir, const json& definition) {
   namespace fs = std::filesystem;

@@ -16,9 +16,14 @@ import numpy as np
 from ._core import require_core
 
 
-def frc(case):
-    """The NFRC of `case` over its frequency range, with stability and special points."""
-    result = require_core().frc(case)
+def frc(case, *, progress=None):
+    """The NFRC of `case` over its frequency range, with stability and special points.
+    progress(fraction, point, omega), when given, is called after every accepted point; False
+    stops the run (stop_reason "stopped_by_callback"), an exception stops it and propagates."""
+    core = require_core()
+    if progress is not None and not callable(progress):
+        raise ValueError(f"progress: must be callable, got {type(progress).__name__}")
+    result = core.frc(case, progress)
     result["kind"] = "frc"
     return result
 
