@@ -216,22 +216,40 @@ TEST(Stability, SymmetryBreakingBranchPointsOfCoupledOscillators) {
 TEST(Stability, ArnoldiFindsTheRightmostHillExponents) {
   // The chain example (8 dofs, H = 10: a first-order Hill matrix of 336) at points of its NFRC:
   // shift-invert Arnoldi must return the exponents that decide stability, equal to the dense
-  // solver's. Exponents of one family share their real part, so compare the largest real
-  // parts (to the eigensolvers' accuracy, 1e-8 of omega) and the stable flags.
+  // solver's. Arnoldi sees only the members l + i k w of each family near the axis, the dense
+  // solver picks the most central member (energy centroid, stability/hill.cpp). Where both
+  // deciding exponents are the same member (same imaginary part modulo w), the largest real
+  // parts agree to the eigensolvers' accuracy, 1e-8 of omega. Where they are different
+  // members, the truncated Hill matrix gives the members real parts that differ by its
+  // truncation error: 1 % measured at H = 10 near the contact's onset (w = 0.18, where the
+  // chain's modes sit at harmonics 5 to 11); 3 % is allowed. Stable flags must always agree.
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
   const NfrcResult r = nfrc_of("examples/chain_contact.toml",
                                {"harmonic_balance.harmonics=10", "harmonic_balance.samples=128", "stability.method=\"none\""}, c, hbm);
   ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
-  int unstable = 0;
+  int unstable = 0, same_members = 0;
   for (size_t i = 0; i < r.continuation.points.size(); i += 9) {
     const BranchPoint& p = r.continuation.points[i];
     const FloquetResult dense = hill_floquet(*hbm, p.u, p.lambda, "dense");
     const FloquetResult arnoldi = hill_floquet(*hbm, p.u, p.lambda, "arnoldi");
     ASSERT_GT(arnoldi.exponents.size(), 0);
-    EXPECT_NEAR(arnoldi.max_real, dense.max_real, 1e-8 * p.lambda) << "omega " << p.lambda;
+    const auto deciding = [](const FloquetResult& f) {
+      Eigen::Index largest = 0;
+      f.exponents.real().maxCoeff(&largest);
+      return f.exponents(largest);
+    };
+    const double offset = std::abs(deciding(dense).imag()) - std::abs(deciding(arnoldi).imag());
+    const bool same_member = std::abs(offset - p.lambda * std::round(offset / p.lambda)) < 1e-6 * p.lambda;
+    same_members += same_member;
+    if (same_member) {
+      EXPECT_NEAR(arnoldi.max_real, dense.max_real, 1e-8 * p.lambda) << "omega " << p.lambda;
+    } else {
+      EXPECT_NEAR(arnoldi.max_real, dense.max_real, 0.03 * std::abs(dense.max_real)) << "omega " << p.lambda;
+    }
     EXPECT_EQ(arnoldi.stable, dense.stable) << "omega " << p.lambda;
     unstable += !dense.stable;
   }
   EXPECT_GT(unstable, 0) << "the comparison should include unstable points";
+  EXPECT_GT(same_members, 0) << "no point compared to the eigensolvers' accuracy";
 }

@@ -104,6 +104,13 @@ void write_study_report(const std::string& dir, const json& s) {
   out << "# hbtrack study of " << s.value("case", "") << "\n\nStatus: " << s.value("stop_reason", "") << ", "
       << num(s.contains("timings") ? s["timings"].value("wall_s", 0.0) : 0.0, "%.1f") << " s in all. Every number below is in "
       << "[summary.json](summary.json); each folder is the result of one hbtrack command (its log.txt says which).\n\n";
+  // What went wrong comes before everything that might look like a result.
+  const json failed = s.value("failed_checks", json::array());
+  if (!failed.empty()) {
+    out << "## Failed checks\n\nThe results below are not confirmed:\n\n";
+    for (const auto& f : failed) out << "- " << f.get<std::string>() << "\n";
+    out << "\n";
+  }
   for (const auto& f : s.value("figures", json::array())) out << "![" << f.get<std::string>() << "](" << f.get<std::string>() << ")\n\n";
   nominal_section(out, s);
   tracking_section(out, s);

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <optional>
 
+#include "artefact_warnings.hpp"
 #include "cli_common.hpp"
+#include "failure_advice.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/io/continuation_state_file.hpp"
 #include "hbtrack/io/results_writer.hpp"
@@ -88,12 +90,18 @@ int run_frc(const FrcOptions& options) {
   // The state of each special point, in summary order: `track` starts from a limit point's.
   CsvAppender special_states(dir + "/special_states.csv", state_header(hbm.unknowns()));
   for (const auto& sp : r.continuation.special_points) special_states.append(state_row(sp.lambda, sp.u));
+  const std::vector<std::string> warnings =
+      special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start));
+  summary["warnings"] = warnings;
+  for (const std::string& w : warnings) std::fprintf(stderr, "frc: warning: %s\n", w.c_str());
+  const double last_omega = r.recorded.empty() ? c.nfrc.omega_start : r.recorded.back().omega;
+  if (!r.continuation.success()) summary["advice"] = continuation_failure_advice(s, c.nfrc.continuation, last_omega);
   write_json_atomically(dir + "/summary.json", summary);
   if (!r.continuation.success()) {
     std::string reason = "continuation stopped: ";
     reason += stop_reason;
     reason += " after " + std::to_string(s.points);
-    reason += " points (kept in " + dir + ")";
+    reason += " points (kept in " + dir + "): " + summary["advice"].get<std::string>();
     throw RunFailed{reason};
   }
   if (!o.quiet)
@@ -117,7 +125,8 @@ int run_solve(const CommonOptions& o, double omega) {
                   {"converged", s.converged},
                   {"stop_reason", s.converged ? "converged" : "no_convergence"},
                   {"points", s.converged ? 1 : 0},
-                  {"newton_iterations", std::max(s.newton_iterations, 0)},
+                  // A failed solve spent every iteration it was allowed (the message says so).
+                  {"newton_iterations", s.converged ? s.newton_iterations : 4 * co.max_iterations},
                   {"failed_steps", s.converged ? 0 : 1},
                   {"special_points", json::array()}};
   if (s.converged) {
@@ -139,7 +148,9 @@ int run_solve(const CommonOptions& o, double omega) {
   }
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
   write_json_atomically(o.out_dir + "/summary.json", summary);
-  if (!s.converged) throw RunFailed{"Newton did not converge at omega = " + std::to_string(omega)};
+  if (!s.converged)
+    throw RunFailed{"Newton did not converge at omega = " + std::to_string(omega) + " in " + std::to_string(4 * co.max_iterations) +
+                    " iterations from the linear solution: solve nearer the linear regime, or raise continuation.max_iterations"};
   if (!o.quiet) std::fprintf(stderr, "solve: converged in %d Newton iterations -> %s\n", s.newton_iterations, o.out_dir.c_str());
   return 0;
 }

@@ -22,6 +22,7 @@
 #include "result_folder.hpp"
 #include "study_comparisons.hpp"
 #include "study_curves.hpp"
+#include "study_checks.hpp"
 #include "study_report.hpp"
 #include "task_runner.hpp"
 
@@ -80,11 +81,16 @@ class Study {
     for (const StudyTrack& t : tracked_) summary_["tracking"].push_back(entries_[t.parameter]);
     save();  // the figures script reads it
     figures();
-    summary_["stop_reason"] = ok ? "completed" : stop_reason_;
+    const json failed = failed_checks(summary_);
+    summary_["failed_checks"] = failed;
+    summary_["stop_reason"] = !ok ? stop_reason_ : failed.empty() ? "completed" : "checks_failed";
     summary_["timings"] = {{"wall_s", seconds_since(t0)}};
     save();
     write_study_report(dir_, summary_);
     if (!ok) throw RunFailed{"study stopped: " + stop_reason_ + " (results so far in " + dir_ + ")"};
+    if (!failed.empty())
+      throw RunFailed{"study: " + std::to_string(failed.size()) + " check(s) failed, first: " + failed[0].get<std::string>() + " (see " + dir_ +
+                      "/index.md)"};
     if (!o_.common.quiet) std::fprintf(stderr, "study: done in %.1f s -> %s/index.md\n", summary_["timings"]["wall_s"].get<double>(), dir_.c_str());
     return 0;
   }

@@ -50,12 +50,27 @@ double force_scale(HarmonicBalance& hbm, double length_scale) {
   return hbm.model().stiffness.cwiseAbs().maxCoeff() * length_scale;
 }
 
+Eigen::VectorXd starting_guess(HarmonicBalance& hbm, ContinuationProblem& problem, double omega, double lambda,
+                               double tolerance, int max_iterations) {
+  const Eigen::VectorXd linear = hbm.linear_solution(omega);
+  Eigen::VectorXd trial = linear;
+  if (newton_at_fixed_parameter(problem, trial, lambda, tolerance, max_iterations) >= 0) return linear;
+  const Eigen::VectorXd rest = hbm.rest_linearized_solution(omega);
+  return rest.allFinite() ? rest : linear;
+}
+
 NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
                         const RecordedObserver& observer, const ContinuationRestart& restart) {
   const ParameterWindow window{std::min(options.omega_start, options.omega_end), std::max(options.omega_start, options.omega_end),
                                options.omega_end >= options.omega_start ? 1 : -1, false};
-  return compute_branch(hbm, options, outputs, hbm.linear_solution(options.omega_start), options.omega_start, window, observer,
-                        restart);
+  Eigen::VectorXd guess;
+  if (!restart.resume_from) {
+    const double reference = options.length_scale == 0 ? automatic_length_scale(hbm, options.omega_start, options.omega_end)
+                                                        : options.length_scale;
+    NfrcProblem problem(hbm, reference, 1.0, force_scale(hbm, reference));
+    guess = starting_guess(hbm, problem, options.omega_start, options.omega_start, options.continuation.tolerance, 3 * options.continuation.max_iterations);
+  }
+  return compute_branch(hbm, options, outputs, guess, options.omega_start, window, observer, restart);
 }
 
 NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
@@ -79,6 +94,7 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
           rec.max_floquet_real = f.max_real;
           rec.floquet_exponents = f.exponents;
           rec.floquet_multipliers = f.multipliers;
+          rec.stability_method = f.method;
         }
         result.recorded.push_back(std::move(rec));
         return !observer || observer(p, result.recorded.back(), index);
@@ -90,9 +106,9 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
 FixedFrequencySolution solve_at_frequency(HarmonicBalance& hbm, double omega, const std::vector<OutputDof>& outputs,
                                           double tolerance, int max_iterations, const Eigen::VectorXd* guess) {
   FixedFrequencySolution s;
-  s.x = guess ? *guess : hbm.linear_solution(omega);
   const double length = automatic_length_scale(hbm, omega, omega);
   NfrcProblem problem(hbm, length, std::max(omega, 1.0), force_scale(hbm, length));
+  s.x = guess ? *guess : starting_guess(hbm, problem, omega, omega, tolerance, max_iterations);
   s.newton_iterations = newton_at_fixed_parameter(problem, s.x, omega, tolerance, max_iterations);
   s.converged = s.newton_iterations >= 0;
   if (s.converged) s.recorded = record_point(hbm, s.x, omega, outputs);

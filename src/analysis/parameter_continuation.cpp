@@ -91,7 +91,7 @@ ParameterBranchResult continue_in_parameter(HarmonicBalance& hbm, int parameter,
   ParameterProblem problem(hbm, parameter, omega, result.length_scale, std::abs(end - start), forcing);
 
   value = start;
-  Eigen::VectorXd x0 = hbm.linear_solution(omega);
+  Eigen::VectorXd x0 = starting_guess(hbm, problem, omega, start, options.continuation.tolerance, 4 * options.continuation.max_iterations);
   result.start_newton_iterations =
       newton_at_fixed_parameter(problem, x0, start, options.continuation.tolerance, 4 * options.continuation.max_iterations);
   if (result.start_newton_iterations < 0)

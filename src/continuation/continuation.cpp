@@ -1,5 +1,6 @@
 #include "hbtrack/continuation/continuation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -309,12 +310,14 @@ struct Locator {
 
 }  // namespace
 
-int newton_at_fixed_parameter(ContinuationProblem& problem, VectorXd& u, double lambda, double tolerance,
-                              int max_iterations) {
+namespace {
+// Newton at fixed lambda; `used` counts the iterations spent, also when it fails.
+int newton_counting(ContinuationProblem& problem, VectorXd& u, double lambda, double tolerance, int max_iterations, int& used) {
   VectorXd r, r_lambda;
   MatrixXd jac;
   DenseLU lu;
   const double scale = problem.residual_scale();
+  used = 0;
   for (int it = 0; it <= max_iterations; ++it) {
     problem.evaluate(u, lambda, r, &jac, &r_lambda);
     if (!r.allFinite()) return -1;
@@ -324,10 +327,18 @@ int newton_at_fixed_parameter(ContinuationProblem& problem, VectorXd& u, double 
     lu.compute(jac);
     r = -r;
     lu.solve_in_place(r);
+    ++used;
     if (!r.allFinite()) return -1;
     u += r;
   }
   return -1;
+}
+}  // namespace
+
+int newton_at_fixed_parameter(ContinuationProblem& problem, VectorXd& u, double lambda, double tolerance,
+                              int max_iterations) {
+  int used = 0;
+  return newton_counting(problem, u, lambda, tolerance, max_iterations, used);
 }
 
 ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
@@ -390,6 +401,12 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
 
   VectorXd x, t;
   double ds = options.step;
+  // The last step rejected for turning too much, to tell a corner from curvature (has_corners).
+  struct CornerCandidate {
+    double step = 0, turn = 0;
+    int points_since = 0;
+  } corner;
+  const bool corners = problem.has_corners();
   double farthest = 0;      // scaled distance from the first point, for closure
   BranchPoint first_point;  // for closure
   VectorXd first_scale;     // the scaling the first point's tangent was computed in
@@ -421,8 +438,13 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
   } else {
     // First point: Newton at fixed lambda_start.
     VectorXd u = u0;
-    const int first_iterations = newton_at_fixed_parameter(problem, u, lambda_start, options.tolerance, 3 * options.max_iterations);
-    if (first_iterations < 0) return finish("no_convergence_at_start");
+    int used = 0;
+    const int first_iterations = newton_counting(problem, u, lambda_start, options.tolerance, 3 * options.max_iterations, used);
+    if (first_iterations < 0) {
+      summary.newton_iterations += used;  // what was tried, for the failure message
+      ++summary.failed_steps;
+      return finish("no_convergence_at_start");
+    }
     summary.newton_iterations += first_iterations;
     s.su = problem.unknown_scale(u);
     x = s.pack(u, lambda_start);
@@ -472,11 +494,25 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     const bool smallest_step = ds <= 2 * options.step_min;
     bool accepted = converged && (y - x).dot(t) > 0 && (smallest_step || (y - prediction).norm() <= ds);
     Tangent tan_new;
+    bool through_corner = false;
     if (accepted) {
       // Through a corner (smallest step) the branch goes on the way the step went: oriented by
       // the old tangent, a turn sharper than 90 degrees would send it back along itself.
       tan_new = s.tangent(smallest_step ? VectorXd((y - x).normalized()) : t);
-      accepted = smallest_step || std::acos(std::clamp(t.dot(tan_new.t), -1.0, 1.0)) <= options.max_angle;
+      const double turn = std::acos(std::clamp(t.dot(tan_new.t), -1.0, 1.0));
+      accepted = smallest_step || turn <= options.max_angle;
+      // A smooth branch turns in proportion to the step; a corner of a sampled C0 law (or a fold
+      // narrower than a time sample) turns as much at half the step. Once seen, go through it
+      // at this step instead of halving down to step_min and growing back over dozens of points.
+      if (!accepted && corners) {
+        if (corner.turn > 0 && ds <= 0.5 * corner.step && turn >= 0.75 * corner.turn) {
+          tan_new = s.tangent(VectorXd((y - x).normalized()));
+          accepted = through_corner = true;
+          ++summary.corners_stepped_over;
+        } else {
+          corner = {ds, turn, 0};
+        }
+      }
     }
     if (!accepted) {
       if (!converged) ++summary.failed_steps;
@@ -496,19 +532,24 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
       const double f1 = k == 1 ? current.values[1] * std::exp(std::min(current.bp_log_det - previous.bp_log_det, 600.0))
                                : current.values[k];
       if (!(f0 * f1 < 0)) continue;
-      SpecialPoint sp{types[k], index_new, false, point.lambda, point.u, point.tangent};
+      SpecialPoint sp{types[k], index_new, false, point.lambda, point.u, point.tangent, ""};
       VectorXd located;
       Tangent located_tan;
       if (options.locate && locator.locate(k, x, t, f0, y, f1, previous.bp_log_det, located, located_tan)) {
         const double along = t.dot(located - x) / std::max(t.dot(y - x), 1e-300);
-        sp = {types[k], along < 0.5 ? index_new - 1 : index_new, true, s.parameter(located), s.unknowns(located), located_tan.t};
+        sp = {types[k], along < 0.5 ? index_new - 1 : index_new, true, s.parameter(located), s.unknowns(located), located_tan.t, ""};
       } else if (types[k] == "LP") {
         // Unlocated: the point where lambda is extreme.
         const bool was_rising = t(m) > 0;
         if (was_rising ? s.parameter(x) > s.parameter(y) : s.parameter(x) < s.parameter(y))
-          sp = {types[k], index_new - 1, false, s.parameter(x), s.unknowns(x), t};
+          sp = {types[k], index_new - 1, false, s.parameter(x), s.unknowns(x), t, ""};
       }
-      if (k >= 2 && !monitor->confirm(sp.type, BranchPoint{sp.u, sp.lambda, sp.tangent, 0, 0}, sp.located)) continue;
+      if (k >= 2) {
+        sp.type = monitor->classify(types[k], BranchPoint{sp.u, sp.lambda, sp.tangent, 0, 0}, sp.located, sp.decided_by);
+        // Two test functions may flip for one crossing (a nearly real pair): record it once.
+        const auto same = [&](const SpecialPoint& q) { return q.type == sp.type && q.index == sp.index; };
+        if (sp.type.empty() || std::any_of(result.special_points.begin(), result.special_points.end(), same)) continue;
+      }
       result.special_points.push_back(sp);
     }
     previous = current;
@@ -564,7 +605,10 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     // solution (linear against quadratic convergence) at a fraction of the cost.
     const double work = iterations - 0.5 * (s.chord_iterations - chords_before);
     const double factor = work == 0 ? 1.5 : std::clamp(options.target_iterations / work, 0.5, 1.5);
-    ds = std::min(ds * factor, options.step_max);
+    // Past a corner the branch is as smooth as before it: back to the step that met it.
+    ds = std::min(through_corner ? std::max(ds * factor, corner.step) : ds * factor, options.step_max);
+    // A remembered turn only stands for the corner just ahead.
+    if (through_corner || ++corner.points_since > 4) corner = {};
   }
 }
 

@@ -163,15 +163,30 @@ void HarmonicBalance::add_element_blocks(ElementSlot& s, double omega, int strid
   const ElementResponse& resp = s.response;
   const int k = static_cast<int>(positions.size());
   const int nc = basis_.coefficients();
+  auto scatter = [&](MatrixXd& target, const MatrixXd& block, int row_dof, int col_dof) {
+    for (int cc = 0; cc < nc; ++cc)
+      for (int rr = 0; rr < nc; ++rr) target(rr * stride + row_dof, cc * stride + col_dof) += s.sigma(rr) * block(rr, cc);
+  };
+  if (resp.history_dforce_dx.size() > 0) {
+    // A history element: block (i, j) = Gamma^-1 S_ij Gamma with S_ij the sparse N x N
+    // sensitivities d f_i(t) / d x_j(s). No velocity part.
+    if (!jacobian) return;
+    const int n = basis_.samples();
+    for (int jd = 0; jd < k; ++jd) {
+      const MatrixXd sensitivity_times_basis = resp.history_dforce_dx.middleCols(jd * n, n) * basis_.synthesis();
+      for (int i = 0; i < k; ++i) {
+        block_.noalias() = basis_.analysis() * sensitivity_times_basis.middleRows(i * n, n);
+        if (block_.isZero(0.0)) continue;
+        scatter(*jacobian, block_, positions[static_cast<size_t>(i)], positions[static_cast<size_t>(jd)]);
+      }
+    }
+    return;
+  }
   multiply(basis_.product_analysis(), resp.dforce_dx, coeffs_);
   const bool with_v = resp.dforce_dv.size() > 0;
   if (with_v) multiply(basis_.product_analysis(), resp.dforce_dv, coeffs_v_);
   block_.resize(nc, nc);
   block_v_.resize(nc, nc);
-  auto scatter = [&](MatrixXd& target, const MatrixXd& block, int row_dof, int col_dof) {
-    for (int cc = 0; cc < nc; ++cc)
-      for (int rr = 0; rr < nc; ++rr) target(rr * stride + row_dof, cc * stride + col_dof) += s.sigma(rr) * block(rr, cc);
-  };
   for (int i = 0; i < k; ++i) {
     for (int jd = 0; jd < k; ++jd) {
       const int col = i + k * jd;
@@ -313,6 +328,14 @@ VectorXd HarmonicBalance::linear_solution(double omega) {
   return x;
 }
 
+VectorXd HarmonicBalance::rest_linearized_solution(double omega) {
+  const VectorXd rest = VectorXd::Zero(unknowns());
+  VectorXd r;
+  MatrixXd jacobian;
+  evaluate(rest, omega, r, &jacobian, nullptr);
+  return -jacobian.partialPivLu().solve(r);
+}
+
 VectorXd HarmonicBalance::nonlinear_forces(const VectorXd& x, double omega) {
   VectorXd r = VectorXd::Zero(unknowns());
   const int q = retained_dofs();
@@ -357,6 +380,14 @@ double HarmonicBalance::nonlinear_adjoint_products(const VectorXd& x, double ome
     omega_derivative_samples(s, omega_samples_);
     w_dot_omega_derivative += (adjoint_local_.array() * omega_samples_.array()).sum();
     const bool with_v = resp.dforce_dv.size() > 0;
+    if (resp.history_dforce_dx.size() > 0) {
+      // History element: the transposed sensitivities map the weights back to earlier samples.
+      const Eigen::Map<const VectorXd> local(adjoint_local_.data(), adjoint_local_.size());
+      const VectorXd back = resp.history_dforce_dx.transpose() * local;
+      const Eigen::Index n = basis_.samples();
+      for (int jd = 0; jd < k; ++jd) adjoint_x_.col(s.columns[static_cast<size_t>(jd)]) += back.segment(jd * n, n);
+      continue;
+    }
     for (int jd = 0; jd < k; ++jd) {
       const int column = s.columns[static_cast<size_t>(jd)];
       for (int i = 0; i < k; ++i) {

@@ -43,6 +43,7 @@ json state_json(const ContinuationState& state) {
     j["type"] = sp.type;
     j["index"] = sp.index;
     j["located"] = sp.located;
+    j["decided_by"] = sp.decided_by;
     special.push_back(j);
   }
   json first = point_json(state.first.u, state.first.lambda, state.first.tangent);
@@ -95,7 +96,8 @@ ContinuationState state_from_json(const json& j) {
   s.first_parameter_scale = j.at("first_parameter_scale").get<double>();
   for (const json& sp : j.at("special_points"))
     s.special_points.push_back(SpecialPoint{sp.at("type").get<std::string>(), sp.at("index").get<int>(), sp.at("located").get<bool>(),
-                                            sp.at("lambda").get<double>(), json_vector(sp.at("u")), json_vector(sp.at("tangent"))});
+                                            sp.at("lambda").get<double>(), json_vector(sp.at("u")), json_vector(sp.at("tangent")),
+                                            sp.value("decided_by", std::string())});
   s.summary = summary_from_json(j.at("summary"));
   if (s.points < 1 || s.x.size() < 1 || s.x.size() != s.tangent.size() || s.unknown_scale.size() + 1 != s.x.size())
     throw std::runtime_error("inconsistent state");

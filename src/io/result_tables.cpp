@@ -38,7 +38,7 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
             {"locate", co.locate},
             {"reuse_factorization", co.reuse_factorization},
             {"contraction", co.contraction}}},
-          {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", c.nfrc.stability.hill_solver}}}};
+          {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", c.nfrc.stability.hill_solver}, {"cross_check", c.nfrc.stability.cross_check}}}};
 }
 
 json outputs_json(const CaseDefinition& c) {
@@ -147,6 +147,7 @@ void add_continuation_counts(json& summary, const ContinuationSummary& s) {
   summary["chord_iterations"] = s.chord_iterations;
   summary["residual_evaluations"] = s.residual_evaluations;
   summary["factorizations"] = s.factorizations;
+  summary["corners_stepped_over"] = s.corners_stepped_over;
 }
 
 void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r) {
@@ -157,12 +158,24 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   json special = json::array();
   for (const auto& sp : r.continuation.special_points) {
     json j = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
+    if (!sp.decided_by.empty()) j["stability_method"] = sp.decided_by;
     j["parameters"] = summary["options"]["parameters"];
     // Outputs of the special point itself (a located one lies between two rows of branch.csv).
     add_outputs(j, c, record_point(hbm, sp.u, sp.lambda, c.outputs));
     special.push_back(j);
   }
   summary["special_points"] = special;
+  // What decided the stability of the rows and of the PD/NS points (Hill, or the monodromy
+  // matrix where Hill is unreliable: see stability.cross_check).
+  if (c.nfrc.stability.enabled()) {
+    json decided = {{"hill", 0}, {"monodromy", 0}};
+    for (const RecordedPoint& p : r.recorded)
+      if (!p.stability_method.empty()) decided[p.stability_method] = decided[p.stability_method].get<int>() + 1;
+    json special_decided = {{"hill", 0}, {"monodromy", 0}};
+    for (const auto& sp : r.continuation.special_points)
+      if (!sp.decided_by.empty()) special_decided[sp.decided_by] = special_decided[sp.decided_by].get<int>() + 1;
+    summary["stability_methods"] = {{"points", decided}, {"special_points", special_decided}};
+  }
 }
 
 std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter) {

@@ -66,7 +66,7 @@ class HillShiftInvert {
 // the Arnoldi iteration did not converge.
 Eigen::VectorXcd eigenvalues_near_axis(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping,
                                        const Eigen::MatrixXd& mass, int blocks, int count, double omega,
-                                       std::vector<int> coupled) {
+                                       std::vector<int> coupled, Eigen::MatrixXcd& vectors) {
   HillShiftInvert op(jacobian, damping, mass, blocks, std::move(coupled));
   const Eigen::Index dimension = 2 * jacobian.rows();
   const Eigen::Index ncv = std::min<Eigen::Index>(dimension, std::max<Eigen::Index>(2 * count + 1, 20));
@@ -75,12 +75,14 @@ Eigen::VectorXcd eigenvalues_near_axis(const Eigen::MatrixXd& jacobian, const Ei
   solver.init();
   solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
   if (solver.info() != Spectra::CompInfo::Successful) return {};
+  vectors = solver.eigenvectors().topRows(jacobian.rows());
   return solver.eigenvalues();
 }
 
-// Every eigenvalue of the first-order form [p; l p]: A = [[0, I], [-D2^-1 J, -D2^-1 D1]].
+// Every eigenvalue of the first-order form [p; l p]: A = [[0, I], [-D2^-1 J, -D2^-1 D1]], and
+// the p part of its eigenvectors.
 Eigen::VectorXcd all_eigenvalues(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping,
-                                 const Eigen::MatrixXd& mass_matrix, int blocks) {
+                                 const Eigen::MatrixXd& mass_matrix, int blocks, Eigen::MatrixXcd& vectors) {
   const Eigen::Index size = jacobian.rows(), n = mass_matrix.rows();
   const Eigen::LLT<Eigen::MatrixXd> mass(mass_matrix);
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * size, 2 * size);
@@ -89,7 +91,25 @@ Eigen::VectorXcd all_eigenvalues(const Eigen::MatrixXd& jacobian, const Eigen::M
     a.block(size + b * n, 0, n, size) = -mass.solve(jacobian.middleRows(b * n, n));
     a.block(size + b * n, size, n, size) = -mass.solve(damping.middleRows(b * n, n));
   }
-  return Eigen::EigenSolver<Eigen::MatrixXd>(a, false).eigenvalues();
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, true);
+  vectors = solver.eigenvectors().topRows(size);
+  return solver.eigenvalues();
+}
+
+// Where the energy of a Hill eigenvector p sits among the harmonics: sum k E_k / sum E_k over
+// the complex exponentials e^{i k w t} (|k| <= H) of p(t). Members l + i m w of one exponent family
+// have centroids shifted by m; the member whose centroid is nearest 0 is the one the truncation
+// resolves best (Lazarus & Thomas 2010, Guillot et al. 2020), a spurious one sits near +-H.
+double energy_centroid(const Eigen::VectorXcd& p, int n, int blocks) {
+  using C = std::complex<double>;
+  double weighted = 0, total = 0.25 * p.head(n).squaredNorm();
+  for (int j = 1; 2 * j <= blocks - 1; ++j) {
+    const auto c = p.segment((2 * j - 1) * n, n), sn = p.segment(2 * j * n, n);
+    const double plus = 0.25 * (c - C(0, 1) * sn).squaredNorm(), minus = 0.25 * (c + C(0, 1) * sn).squaredNorm();
+    weighted += j * (plus - minus);
+    total += plus + minus;
+  }
+  return total > 0 ? weighted / total : 0.0;
 }
 
 }  // namespace
@@ -106,6 +126,7 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   // axis by shift-invert Arnoldi (one LU of the n(2H+1) pencil instead of a 2n(2H+1) QR).
   constexpr Eigen::Index kDenseLimit = 300;
   Eigen::VectorXcd all;
+  Eigen::MatrixXcd vectors;
   const bool arnoldi = solver == "arnoldi" || (solver == "auto" && 2 * size > kDenseLimit);
   // Stability and the PD/NS/LP test functions need only the exponents near the axis: at most
   // 24 of them, whatever the size (Arnoldi's cost grows with the square of that count).
@@ -113,14 +134,22 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
     std::set<int> coupled;  // the dofs the elements touch: the only ones coupling harmonics
     for (const auto& e : hbm.elements()) coupled.insert(e->dofs.begin(), e->dofs.end());
     all = eigenvalues_near_axis(jacobian, damping, hbm.model().mass, blocks, std::min<int>({2 * n, 24, static_cast<int>(size) - 2}), omega,
-                                {coupled.begin(), coupled.end()});
+                                {coupled.begin(), coupled.end()}, vectors);
   }
-  if (all.size() == 0) all = all_eigenvalues(jacobian, damping, hbm.model().mass, blocks);
+  if (all.size() == 0) all = all_eigenvalues(jacobian, damping, hbm.model().mass, blocks, vectors);
+  std::vector<double> centroid(static_cast<size_t>(all.size()));
+  for (Eigen::Index i = 0; i < all.size(); ++i) centroid[static_cast<size_t>(i)] = std::abs(energy_centroid(vectors.col(i), n, blocks));
   std::vector<Eigen::Index> order(static_cast<size_t>(all.size()));
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](Eigen::Index i, Eigen::Index j) { return std::abs(all(i).imag()) < std::abs(all(j).imag()); });
-  // Keep the 2n of smallest |Im l|, skipping copies l + i k w (k != 0) of one already kept: at a
+  // Most central eigenvectors first (not smallest |Im l|: on a law that is not smooth, spurious
+  // exponents of slowly converging families reach small |Im l| too); ties (the two members
+  // s +- i w/2 of a period-doubling family) by |Im l|.
+  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index i, Eigen::Index j) {
+    const double ci = centroid[static_cast<size_t>(i)], cj = centroid[static_cast<size_t>(j)];
+    if (std::abs(ci - cj) > 1e-6) return ci < cj;
+    return std::abs(all(i).imag()) < std::abs(all(j).imag());
+  });
+  // Keep the 2n most central, skipping copies l + i k w (k != 0) of one already kept: at a
   // period doubling the exponents sit on the strip edge, where s + i w/2 and s - i w/2 are the
   // same family, and keeping both would lose the other exponent crossing there.
   FloquetResult r;
@@ -136,7 +165,9 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
       const double shift = std::round(d.imag() / omega);
       copy = shift != 0.0 && std::abs(d.real()) <= tolerance && std::abs(d.imag() - shift * omega) <= tolerance;
     }
-    if (!copy) r.exponents(kept++) = l;
+    if (copy) continue;
+    r.centroid_spread = std::max(r.centroid_spread, centroid[static_cast<size_t>(order[i])]);
+    r.exponents(kept++) = l;
   }
   r.exponents.conservativeResize(kept);
   finish_floquet(r, omega, 1e-9 * omega);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <stdexcept>
 
 namespace hbtrack {
 
@@ -35,6 +36,8 @@ FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, 
   // Linearised element stiffness and damping at every stage time, scattered to model dofs.
   std::vector<MatrixXd> fx(static_cast<size_t>(samples), MatrixXd::Zero(n, n)), fv(static_cast<size_t>(samples), MatrixXd::Zero(n, n));
   for (const auto& element : hbm.elements()) {
+    if (element->history_dependent())
+      throw std::invalid_argument("element " + element->type() + " depends on its history: monodromy stability does not support it (use stability.method = \"hill\")");
     const int k = element->local_dofs();
     MatrixXd xl(samples, k), vl(samples, k);
     for (int i = 0; i < k; ++i) {

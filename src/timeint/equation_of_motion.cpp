@@ -20,6 +20,8 @@ EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementLi
   for (const auto& element : elements) {
     if (element->properties.size() != element->property_names().size())
       throw std::invalid_argument("element " + element->type() + ": property count does not match");
+    if (element->history_dependent())
+      throw std::invalid_argument("element " + element->type() + " depends on its history (a hysteresis over the period): time integration does not support it");
     for (int d : element->dofs)
       if (d < 0 || d >= model.dofs()) throw std::invalid_argument("element " + element->type() + ": dof index out of range");
     ElementSlot slot;

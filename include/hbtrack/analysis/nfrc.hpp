@@ -41,6 +41,11 @@ class NfrcProblem final : public ContinuationProblem {
   }
   double parameter_scale() const override { return omega_scale_; }
   double residual_scale() const override { return force_scale_; }
+  bool has_corners() const override {
+    for (const auto& e : hbm_.elements())
+      if (e->smoothness_limit().find("C0") != std::string::npos) return true;
+    return false;
+  }
 
  private:
   HarmonicBalance& hbm_;
@@ -56,6 +61,7 @@ struct RecordedPoint {
   double max_floquet_real = 0;        // largest real part of the Floquet exponents (1/s)
   // The Floquet exponents (1/s) and multipliers that decided `stable` (empty when not computed).
   Eigen::VectorXcd floquet_exponents, floquet_multipliers;
+  std::string stability_method;       // what decided `stable`: hill | monodromy ("" not computed)
 };
 
 RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,
@@ -84,6 +90,13 @@ NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const 
 NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
                           const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window,
                           const RecordedObserver& observer = {}, const ContinuationRestart& restart = {});
+
+// A first point for Newton at fixed omega: the linear solution when Newton converges from it,
+// otherwise the solution linearised about rest (HarmonicBalance::rest_linearized_solution), which
+// starts a stiff stuck friction element or a preloaded contact near its branch.
+// `lambda` is the problem's parameter at that point (omega itself for an NFRC).
+Eigen::VectorXd starting_guess(HarmonicBalance& hbm, ContinuationProblem& problem, double omega, double lambda,
+                               double tolerance, int max_iterations);
 
 // One periodic solution at fixed omega, by Newton from the linear solution (or from `guess`).
 struct FixedFrequencySolution {

@@ -14,11 +14,20 @@ struct StabilityOptions {
   std::string method = "hill";  // hill | monodromy | none
   int monodromy_steps = 2000;   // RK4 steps per period for the monodromy matrix
   std::string hill_solver = "auto";  // auto | dense | arnoldi (see stability/hill.hpp)
+  // Hill: where Hill's method is unreliable (a law that is not smooth, see
+  // hill_needs_cross_check), the monodromy matrix decides instead. auto | off
+  std::string cross_check = "auto";
   void validate() const;        // throws std::invalid_argument naming the field
   bool enabled() const { return method != "none"; }
 };
 
 FloquetResult floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const StabilityOptions& options);
+
+// Whether Hill's result `hill` at a point must be cross-checked by the monodromy matrix: an
+// element law that is not smooth (Hill's exponents converge slowly there and the pairing of
+// exponent families breaks down) on a model small enough for the monodromy matrix at every
+// point, or a kept eigenvector far from the central harmonics.
+bool hill_needs_cross_check(const HarmonicBalance& hbm, const FloquetResult& hill, const StabilityOptions& options);
 
 class FloquetMonitor final : public BranchMonitor {
  public:
@@ -29,6 +38,8 @@ class FloquetMonitor final : public BranchMonitor {
   // truncation leaves on a nonsmooth law); a bracketed one within 0.05 (the multipliers move by
   // about that between accepted points).
   bool confirm(const std::string& type, const BranchPoint& p, bool located) override;
+  // The type read from the multipliers at p (crossing_type), whichever test function flipped.
+  std::string classify(const std::string& type, const BranchPoint& p, bool located, std::string& decided_by) override;
   // Floquet result at p: reused when p is one of the last points evaluated (the engine
   // evaluates each accepted point before the observer sees it), computed otherwise.
   const FloquetResult& result_for(const BranchPoint& p);

@@ -23,6 +23,9 @@ class ContinuationProblem {
   virtual double parameter_scale() const = 0;
   // Convergence: ||R||_inf <= tolerance * residual_scale().
   virtual double residual_scale() const = 0;
+  // True when R is only piecewise smooth in u (a C0 law sampled in time): its branch has corners,
+  // which the engine recognises (a turn that does not shrink with the step) and steps over.
+  virtual bool has_corners() const { return false; }
 };
 
 struct ContinuationOptions {
@@ -66,6 +69,7 @@ struct SpecialPoint {
   double lambda = 0;
   Eigen::VectorXd u;
   Eigen::VectorXd tangent;  // scaled, as BranchPoint::tangent
+  std::string decided_by;   // PD/NS: the stability method that classified it ("hill", "monodromy")
 };
 
 struct ContinuationSummary {
@@ -80,6 +84,7 @@ struct ContinuationSummary {
   int factorizations = 0;
   int chord_iterations = 0;      // of newton_iterations, those with kept factors
   int residual_evaluations = 0;  // without the Jacobian (one per chord iteration and corrector)
+  int corners_stepped_over = 0;  // steps taken through a corner (ContinuationProblem::has_corners)
   double wall_s = 0;
 };
 
@@ -105,6 +110,12 @@ class BranchMonitor {
   // Whether a sign change of one of these test functions is a real special point: called at
   // the located point (located = true) or, when location failed, at the bracketing point.
   virtual bool confirm(const std::string& /*type*/, const BranchPoint& /*p*/, bool /*located*/) { return true; }
+  // What a sign change of test function `type` is, read at the point (a PD test may flip
+  // because a multiplier pair crossed elsewhere): the type to record, "" to drop it. `decided_by`
+  // names what decided. Default: confirm() keeps the type.
+  virtual std::string classify(const std::string& type, const BranchPoint& p, bool located, std::string& /*decided_by*/) {
+    return confirm(type, p, located) ? type : "";
+  }
 };
 
 // Solve R(u, lambda) = 0 at fixed lambda by Newton from u. Returns iterations used, -1 on failure.

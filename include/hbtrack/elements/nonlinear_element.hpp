@@ -4,6 +4,7 @@
 // Elements see all N samples of a period at once so that the loop over samples stays inside
 // one virtual call.
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,9 +19,16 @@ namespace hbtrack {
 //   dforce_dv      N x (k*k), same layout (left empty when the element ignores velocity)
 //   dforce_domega  N x k, explicit dependence on the forcing frequency (empty if none)
 //   dforce_dproperty N x (k*P), column i + k*p holds d f_i / d property_p
+// History-dependent elements (history_dependent() true: hysteresis, dry friction) return the
+// periodic steady state of their internal variables, so the force at sample t depends on the
+// displacements at earlier samples. They leave dforce_dx empty and fill instead
+//   history_dforce_dx  sparse (N*k) x (N*k), entry (t + N*i, s + N*j) = d f_i(t) / d x_j(s),
+// a compact form of the time-domain sensitivities (a Jenkins slider: two entries per sample,
+// the sample itself and the last slip event) that the AFT turns into Fourier blocks.
 struct ElementResponse {
   Eigen::MatrixXd force;
   Eigen::MatrixXd dforce_dx;
+  Eigen::SparseMatrix<double> history_dforce_dx;
   Eigen::MatrixXd dforce_dv;
   Eigen::MatrixXd dforce_domega;
   Eigen::MatrixXd dforce_dproperty;
@@ -36,6 +44,10 @@ class NonlinearElement {
   virtual const std::vector<std::string>& property_names() const = 0;
   virtual bool depends_on_velocity() const = 0;
   virtual bool depends_on_omega() const { return false; }
+  // True when the force depends on the past (see history_dforce_dx): evaluate() must then get
+  // a whole period of N uniform samples, and pointwise users (time integration, monodromy)
+  // refuse the element.
+  virtual bool history_dependent() const { return false; }
   // Why the force is not twice continuously differentiable ("" when it is): limit-point tracking
   // differentiates the Jacobian and cannot follow a fold through such a law.
   virtual std::string smoothness_limit() const { return ""; }

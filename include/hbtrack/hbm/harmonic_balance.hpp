@@ -54,6 +54,10 @@ class HarmonicBalance {
   Eigen::VectorXd expand(const Eigen::VectorXd& x, double omega);
   // Solution of the linear system (nonlinear forces switched off) at omega, in unknown layout.
   Eigen::VectorXd linear_solution(double omega);
+  // Solution of the system linearised about rest, x = -J(0)^-1 R(0): the elements' tangent at
+  // zero displacement included (a stuck friction slider's stiffness, a preloaded contact), which
+  // linear_solution ignores. One Newton step from zero.
+  Eigen::VectorXd rest_linearized_solution(double omega);
   // Nonlinear force harmonics on the retained dofs (unknown layout), Lanczos filter included.
   Eigen::VectorXd nonlinear_forces(const Eigen::VectorXd& x, double omega);
   // Products of w with the nonlinear forces' derivatives, from one set of time samples and

@@ -13,6 +13,9 @@ struct FloquetResult {
   Eigen::VectorXcd multipliers;
   double max_real = 0;         // largest real part of the exponents
   bool stable = true;
+  // Hill: the largest distance (in harmonics) of a kept eigenvector's energy centroid from the
+  // centre; near 0 when each kept exponent is the well-resolved member of its family.
+  double centroid_spread = 0;
 };
 
 // Fills multipliers, max_real and stable from exponents. `tolerance` on max_real (in 1/s):
@@ -28,6 +31,11 @@ double period_doubling_test(const Eigen::VectorXcd& multipliers);
 double neimark_sacker_test(const Eigen::VectorXcd& multipliers);
 // Whether a multiplier sits where a bifurcation of `type` puts it: PD a real one at -1, NS a
 // complex one on the unit circle, LP a real one at +1, within `tolerance`.
+// The type of the bifurcation whose multiplier sits on the unit circle (within `tolerance`), read
+// from the multipliers rather than from which test function flipped: "PD" a real multiplier at -1,
+// "NS" a complex pair (Hill's split of a real pair near -1, |Im mu| <= `real_tolerance` |mu|,
+// counts as real), "LP" a real one at +1, "" none.
+std::string crossing_type(const Eigen::VectorXcd& multipliers, double tolerance, double real_tolerance);
 bool has_multiplier_on_unit_circle(const Eigen::VectorXcd& multipliers, const std::string& type, double tolerance);
 
 }  // namespace hbtrack

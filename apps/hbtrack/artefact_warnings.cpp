@@ -1,0 +1,48 @@
+#include "artefact_warnings.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+namespace hbtrack::cli {
+
+namespace {
+// Genuine folds and bifurcations of a resonance come in ones and twos, a few percent of the range
+// apart; a sampling saw-tooth puts dozens within a fraction of a percent.
+constexpr size_t kClusterSize = 4;
+constexpr double kClusterSpacing = 1e-3;
+
+std::string describe(const std::vector<const SpecialPoint*>& cluster) {
+  std::map<std::string, int> by_type;
+  for (const SpecialPoint* p : cluster) ++by_type[p->type];
+  std::string types;
+  for (const auto& [type, count] : by_type) types += (types.empty() ? "" : ", ") + std::to_string(count) + " " + type;
+  char range[96];
+  std::snprintf(range, sizeof range, "omega in [%.6g, %.6g]", cluster.front()->lambda, cluster.back()->lambda);
+  return std::to_string(cluster.size()) + " special points (" + types + ") within " + range +
+         ": closer together than the sampled contact law resolves, most likely artefacts of the time sampling. "
+         "Raise harmonic_balance.samples, or use a regularised law whose width spans several samples "
+         "(regularized_contact, law = \"sqrt\"), and check that they move or vanish";
+}
+}  // namespace
+
+std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>& points, double omega_range) {
+  std::vector<const SpecialPoint*> sorted;
+  for (const SpecialPoint& p : points)
+    if (p.type != "BP") sorted.push_back(&p);
+  std::sort(sorted.begin(), sorted.end(), [](const SpecialPoint* a, const SpecialPoint* b) { return a->lambda < b->lambda; });
+  std::vector<std::string> warnings;
+  std::vector<const SpecialPoint*> cluster;
+  auto flush = [&] {
+    if (cluster.size() >= kClusterSize) warnings.push_back(describe(cluster));
+    cluster.clear();
+  };
+  for (const SpecialPoint* p : sorted) {
+    if (!cluster.empty() && p->lambda - cluster.back()->lambda > kClusterSpacing * omega_range) flush();
+    cluster.push_back(p);
+  }
+  flush();
+  return warnings;
+}
+
+}  // namespace hbtrack::cli

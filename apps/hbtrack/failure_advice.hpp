@@ -1,0 +1,13 @@
+#pragma once
+// What a continuation that stopped early tried, and what to change: one sentence per stop
+// reason, for the message of `frc` (and the summary's "advice").
+#include <string>
+
+#include "hbtrack/continuation/continuation.hpp"
+
+namespace hbtrack::cli {
+
+// last_lambda: the parameter of the last accepted point (the start when there is none).
+std::string continuation_failure_advice(const ContinuationSummary& s, const ContinuationOptions& o, double last_lambda);
+
+}  // namespace hbtrack::cli

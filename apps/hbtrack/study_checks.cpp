@@ -1,0 +1,33 @@
+#include "study_checks.hpp"
+
+#include <string>
+
+namespace hbtrack::cli {
+
+using nlohmann::json;
+
+json failed_checks(const json& s) {
+  json failed = json::array();
+  for (const auto& step : s.value("steps", json::array())) {
+    const int code = step.value("exit_code", 0);
+    const std::string folder = step.value("folder", "");
+    const bool simulation_ran = folder == "simulate" && code == 1 && s.contains("simulation");
+    if (code != 0 && !simulation_ran)
+      failed.push_back(folder + ": exit " + std::to_string(code) + " (see " + folder + "/log.txt)");
+  }
+  for (const auto& t : s.value("tracking", json::array()))
+    for (const auto& v : t.value("validations", json::array())) {
+      const std::string folder = v.value("folder", "");
+      const std::string reason = v.value("stop_reason", "");
+      if (reason != "reached_end")
+        failed.push_back(folder + ": the validation NFRC did not reach the end of its range (" + (reason.empty() ? "no result" : reason) +
+                         "), so its limit points cannot all be compared");
+      const int off = v.value("lps_off_the_curves", 0);
+      if (off > 0)
+        failed.push_back(folder + ": " + std::to_string(off) + " of its " + std::to_string(v.value("limit_points", json::array()).size()) +
+                         " limit points lie on no tracking curve (relative distance > 1e-5)");
+    }
+  return failed;
+}
+
+}  // namespace hbtrack::cli

@@ -1,0 +1,31 @@
+#pragma once
+// Point contact with a varying normal load and elastic dry friction (a Jenkins element whose
+// slip limit is mu N(t)), with separation. Two dofs: [normal, tangential].
+#include "hbtrack/elements/nonlinear_element.hpp"
+
+namespace hbtrack {
+
+// Normal: N(t) = max(0, normal_preload + normal_stiffness x_n(t)) (penalty; a negative preload is
+// an initial gap of -preload / normal_stiffness). Tangential: T = tangential_stiffness (x_t - z)
+// with |T| <= mu N; z follows x_t while separated (T = 0).
+// Periodic steady state: every slip or separation sample erases the memory, so a pass started at
+// such an event is periodic once the event recurs when the pass comes back to it. The element
+// takes the last event of a pass from the midrange state as the next start and repeats until
+// the start event recurs (usually the second pass). A period without any event is a permanent
+// stick, with z at the midrange of x_t as for elastic_dry_friction.
+// Properties: normal_stiffness, tangential_stiffness, mu, normal_preload.
+class FrictionalContact final : public NonlinearElement {
+ public:
+  std::string type() const override { return "frictional_contact"; }
+  const std::vector<std::string>& property_names() const override;
+  bool depends_on_velocity() const override { return false; }
+  bool history_dependent() const override { return true; }
+  std::string smoothness_limit() const override {
+    return "contact separation and stick-slip transitions make the force non-smooth";
+  }
+  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
+                const std::vector<double>& property_values, ElementResponse& out,
+                bool want_property_derivatives) const override;
+};
+
+}  // namespace hbtrack

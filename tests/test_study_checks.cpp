@@ -1,0 +1,44 @@
+// The study's verdict (apps/hbtrack/study_checks.cpp): "completed" only when every step
+// succeeded and every limit point of every validation NFRC lies on a tracking curve.
+#include <gtest/gtest.h>
+
+#include "study_checks.hpp"
+
+using nlohmann::json;
+
+namespace {
+
+json passing_summary() {
+  return {{"steps", json::array({{{"folder", "nfrc"}, {"exit_code", 0}}, {{"folder", "validate_a_1"}, {"exit_code", 0}},
+                                 {{"folder", "simulate"}, {"exit_code", 1}}})},
+          {"simulation", {{"converged", false}}},
+          {"tracking", json::array({{{"validations", json::array({{{"folder", "validate_a_1"},
+                                                                   {"stop_reason", "reached_end"},
+                                                                   {"limit_points", json::array({json::object(), json::object()})},
+                                                                   {"lps_off_the_curves", 0}}})}}})}};
+}
+
+}  // namespace
+
+TEST(StudyChecks, AStudyWhoseChecksHoldPasses) {
+  // A time integration that ran but did not settle is a finding of the comparison, not a failure.
+  EXPECT_TRUE(hbtrack::cli::failed_checks(passing_summary()).empty());
+}
+
+TEST(StudyChecks, ValidationLimitPointsOffTheCurvesFailTheStudy) {
+  json s = passing_summary();
+  s["tracking"][0]["validations"][0]["lps_off_the_curves"] = 1;
+  const json failed = hbtrack::cli::failed_checks(s);
+  ASSERT_EQ(failed.size(), 1u);
+  EXPECT_NE(failed[0].get<std::string>().find("validate_a_1: 1 of its 2 limit points lie on no tracking curve"), std::string::npos) << failed;
+}
+
+TEST(StudyChecks, AValidationThatDidNotStartOrAFailedStepFailsTheStudy) {
+  json s = passing_summary();
+  s["tracking"][0]["validations"][0]["stop_reason"] = "no_convergence_at_start";
+  s["steps"][1]["exit_code"] = 1;
+  const json failed = hbtrack::cli::failed_checks(s);
+  ASSERT_EQ(failed.size(), 2u);
+  EXPECT_NE(failed[0].get<std::string>().find("validate_a_1: exit 1"), std::string::npos) << failed;
+  EXPECT_NE(failed[1].get<std::string>().find("no_convergence_at_start"), std::string::npos) << failed;
+}
