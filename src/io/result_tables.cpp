@@ -104,7 +104,7 @@ std::vector<double> branch_row(const RecordedPoint& p) {
 }
 
 std::vector<std::string> stability_header() {
-  return {"point", "omega", "k", "exponent_real", "exponent_imag", "multiplier_real", "multiplier_imag"};
+  return {"point", "omega", "k", "exponent_real", "exponent_imag", "multiplier_real", "multiplier_imag", "monodromy"};
 }
 
 std::vector<std::vector<double>> stability_rows(int point, const RecordedPoint& p) {
@@ -116,7 +116,7 @@ std::vector<std::vector<double>> stability_rows(int point, const RecordedPoint& 
   for (size_t k = 0; k < order.size(); ++k) {
     const std::complex<double> exponent = p.floquet_exponents(order[k]), multiplier = p.floquet_multipliers(order[k]);
     rows.push_back({static_cast<double>(point), p.omega, static_cast<double>(k), exponent.real(), exponent.imag(),
-                    multiplier.real(), multiplier.imag()});
+                    multiplier.real(), multiplier.imag(), p.stability_method == "monodromy" ? 1.0 : 0.0});
   }
   return rows;
 }
