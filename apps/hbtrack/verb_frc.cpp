@@ -90,8 +90,10 @@ int run_frc(const FrcOptions& options) {
   // The state of each special point, in summary order: `track` starts from a limit point's.
   CsvAppender special_states(dir + "/special_states.csv", state_header(hbm.unknowns()));
   for (const auto& sp : r.continuation.special_points) special_states.append(state_row(sp.lambda, sp.u));
-  const std::vector<std::string> warnings =
+  std::vector<std::string> warnings =
       special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start));
+  for (std::string& w : unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
+    warnings.push_back(std::move(w));
   summary["warnings"] = warnings;
   for (const std::string& w : warnings) std::fprintf(stderr, "frc: warning: %s\n", w.c_str());
   const double last_omega = r.recorded.empty() ? c.nfrc.omega_start : r.recorded.back().omega;

@@ -15,6 +15,15 @@ const std::vector<std::string>& TipContact::property_names() const {
   return names;
 }
 
+int TipContact::switching_surfaces(const std::vector<double>& p) const {
+  return kind_ == ContactLawKind::penalty || p[kWidth] <= 0.0 ? 1 : 0;
+}
+
+void TipContact::switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd&, const std::vector<double>& p,
+                                  double* out) const {
+  out[0] = x(0, kR) - p[kClearance];
+}
+
 void TipContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                           const std::vector<double>& p, ElementResponse& out,
                           bool want_property_derivatives) const {

@@ -168,10 +168,10 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   // What decided the stability of the rows and of the PD/NS points (Hill, or the monodromy
   // matrix where Hill is unreliable: see stability.cross_check).
   if (c.nfrc.stability.enabled()) {
-    json decided = {{"hill", 0}, {"monodromy", 0}};
+    json decided = {{"hill", 0}, {"monodromy", 0}, {"shooting", 0}};
     for (const RecordedPoint& p : r.recorded)
       if (!p.stability_method.empty()) decided[p.stability_method] = decided[p.stability_method].get<int>() + 1;
-    json special_decided = {{"hill", 0}, {"monodromy", 0}};
+    json special_decided = {{"hill", 0}, {"monodromy", 0}, {"shooting", 0}};
     for (const auto& sp : r.continuation.special_points)
       if (!sp.decided_by.empty()) special_decided[sp.decided_by] = special_decided[sp.decided_by].get<int>() + 1;
     summary["stability_methods"] = {{"points", decided}, {"special_points", special_decided}};

@@ -29,6 +29,8 @@ EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementLi
     slot.property_values = element->property_values(parameters);
     slot.x.resize(1, element->local_dofs());
     slot.v.resize(1, element->local_dofs());
+    slot.switching = element->switching_surfaces(slot.property_values);
+    switching_count_ += slot.switching;
     elements_.push_back(std::move(slot));
   }
 }
@@ -56,10 +58,7 @@ void EquationOfMotion::nonlinear_force(const Eigen::VectorXd& x, const Eigen::Ve
   for (ElementSlot& s : elements_) {
     const NonlinearElement& element = *s.element;
     const int k = element.local_dofs();
-    for (int i = 0; i < k; ++i) {
-      s.x(0, i) = x(element.dofs[static_cast<size_t>(i)]);
-      s.v(0, i) = v(element.dofs[static_cast<size_t>(i)]);
-    }
+    gather(s, x, v);
     element.evaluate(s.x, s.v, omega_, s.property_values, s.response, false);
     const ElementResponse& r = s.response;
     for (int i = 0; i < k; ++i) {
@@ -72,6 +71,25 @@ void EquationOfMotion::nonlinear_force(const Eigen::VectorXd& x, const Eigen::Ve
         if (df_dv && r.dforce_dv.size() > 0) (*df_dv)(row, col) += r.dforce_dv(0, i + k * j);
       }
     }
+  }
+}
+
+void EquationOfMotion::gather(ElementSlot& s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
+  const auto& dofs = s.element->dofs;
+  for (size_t i = 0; i < dofs.size(); ++i) {
+    s.x(0, static_cast<Eigen::Index>(i)) = x(dofs[i]);
+    s.v(0, static_cast<Eigen::Index>(i)) = v(dofs[i]);
+  }
+}
+
+void EquationOfMotion::switching_values(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+  out.resize(switching_count_);
+  int next = 0;
+  for (ElementSlot& s : elements_) {
+    if (s.switching == 0) continue;
+    gather(s, x, v);
+    s.element->switching_values(s.x, s.v, s.property_values, out.data() + next);
+    next += s.switching;
   }
 }
 

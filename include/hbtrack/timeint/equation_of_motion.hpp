@@ -36,6 +36,10 @@ class EquationOfMotion {
   // Not const: reuses per-element buffers (one instance per thread).
   void nonlinear_force(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& f,
                        Eigen::MatrixXd* df_dx = nullptr, Eigen::MatrixXd* df_dv = nullptr);
+  // The elements' switching surfaces (NonlinearElement::switching_values): where the tangents
+  // jump, so that a stepper can stop on them. `out` gets switching_count() values.
+  int switching_count() const { return switching_count_; }
+  void switching_values(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& out);
 
  private:
   struct ElementSlot {
@@ -43,7 +47,9 @@ class EquationOfMotion {
     std::vector<double> property_values;
     Eigen::MatrixXd x, v;  // 1 x k: one time sample of the local dofs
     ElementResponse response;
+    int switching = 0;  // the element's switching surfaces
   };
+  void gather(ElementSlot& s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) const;
   struct ScaledForce {
     int order = 1;
     Eigen::VectorXd cos_part, sin_part;  // already multiplied by amplitude
@@ -53,6 +59,7 @@ class EquationOfMotion {
   std::vector<ScaledForce> forcing_;
   std::vector<ElementSlot> elements_;
   double omega_;
+  int switching_count_ = 0;
 };
 
 }  // namespace hbtrack
