@@ -116,7 +116,7 @@ TEST_F(ResultColumns, StabilityTableHoldsTheExponentsThatDecidedStable) {
   const auto col = column_index(csv_header(out_ / "branch.csv"));
   EXPECT_EQ(csv_header(out_ / "stability.csv"),
             (std::vector<std::string>{"point", "omega", "k", "exponent_real", "exponent_imag", "multiplier_real", "multiplier_imag",
-                                      "monodromy"}));
+                                      "method"}));
   std::map<int, std::vector<std::vector<double>>> by_point;
   for (const auto& row : table) by_point[static_cast<int>(row[0])].push_back(row);
   ASSERT_EQ(by_point.size(), branch.size());
@@ -135,7 +135,7 @@ TEST_F(ResultColumns, StabilityTableHoldsTheExponentsThatDecidedStable) {
       const std::complex<double> expected = std::exp(std::complex<double>(rows[k][3], rows[k][4]) * period);
       EXPECT_NEAR(rows[k][5], expected.real(), 1e-12 * std::abs(expected)) << "point " << point;
       EXPECT_NEAR(rows[k][6], expected.imag(), 1e-12 * std::abs(expected)) << "point " << point;
-      EXPECT_EQ(rows[k][7], 0.0) << "Hill decides on Duffing (a smooth law), point " << point;
+      EXPECT_EQ(rows[k][7], 0.0) << "Hill (code 0) decides on Duffing (a smooth law), point " << point;
     }
     // `stable` is max Re(exponent) <= 1e-9 omega (finish_floquet's tolerance): row k = 0 decides.
     const bool is_stable = rows[0][3] <= 1e-9 * omega;

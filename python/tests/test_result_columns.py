@@ -57,14 +57,20 @@ def test_stability_table_decides_stable(two_dof):
         assert table["k"][rows][0] == 0 and real[0] == real.max()
         assert branch["stable"][i] == float(real[0] <= 1e-9 * branch["omega"][i])  # finish_floquet's rule
     assert 0 < branch["stable"].sum() < len(branch["stable"])  # the contact fold is unstable between its LPs
-    # The `monodromy` flag of each point agrees with summary.json's count of what decided the
-    # points (a C0 contact law on 2 dofs: the monodromy cross-check decides them).
-    decided = result["summary"]["stability_methods"]["points"]
-    flags = [table["monodromy"][points == i][0] for i in range(len(branch["omega"]))]
-    assert sum(flags) == decided.get("monodromy", 0) > 0
-    assert len(flags) - sum(flags) == decided.get("hill", 0)
+    # The `method` code of each point (0 hill, 1 monodromy, 2 shooting) agrees with summary.json's
+    # count of what decided the points, one method per point (a C0 contact law on 2 dofs: the
+    # cross-check, not Hill, decides most of them).
+    codes = {"hill": 0, "monodromy": 1, "shooting": 2}
+    per_point = []
     for i in range(len(branch["omega"])):
-        assert np.all(table["monodromy"][points == i] == flags[i])  # one method per point
+        methods = set(table["method"][points == i])
+        assert len(methods) == 1, (i, methods)
+        per_point.append(methods.pop())
+    decided = result["summary"]["stability_methods"]["points"]
+    assert set(decided) == set(codes)
+    for name, code in codes.items():
+        assert per_point.count(code) == decided[name], name
+    assert per_point.count(codes["hill"]) < len(per_point)
 
 
 def test_api_returns_the_stability_table_of_the_cli(duffing_frc, duffing_frc_cli):

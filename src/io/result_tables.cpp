@@ -1,6 +1,7 @@
 #include "hbtrack/io/result_tables.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <nlohmann/json.hpp>
@@ -103,8 +104,26 @@ std::vector<double> branch_row(const RecordedPoint& p) {
   return row;
 }
 
+namespace {
+// The methods that decide a point's stability: the keys of summary.json's stability_methods, and
+// in this order the codes of stability.csv's `method` column (its cells are numbers).
+constexpr std::array<const char*, 3> kStabilityMethods{"hill", "monodromy", "shooting"};
+
+double stability_method_code(const std::string& method) {
+  for (size_t i = 0; i < kStabilityMethods.size(); ++i)
+    if (method == kStabilityMethods[i]) return static_cast<double>(i);
+  return -1;  // not computed
+}
+
+json method_counts() {
+  json counts = json::object();
+  for (const char* method : kStabilityMethods) counts[method] = 0;
+  return counts;
+}
+}  // namespace
+
 std::vector<std::string> stability_header() {
-  return {"point", "omega", "k", "exponent_real", "exponent_imag", "multiplier_real", "multiplier_imag", "monodromy"};
+  return {"point", "omega", "k", "exponent_real", "exponent_imag", "multiplier_real", "multiplier_imag", "method"};
 }
 
 std::vector<std::vector<double>> stability_rows(int point, const RecordedPoint& p) {
@@ -116,7 +135,7 @@ std::vector<std::vector<double>> stability_rows(int point, const RecordedPoint& 
   for (size_t k = 0; k < order.size(); ++k) {
     const std::complex<double> exponent = p.floquet_exponents(order[k]), multiplier = p.floquet_multipliers(order[k]);
     rows.push_back({static_cast<double>(point), p.omega, static_cast<double>(k), exponent.real(), exponent.imag(),
-                    multiplier.real(), multiplier.imag(), p.stability_method == "monodromy" ? 1.0 : 0.0});
+                    multiplier.real(), multiplier.imag(), stability_method_code(p.stability_method)});
   }
   return rows;
 }
@@ -168,10 +187,10 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   // What decided the stability of the rows and of the PD/NS points (Hill, or the monodromy
   // matrix where Hill is unreliable: see stability.cross_check).
   if (c.nfrc.stability.enabled()) {
-    json decided = {{"hill", 0}, {"monodromy", 0}, {"shooting", 0}};
+    json decided = method_counts();
     for (const RecordedPoint& p : r.recorded)
       if (!p.stability_method.empty()) decided[p.stability_method] = decided[p.stability_method].get<int>() + 1;
-    json special_decided = {{"hill", 0}, {"monodromy", 0}, {"shooting", 0}};
+    json special_decided = method_counts();
     for (const auto& sp : r.continuation.special_points)
       if (!sp.decided_by.empty()) special_decided[sp.decided_by] = special_decided[sp.decided_by].get<int>() + 1;
     summary["stability_methods"] = {{"points", decided}, {"special_points", special_decided}};

@@ -29,8 +29,8 @@ void add_outputs(nlohmann::json& j, const CaseDefinition& c, const RecordedPoint
 std::vector<std::string> branch_header(const CaseDefinition& c);
 std::vector<double> branch_row(const RecordedPoint& p);
 // stability.csv: one row per Floquet exponent of each point (point = row of branch.csv), the
-// exponents in decreasing real part, so k = 0 is the one that decides `stable`; `monodromy` 1
-// where the monodromy matrix decided the point (stability.method or its cross-check), 0 Hill.
+// exponents in decreasing real part, so k = 0 is the one that decides `stable`; `method` the
+// code of what decided the point: 0 Hill, 1 monodromy, 2 shooting (docs/outputs.md).
 std::vector<std::string> stability_header();
 std::vector<std::vector<double>> stability_rows(int point, const RecordedPoint& p);
 // states.csv: omega, x0, x1, ...
