@@ -50,8 +50,12 @@ TEST(TrackCli, FollowsTheFirstLimitPointInAmplitudeToItsCusp) {
   EXPECT_EQ(s["special_points"][0]["type"], "min");
   EXPECT_TRUE(s["special_points"][0]["located"].get<bool>());
   EXPECT_NEAR(s["start"]["omega"].get<double>(), 1.2696, 1e-3);
-  const std::vector<std::string> expected{"leg", "omega", "amplitude", "max_x", "min_x", "h1_x"};
-  EXPECT_EQ(csv_header(out / "branch.csv"), expected);
+  // The historical columns first, then h0_x, h2_x .. h7_x and phase1_x .. phase7_x (H = 7).
+  const std::vector<std::string> expected{"leg", "omega", "amplitude", "max_x", "min_x", "h1_x", "h0_x"};
+  const std::vector<std::string> header = csv_header(out / "branch.csv");
+  ASSERT_EQ(header.size(), 6u + 7u + 7u);
+  EXPECT_EQ(std::vector<std::string>(header.begin(), header.begin() + 7), expected);
+  EXPECT_EQ(header.back(), "phase7_x");
   EXPECT_EQ(csv_header(out / "states.csv").size(), 3u + 15u);  // leg, omega, amplitude, 2H+1 harmonics
 
   // The isolas at amplitude 1.5: the curve crosses it twice, at the two LPs of the main branch

@@ -47,10 +47,24 @@ int run_frc(const FrcOptions& options) {
   // A resumed run appends to its CSVs; a folder that does not fit its checkpoint is bad input.
   CsvAppender branch = open_result_csv(dir + "/branch.csv", branch_header(c), resumed.has_value(), rows_kept);
   CsvAppender states = open_result_csv(dir + "/states.csv", state_header(hbm.unknowns()), resumed.has_value(), rows_kept);
+  // stability.csv: several rows per point (its Floquet exponents), so resumed by point index.
+  std::optional<CsvAppender> stability;
+  if (c.nfrc.stability.enabled()) {
+    if (!resumed) {
+      stability.emplace(dir + "/stability.csv", stability_header());
+    } else {
+      try {
+        stability.emplace(CsvAppender::continuing_points(dir + "/stability.csv", stability_header(), rows_kept));
+      } catch (const std::runtime_error& e) {
+        throw CaseError(std::string("--resume: ") + e.what());
+      }
+    }
+  }
+  int point = rows_kept;
   if (resumed) summary["resumed_at_point"] = rows_kept;
   write_json_atomically(dir + "/summary.json", summary);
 
-  Progress progress(o.quiet);
+  Progress progress(o.quiet, c.nfrc.omega_start, c.nfrc.omega_end);
   StopRequest stop(options.time_limit);
   ContinuationRestart restart;
   if (resumed) restart.resume_from = &resumed->state;
@@ -61,6 +75,9 @@ int run_frc(const FrcOptions& options) {
       [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
         branch.append(branch_row(rec));
         states.append(state_row(p.lambda, p.u));
+        if (stability)
+          for (const auto& row : stability_rows(point, rec)) stability->append(row);
+        ++point;
         progress.update(index, p.lambda, rec, c.outputs);
         return !stop.requested();
       },
