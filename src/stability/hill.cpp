@@ -180,15 +180,20 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   }
   r.exponents.conservativeResize(kept);
   finish_floquet(r, omega, 1e-9 * omega);
-  // An exponent whose conjugate is a member of its own family (Im l = k w / 2) stands for a real
-  // multiplier (+ at k even, - at k odd: a period doubling's); the truncation leaves it a few
-  // 1e-3 w off (0.006 rad in the multiplier's argument on NLvib's two-dof example), so its
-  // multiplier is put back on the real axis, where the PD/LP test functions see it. The
-  // exponents stay the eigenvalues Hill's matrix has.
+  // An exponent whose conjugate is a member of its own family (Im l = k w / 2, the conjugate
+  // skipped above, not kept as a family of its own) stands for a real multiplier (+ at k even,
+  // - at k odd: a period doubling's); the truncation leaves it a few 1e-3 w off (0.006 rad in
+  // the multiplier's argument on NLvib's two-dof example), so its multiplier is put back on the
+  // real axis, where the PD/LP test functions see it. The exponents stay the eigenvalues Hill's
+  // matrix has.
   for (Eigen::Index i = 0; i < r.multipliers.size(); ++i) {
-    const double half_periods = 2.0 * r.exponents(i).imag() / omega;
-    if (std::abs(half_periods - std::round(half_periods)) <= 0.02)
-      r.multipliers(i) = std::abs(r.multipliers(i)) * (std::lround(half_periods) % 2 == 0 ? 1.0 : -1.0);
+    const std::complex<double> l = r.exponents(i);
+    const double half_periods = 2.0 * l.imag() / omega;
+    if (l.imag() == 0.0 || std::abs(half_periods - std::round(half_periods)) > 0.02) continue;
+    bool conjugate_kept = false;
+    for (Eigen::Index j = 0; j < r.exponents.size(); ++j)
+      conjugate_kept |= j != i && std::abs(r.exponents(j) - std::conj(l)) <= 0.05 * omega;
+    if (!conjugate_kept) r.multipliers(i) = std::abs(r.multipliers(i)) * (std::lround(half_periods) % 2 == 0 ? 1.0 : -1.0);
   }
   return r;
 }
