@@ -128,3 +128,47 @@ TEST(Cli, FailedContinuationKeepsItsPointsAndExitsNonZero) {
   EXPECT_EQ(hbtrack::test::count_lines(out / "branch.csv"), 1 + m["points"].get<int>());
   EXPECT_EQ(hbtrack::test::count_lines(out / "states.csv"), 1 + m["points"].get<int>());
 }
+
+// `frc --from DIR`: an NFRC stopped at omega = 1 extended to the case's omega_end from its last
+// point finds the limit points of the run over the whole range. Both are located on the zero of
+// their test function with the Newton tolerance 1e-9 of the residual, so they agree to well below
+// 1e-8 although the two runs step differently (measured: 1.3e-11).
+TEST(Cli, FrcFromAPointOfAnotherResultExtendsItsRange) {
+  const fs::path out = fs::temp_directory_path() / ("hbtrack_cli_frc_from_" + std::to_string(getpid()));
+  fs::remove_all(out);
+  const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
+  ASSERT_EQ(run_cli("frc " + duffing + " -o " + (out / "full").string() + " -q").exit_code, 0);
+  ASSERT_EQ(run_cli("frc " + duffing + " --set continuation.omega_end=1.0 -o " + (out / "first").string() + " -q").exit_code, 0);
+  const CliRun extended = run_cli("frc " + duffing + " --from " + (out / "first").string() + " -o " + (out / "rest").string() + " -q");
+  ASSERT_EQ(extended.exit_code, 0) << extended.err;
+  const auto summary = [&](const char* name) { return nlohmann::json::parse(std::ifstream(out / name / "summary.json")); };
+  const nlohmann::json full = summary("full"), first = summary("first"), rest = summary("rest");
+  EXPECT_EQ(first["special_points"].size(), 0u);
+  EXPECT_EQ(rest["stop_reason"], "reached_end");
+  EXPECT_EQ(rest["started_from"]["point"].get<int>(), first["points"].get<int>() - 1);
+  EXPECT_DOUBLE_EQ(rest["started_from"]["omega"].get<double>(), 1.0);
+  ASSERT_EQ(rest["special_points"].size(), full["special_points"].size());
+  for (size_t i = 0; i < full["special_points"].size(); ++i) {
+    EXPECT_EQ(rest["special_points"][i]["type"], full["special_points"][i]["type"]);
+    EXPECT_NEAR(rest["special_points"][i]["omega"].get<double>(), full["special_points"][i]["omega"].get<double>(), 1e-8);
+  }
+  // Its first row is the point it started from.
+  const auto rows = hbtrack::test::csv_records(out / "rest" / "branch.csv");
+  ASSERT_FALSE(rows.empty());
+  EXPECT_DOUBLE_EQ(rows.front().at("omega"), 1.0);
+
+  // A chosen row, and the errors that name the flag and the rule.
+  ASSERT_EQ(run_cli("frc " + duffing + " --from " + (out / "full").string() + " --point 3 --set continuation.omega_end=0.6 -o " +
+                    (out / "back").string() + " -q")
+                .exit_code,
+            0);
+  EXPECT_EQ(summary("back")["stop_reason"], "reached_end");
+  const CliRun beyond = run_cli("frc " + duffing + " --from " + (out / "first").string() + " --point 999 -o " + (out / "x").string());
+  EXPECT_EQ(beyond.exit_code, 2);
+  EXPECT_NE(beyond.err.find("--point: 999 is beyond the last point"), std::string::npos) << beyond.err;
+  const CliRun at_end = run_cli("frc " + duffing + " --from " + (out / "full").string() + " -o " + (out / "x").string());
+  EXPECT_EQ(at_end.exit_code, 2);
+  EXPECT_NE(at_end.err.find("--set continuation.omega_end=VALUE"), std::string::npos) << at_end.err;
+  EXPECT_EQ(run_cli("frc " + duffing + " --point 3 -o " + (out / "x").string()).exit_code, 2);
+  fs::remove_all(out);
+}

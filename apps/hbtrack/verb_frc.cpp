@@ -25,8 +25,32 @@ using nlohmann::json;
 struct FrcOptions {
   CommonOptions common;
   std::string resume;     // a stopped frc result folder to continue
+  std::string from;       // a result folder whose point starts the NFRC
+  std::string point;      // its row in states.csv (0-based; default: the last)
   double time_limit = 0;  // seconds, 0 for none
 };
+
+// The case as the NFRC from a point of another result sees it: that result's parameters and
+// harmonic balance (--set still wins), and the frequency range from the point's omega to the
+// case's omega_end. Fills `start` with the point.
+CaseDefinition case_from_point(const FrcOptions& options, HbmState& start, long& row) {
+  const CommonOptions& o = options.common;
+  const CaseDefinition plain = load_case(o.case_path, o.sets);
+  std::vector<std::string> overrides = hbm_overrides(options.from, plain);
+  overrides.insert(overrides.end(), o.sets.begin(), o.sets.end());
+  CaseDefinition c = load_case(o.case_path, overrides);
+  const std::string states = options.from + "/states.csv";
+  const long rows = static_cast<long>(read_csv_table(states).rows.size());
+  row = options.point.empty() ? rows - 1 : parse_integer("--point", options.point, 0);
+  start = read_hbm_state(states, row);
+  if (!(start.omega > 0) || !std::isfinite(start.omega))
+    throw CaseError(states + ": point " + std::to_string(row) + ": omega must be > 0 and finite");
+  if (start.omega == c.nfrc.omega_end)
+    throw CaseError("--from: point " + std::to_string(row) + " of " + states + " is at omega_end = " + std::to_string(start.omega) +
+                    ": give the new end with --set continuation.omega_end=VALUE");
+  c.nfrc.omega_start = start.omega;
+  return c;
+}
 
 int run_frc(const FrcOptions& options) {
   const CommonOptions& o = options.common;
@@ -34,10 +58,17 @@ int run_frc(const FrcOptions& options) {
   if (o.out_dir.empty() && options.resume.empty()) throw CaseError("--output is required (or --resume DIR)");
   if (!o.out_dir.empty() && !options.resume.empty() && o.out_dir != options.resume)
     throw CaseError("--resume: continues in its own folder, give no other -o");
+  if (options.from.empty() && !options.point.empty()) throw CaseError("--point: needs --from");
   const std::string dir = options.resume.empty() ? o.out_dir : options.resume;
-  const CaseDefinition c = load_case(o.case_path, o.sets);
+  HbmState start;
+  long start_row = -1;
+  const CaseDefinition c = options.from.empty() ? load_case(o.case_path, o.sets) : case_from_point(options, start, start_row);
   HarmonicBalance hbm = make_system(c);
+  if (!options.from.empty() && start.x.size() != hbm.unknowns())
+    throw CaseError(options.from + "/states.csv: holds " + std::to_string(start.x.size()) + " unknowns, the case's harmonic balance has " +
+                    std::to_string(hbm.unknowns()) + " (results of another case?)");
   json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  if (!options.from.empty()) summary["started_from"] = {{"folder", options.from}, {"point", start_row}, {"omega", start.omega}};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedContinuation> resumed;
   if (!options.resume.empty()) resumed = checkpoint_to_resume(dir, {"reached_end", "left_range", "closed"}, settings, read_continuation_state);
@@ -70,18 +101,23 @@ int run_frc(const FrcOptions& options) {
   if (resumed) restart.resume_from = &resumed->state;
   // After every accepted point (and step-size update): what --resume needs to go on from there.
   restart.on_state = [&](const ContinuationState& state) { write_continuation_state(dir + "/checkpoint.json", state, settings); };
-  const NfrcResult r = compute_nfrc(
-      hbm, c.nfrc, c.outputs,
-      [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
-        branch.append(branch_row(rec));
-        states.append(state_row(p.lambda, p.u));
-        if (stability)
-          for (const auto& row : stability_rows(point, rec)) stability->append(row);
-        ++point;
-        progress.update(index, p.lambda, rec, c.outputs);
-        return !stop.requested();
-      },
-      restart);
+  const RecordedObserver record = [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
+    branch.append(branch_row(rec));
+    states.append(state_row(p.lambda, p.u));
+    if (stability)
+      for (const auto& row : stability_rows(point, rec)) stability->append(row);
+    ++point;
+    progress.update(index, p.lambda, rec, c.outputs);
+    return !stop.requested();
+  };
+  NfrcResult r;
+  if (options.from.empty()) {
+    r = compute_nfrc(hbm, c.nfrc, c.outputs, record, restart);
+  } else {
+    const double end = c.nfrc.omega_end;
+    const ParameterWindow window{std::min(start.omega, end), std::max(start.omega, end), end > start.omega ? 1 : -1, false};
+    r = compute_branch(hbm, c.nfrc, c.outputs, start.x, start.omega, window, record, restart);
+  }
   const auto& s = r.continuation.summary;
   const std::string stop_reason = stop.reason(s.stop_reason);
   add_nfrc_summary(summary, c, hbm, r);
@@ -165,6 +201,10 @@ void add_frc_verbs(CLI::App& app, VerbList& verbs) {
   add_common_options(frc, frc_options.common);
   frc->get_option("--output")->required(false);  // --resume DIR names the folder instead
   frc->add_option("--resume", frc_options.resume, "continue the stopped frc run in this folder (same case and --set)");
+  frc->add_option("--from", frc_options.from,
+                  "start from a point of this frc/solve/continue result (its parameters and harmonic balance), towards omega_end")
+      ->type_name("DIR");
+  frc->add_option("--point", frc_options.point, "row of DIR/states.csv to start from (0-based; default the last)")->type_name("INT");
   add_time_limit_option(frc, frc_options.time_limit);
   verbs.push_back({frc, [] { return run_frc(frc_options); }});
   CLI::App* solve = app.add_subcommand("solve", "one periodic solution at a fixed frequency");
