@@ -238,4 +238,43 @@ TEST(TrackCli, TracksALimitPointOfTheC0LawThroughItsSampleMean) {
   fs::remove_all(base);
 }
 
+TEST(TrackCli, ATinyClosedCurveClosesOnceAndACappedLegIsNotCompleted) {
+  // The two-dof example with a smooth law narrower than one time sample (sqrt, width 0.01, about
+  // 2e-3 in displacement against 2e-2 between samples): its tracked fold is a loop in
+  // (omega, amplitude) only about three continuation steps across. It used to go round it until
+  // both legs hit max_points (584 extrema, stop_reason "completed"); it closes after one turn,
+  // with one min and one max of the amplitude.
+  const fs::path base = fs::temp_directory_path() / ("hbtrack_track_loop_" + std::to_string(getpid()));
+  fs::remove_all(base);
+  fs::create_directories(base);
+  std::ifstream in(hbtrack::test::source_path("examples/two_dof_contact.toml"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string toml = text.str();
+  const std::string spring = "type = \"unilateral_spring\"";
+  ASSERT_NE(toml.find(spring), std::string::npos);
+  toml.replace(toml.find(spring), spring.size(), "type = \"regularized_contact\"\nlaw = \"sqrt\"\nwidth = 0.01");
+  const std::string case_file = (base / "narrow_law.toml").string();
+  std::ofstream(case_file) << toml;
+  const std::string nfrc = " --set 'stability.method=\"none\"'";
+  ASSERT_EQ(run_cli("frc " + case_file + nfrc + " -q -o " + (base / "frc").string()).exit_code, 0);
+  const std::string track = "track " + case_file + " --from " + (base / "frc").string() + " --lp 1 --param amplitude --range 0.2:3 -q -o ";
+  const CliRun r = run_cli(track + (base / "track").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json loop = read_json((base / "track" / "summary.json").string());
+  EXPECT_EQ(loop["stop_reason"], "closed");
+  EXPECT_LT(loop["points"].get<int>(), 100);
+  ASSERT_EQ(loop["special_points"].size(), 2u);
+  EXPECT_NE(loop["special_points"][0]["type"], loop["special_points"][1]["type"]);
+
+  // A leg cut by max_points: the curve is incomplete, and says so.
+  const CliRun capped = run_cli(track + (base / "capped").string() + " --set continuation.max_points=5");
+  ASSERT_EQ(capped.exit_code, 0) << capped.err;
+  const nlohmann::json cut = read_json((base / "capped" / "summary.json").string());
+  EXPECT_EQ(cut["stop_reason"], "max_points");
+  ASSERT_GE(cut["warnings"].size(), 1u);
+  EXPECT_NE(cut["warnings"][0].get<std::string>().find("the curve is incomplete"), std::string::npos);
+  fs::remove_all(base);
+}
+
 }  // namespace

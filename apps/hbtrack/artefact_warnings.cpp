@@ -1,6 +1,7 @@
 #include "artefact_warnings.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -43,6 +44,35 @@ std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>&
   }
   flush();
   return warnings;
+}
+
+std::vector<std::string> extremum_pairs_below_resolution(const std::vector<FoldExtremum>& extrema, const std::string& parameter,
+                                                         double parameter_range, double omega_span) {
+  std::vector<const FoldExtremum*> along;
+  for (const FoldExtremum& e : extrema) along.push_back(&e);
+  std::sort(along.begin(), along.end(), [](const FoldExtremum* a, const FoldExtremum* b) { return a->index < b->index; });
+  int pairs = 0;
+  std::string listed;
+  for (size_t i = 1; i < along.size(); ++i) {
+    const FoldExtremum& a = *along[i - 1];
+    const FoldExtremum& b = *along[i];
+    if (a.type == b.type || std::abs(a.parameter - b.parameter) > kClusterSpacing * parameter_range ||
+        std::abs(a.omega - b.omega) > kClusterSpacing * omega_span)
+      continue;
+    if (pairs < 4) {
+      char at[96];
+      std::snprintf(at, sizeof at, "%s%s = %.6g at omega = %.6g", pairs ? "; " : "", parameter.c_str(), a.parameter, a.omega);
+      listed += at;
+    }
+    ++pairs;
+    ++i;  // a pair uses both
+  }
+  if (pairs == 0) return {};
+  return {std::to_string(pairs) + " min/max pair" + (pairs > 1 ? "s" : "") + " of " + parameter + " on the tracking curve (" + listed +
+          (pairs > 4 ? "; ..." : "") +
+          ") closer together than the sampled law resolves: most likely a wiggle of the time sampling, not a birth and a merge of "
+          "branches. Raise harmonic_balance.samples, or use a regularised law whose width spans several samples, and check that they "
+          "move or vanish"};
 }
 
 std::string first_nonsmooth_element(const CaseDefinition& c) {

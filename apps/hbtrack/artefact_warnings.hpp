@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/continuation/continuation.hpp"
 #include "hbtrack/io/case_file.hpp"
 
@@ -15,6 +16,12 @@ namespace hbtrack::cli {
 // omega_range: |omega_end - omega_start| of the NFRC; a cluster is at least kClusterSize special
 // points with consecutive spacings below kClusterSpacing of the range.
 std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>& points, double omega_range);
+
+// Extremum pairs of a tracking curve (a min next to a max) closer in the parameter than
+// kClusterSpacing of its range and in omega than that fraction of the curve's omega span: a
+// wiggle the sampled law puts into the curve, not a birth and a merge of branches.
+std::vector<std::string> extremum_pairs_below_resolution(const std::vector<FoldExtremum>& extrema, const std::string& parameter,
+                                                         double parameter_range, double omega_span);
 
 // PD/NS points that Hill's method alone decided on a law that is not smooth (the model too large
 // for the automatic shooting cross-check): Hill's exponent families converge slowly there, and on

@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "artefact_warnings.hpp"
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/analysis/fold_tracking.hpp"
@@ -168,6 +169,19 @@ int run_track(TrackOptions o) {
     throw RunFailed{e.what()};
   }
   add_tracking_summary(summary, c, r, o.param);
+  double omega_low = start.omega, omega_high = start.omega;
+  for (const FoldCurvePoint& p : r.points) {
+    omega_low = std::min(omega_low, p.omega);
+    omega_high = std::max(omega_high, p.omega);
+  }
+  std::vector<std::string> warnings =
+      extremum_pairs_below_resolution(r.extrema, o.param, tracking.parameter_max - tracking.parameter_min, omega_high - omega_low);
+  for (const ContinuationSummary& leg : r.legs)
+    if (leg.stop_reason == "max_points")
+      warnings.push_back("a leg stopped at continuation.max_points after " + std::to_string(leg.points) +
+                         " points, before the range's end: the curve is incomplete (rerun with a larger --set continuation.max_points)");
+  summary["warnings"] = warnings;
+  for (const std::string& w : warnings) std::fprintf(stderr, "track: warning: %s\n", w.c_str());
   const bool ok = r.success();
   const std::string failure = stop.reason(r.failure());
   if (!ok) summary["stop_reason"] = failure;

@@ -576,8 +576,10 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
       return finish(reason);
     }
     // Back at the first point (an isolated branch, a closed tracking curve): the step's chord
-    // passes within a quarter step of it after the branch went well away from it. A closed
-    // curve ends on a copy of its first point.
+    // passes within a quarter step of it after the branch went more than two steps away from
+    // it (a loop only three steps across, as the tracked fold of a law narrower than a sample
+    // draws, went round 290 times under the former four). A closed curve ends on a copy of its
+    // first point.
     if (window.stop_when_closed) {
       const VectorXd first_x = s.pack(first_point.u, first_point.lambda);
       const VectorXd chord = y - x_prev_prev;
@@ -591,7 +593,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
                                       first_point.lambda + first_point.tangent(m) * first_parameter_scale) -
                                first_x;
       const bool same_orientation = first_t.dot(t) > 0;
-      if (farthest > 4 * length && along >= 0 && along <= length && off <= 0.25 * length && same_orientation) {
+      if (farthest > 2 * length && along >= 0 && along <= length && off <= 0.25 * length && same_orientation) {
         BranchPoint closing = first_point;
         closing.step = (first_x - x_prev_prev).norm();
         if (!accept(closing)) return finish("interrupted");

@@ -230,7 +230,9 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
     add_outputs(j, c, e.recorded);
     special.push_back(j);
   }
-  summary["stop_reason"] = r.success() ? (r.closed ? "closed" : "completed") : r.failure();
+  // A leg cut at continuation.max_points leaves the curve incomplete: not "completed".
+  const bool capped = std::any_of(r.legs.begin(), r.legs.end(), [](const ContinuationSummary& s) { return s.stop_reason == "max_points"; });
+  summary["stop_reason"] = !r.success() ? r.failure() : r.closed ? "closed" : capped ? "max_points" : "completed";
   summary["closed"] = r.closed;
   summary["legs"] = legs;
   summary["points"] = r.curve_points();
