@@ -32,24 +32,32 @@ struct FrcOptions {
 
 // The case as the NFRC from a point of another result sees it: that result's parameters and
 // harmonic balance (--set still wins), and the frequency range from the point's omega to the
-// case's omega_end. Fills `start` with the point.
+// case's omega_end. Fills `start` with the point and `row` with its row.
 CaseDefinition case_from_point(const FrcOptions& options, HbmState& start, long& row) {
   const CommonOptions& o = options.common;
-  const CaseDefinition plain = load_case(o.case_path, o.sets);
-  std::vector<std::string> overrides = hbm_overrides(options.from, plain);
-  overrides.insert(overrides.end(), o.sets.begin(), o.sets.end());
-  CaseDefinition c = load_case(o.case_path, overrides);
   const std::string states = options.from + "/states.csv";
   const long rows = static_cast<long>(read_csv_table(states).rows.size());
   row = options.point.empty() ? rows - 1 : parse_integer("--point", options.point, 0);
   start = read_hbm_state(states, row);
   if (!(start.omega > 0) || !std::isfinite(start.omega))
     throw CaseError(states + ": point " + std::to_string(row) + ": omega must be > 0 and finite");
-  if (start.omega == c.nfrc.omega_end)
+  char omega[64];
+  std::snprintf(omega, sizeof omega, "continuation.omega_start=%.17g", start.omega);
+  std::vector<std::string> sets = o.sets;
+  sets.emplace_back(omega);  // the NFRC starts at the point
+  std::optional<CaseDefinition> plain;
+  try {
+    plain.emplace(load_case(o.case_path, sets));
+  } catch (const CaseError& e) {
+    // The case's own check of the range, said in terms of --from.
+    if (std::string(e.what()).find("omega_end: must differ from omega_start") == std::string::npos) throw;
     throw CaseError("--from: point " + std::to_string(row) + " of " + states + " is at omega_end = " + std::to_string(start.omega) +
                     ": give the new end with --set continuation.omega_end=VALUE");
-  c.nfrc.omega_start = start.omega;
-  return c;
+  }
+  // The source's parameters and harmonic balance, then --set and the start.
+  std::vector<std::string> overrides = hbm_overrides(options.from, *plain);
+  overrides.insert(overrides.end(), sets.begin(), sets.end());
+  return load_case(o.case_path, overrides);
 }
 
 int run_frc(const FrcOptions& options) {
