@@ -140,17 +140,7 @@ TEST(ElementLibraryCase, ExampleLoadsAndItsJacobianMatchesFiniteDifferences) {
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   VectorXd x = hbm.linear_solution(0.9) * 20.0;
   for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += 0.01 * std::cos(3.0 * static_cast<double>(i));
-  VectorXd r;
-  MatrixXd jacobian;
-  hbm.evaluate(x, 0.9, r, &jacobian, nullptr);
-  const MatrixXd fd = test::fd_jacobian(
-      [&](const VectorXd& y) {
-        VectorXd ry;
-        hbm.evaluate(y, 0.9, ry, nullptr, nullptr);
-        return ry;
-      },
-      x, 1e-6);
-  EXPECT_LT(test::relative_error(jacobian, fd), 1e-6);
+  EXPECT_LT(test::residual_jacobian_error(hbm, x, 0.9, 1e-6), 1e-6);
   // Tracking a coefficient: d r / d k3 against a difference in the parameter.
   const int k3 = c.parameters.find("k3");
   const VectorXd analytic = hbm.parameter_derivative(x, 0.9, k3);
@@ -188,6 +178,14 @@ TEST(ElementLibraryCase, BadInputIsOneClearLine) {
        "elements[0].limit_force: must be >= 0"},
       {"jenkins_missing_stiffness", "[[elements]]\ntype = \"elastic_dry_friction\"\ndofs = [\"a\"]\nlimit_force = 1.0\n",
        "elements[0].stiffness: missing"},
+      {"iwan_chi", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -1.0\nbeta = 0.1\n",
+       "elements[0].chi: must be > -1"},
+      {"iwan_beta", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -0.5\nbeta = -0.1\n",
+       "elements[0].beta: must be >= 0"},
+      {"iwan_limit", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 0.0\nstiffness = 3.0\nchi = -0.5\nbeta = 0.1\n",
+       "elements[0].limit_force: must be > 0"},
+      {"iwan_sliders", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -0.5\nbeta = 0.1\nsliders = 1.5\n",
+       "elements[0].sliders: expected an integer"},
   };
   for (const Bad& bad : cases) {
     const fs::path p = write_case(bad.name, two_dof_case(bad.elements));

@@ -88,6 +88,46 @@ std::vector<Sample> periodic_state(const Law& law, const Eigen::VectorXd& xn, co
 
 }  // namespace
 
+void FrictionalContact::history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double /*dt*/, double /*omega*/,
+                                     const std::vector<double>& props, HistoryStep& out) const {
+  const Law law{props[0], props[1], props[2], props[3]};
+  Slider slider{state(0), -1, 0.0, false};
+  const double xn = x(0, 0), xt = x(0, 1);
+  const Sample s = step(law, xn, xt, 0, slider);
+  out.force = Eigen::Vector2d(law.normal(xn), s.mode == Mode::separated ? 0.0 : s.force);
+  out.state = Eigen::VectorXd::Constant(1, slider.z);
+  out.dforce_dx.setZero(2, 2);
+  out.dforce_dstate.setZero(2, 1);
+  out.dstate_dx.setZero(1, 2);
+  out.dstate_dstate.setZero(1, 1);
+  out.diagonal_state = true;
+  if (s.mode == Mode::separated) {  // the slider follows x_t
+    out.dstate_dx(0, 1) = 1.0;
+    return;
+  }
+  out.dforce_dx(0, 0) = law.kn;
+  if (s.mode == Mode::stick) {
+    out.dforce_dx(1, 1) = law.kt;
+    out.dforce_dstate(1, 0) = -law.kt;
+    out.dstate_dstate(0, 0) = 1.0;
+    return;
+  }
+  // Slip: T = sign mu N(x_n), the slider at x_t - T / k_t.
+  out.dforce_dx(1, 0) = s.direction * law.mu * law.kn;
+  out.dstate_dx(0, 1) = 1.0;
+  out.dstate_dx(0, 0) = -s.direction * law.mu * law.kn / law.kt;
+}
+
+Eigen::MatrixXd FrictionalContact::periodic_history(const Eigen::MatrixXd& x, double /*omega*/, const std::vector<double>& props) const {
+  // The slider sits at x_t - T / k_t in contact and at x_t when separated.
+  ElementResponse r;
+  evaluate(x, x, 0.0, props, r, false);
+  Eigen::MatrixXd z = x.col(1) - r.force.col(1) / props[1];
+  for (Eigen::Index t = 0; t < x.rows(); ++t)
+    if (r.force(t, 0) <= 0.0) z(t, 0) = x(t, 1);
+  return z;
+}
+
 const std::vector<std::string>& FrictionalContact::property_names() const {
   static const std::vector<std::string> names{"normal_stiffness", "tangential_stiffness", "mu", "normal_preload"};
   return names;

@@ -4,6 +4,7 @@
 
 #include "hbtrack/elements/elastic_dry_friction.hpp"
 #include "hbtrack/elements/frictional_contact.hpp"
+#include "hbtrack/elements/iwan.hpp"
 #include "hbtrack/elements/polynomial_elements.hpp"
 #include "hbtrack/elements/scalar_elements.hpp"
 #include "hbtrack/elements/tip_contact.hpp"
@@ -65,7 +66,7 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
   if (!elements) return;
   if (!elements->is_array()) in.fail(elements, "elements", "expected an array of tables ([[elements]])");
   const std::vector<std::string> types{"cubic_spring",         "unilateral_spring", "regularized_contact", "tanh_friction", "tip_contact",
-                                       "polynomial_stiffness", "power_damper",      "elastic_dry_friction", "frictional_contact"};
+                                       "polynomial_stiffness", "power_damper",      "elastic_dry_friction", "frictional_contact", "iwan"};
   for (size_t i = 0; i < elements->as_array().size(); ++i) {
     const std::string field = "elements[" + std::to_string(i) + "]";
     const toml::value& e = in.table(elements->as_array()[i], field);
@@ -105,6 +106,14 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
     } else if (type == "elastic_dry_friction") {
       element = std::make_shared<ElasticDryFriction>();
       specs = {{"stiffness", true, 0}, {"limit_force", true, 0}};
+    } else if (type == "iwan") {
+      const toml::value* count = in.find(e, "sliders");
+      const int sliders = count ? in.integer(*count, field + ".sliders") : Iwan::kDefaultSliders;
+      // Each slider costs a pass over the samples; beyond 1000 the discretisation error (second
+      // order in the grid ratio) is far below any identified joint's.
+      if (sliders < 2 || sliders > 1000) in.fail(count, field + ".sliders", "must be an integer in [2, 1000]");
+      element = std::make_shared<Iwan>(sliders);
+      specs = {{"limit_force", true, 0}, {"stiffness", true, 0}, {"chi", true, 0}, {"beta", true, 0}};
     } else if (type == "frictional_contact") {
       element = std::make_shared<FrictionalContact>();
       specs = {{"normal_stiffness", true, 0}, {"tangential_stiffness", true, 0}, {"mu", true, 0}, {"normal_preload", false, 0.0}};
@@ -119,6 +128,7 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
     const bool scalar = type != "tip_contact" && type != "frictional_contact" && !polynomial;
     if (scalar) allowed.push_back("weights");
     if (polynomial) allowed.insert(allowed.end(), {"exponents", "coefficients"});
+    if (type == "iwan") allowed.push_back("sliders");
     for (const auto& s : specs) allowed.push_back(s.name);
     in.check_keys(e, field, allowed);
 
@@ -163,15 +173,17 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
     for (size_t p = 0; p < specs.size(); ++p) {
       const std::string& name = specs[p].name;
       const bool must_be_positive = name == "stiffness" || name == "normal_stiffness" || name == "tangential_stiffness" || name == "regularization_velocity" ||
-                                    (name == "width" && type != "unilateral_spring") || name == "radius";
+                                    (name == "width" && type != "unilateral_spring") || name == "radius" ||
+                                    (name == "limit_force" && type == "iwan");
       // The sign of engine_order is the sense of rotation (rotor 67 and the parametric blade
       // turn towards -theta of their tip frames); 0 would stop the rotor.
       const bool must_be_nonzero = name == "engine_order";
-      const bool must_be_nonnegative = name == "mu" || name == "normal_load" || name == "clearance" || name == "limit_force";
+      const bool must_be_nonnegative = name == "mu" || name == "normal_load" || name == "clearance" || name == "limit_force" || name == "beta";
       const toml::value* v = in.find(e, name);
       if (must_be_positive && !(values[p] > 0)) in.fail(v ? v : &e, field + "." + name, "must be > 0");
       if (must_be_nonzero && !(values[p] != 0)) in.fail(v ? v : &e, field + "." + name, "must be nonzero (its sign is the sense of rotation)");
       if (must_be_nonnegative && values[p] < 0) in.fail(v ? v : &e, field + "." + name, "must be >= 0");
+      if (name == "chi" && !(values[p] > -1)) in.fail(v ? v : &e, field + "." + name, "must be > -1 (the slider density phi^chi is not integrable at 0 otherwise)");
       if (name == "exponent" && !(values[p] >= 1)) in.fail(v ? v : &e, field + "." + name, "must be >= 1 (the force derivative is unbounded at zero velocity below 1)");
     }
     element->lanczos_exponent = in.number_or(e, "lanczos", field + ".lanczos", 0.0);

@@ -34,6 +34,20 @@ struct ElementResponse {
   Eigen::MatrixXd dforce_dproperty;
 };
 
+// One time step of a history element (time integration, monodromy matrix): its m internal
+// variables (slider positions; all zero at rest, x = 0) before the step and the local
+// displacements at the step's end give the force there and the variables after the step (the
+// return mapping of plasticity). The linearisation holds all its dependencies:
+//   dforce_dx k x k,  dforce_dstate k x m (state before the step),
+//   dstate_dx m x k,  dstate_dstate m x m.
+struct HistoryStep {
+  Eigen::VectorXd force, state;
+  Eigen::MatrixXd dforce_dx, dforce_dstate, dstate_dx, dstate_dstate;
+  // dstate_dstate is diagonal (each variable moves on its own, as parallel sliders do): users
+  // may then skip its off-diagonal entries.
+  bool diagonal_state = false;
+};
+
 class NonlinearElement {
  public:
   virtual ~NonlinearElement() = default;
@@ -45,9 +59,19 @@ class NonlinearElement {
   virtual bool depends_on_velocity() const = 0;
   virtual bool depends_on_omega() const { return false; }
   // True when the force depends on the past (see history_dforce_dx): evaluate() must then get
-  // a whole period of N uniform samples, and pointwise users (time integration, monodromy)
-  // refuse the element.
+  // a whole period of N uniform samples. Time integration and the monodromy matrix step such an
+  // element with the three history_* functions below instead.
   virtual bool history_dependent() const { return false; }
+  // Time-stepping form of a history element (zero internal variables for the others).
+  virtual int history_state_size() const { return 0; }
+  // The return mapping over one step of duration dt (dt matters only to a law that moves
+  // on its own, such as a rotating casing): x is 1 x k, state has history_state_size() entries.
+  virtual void history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
+                            const std::vector<double>& property_values, HistoryStep& out) const;
+  // The internal variables after each of the N samples (N x m) of the periodic steady state that
+  // evaluate() finds for the same samples: history_step from row t-1 to sample t gives row t.
+  virtual Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega,
+                                           const std::vector<double>& property_values) const;
   // Why the force is not twice continuously differentiable ("" when it is): limit-point tracking
   // differentiates the Jacobian and cannot follow a fold through such a law.
   virtual std::string smoothness_limit() const { return ""; }
