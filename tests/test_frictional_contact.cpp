@@ -103,7 +103,7 @@ TEST(FrictionalContact, DerivativesMatchFiniteDifferences) {
       const MatrixXd x = motion(n, an, at);
       ElementResponse r;
       e->evaluate(x, x, 1.0, kProps, r, true);
-      const MatrixXd dense = MatrixXd(r.history_dforce_dx);
+      const MatrixXd dense = history_sensitivity_matrix(r, n, 2);
       const double h = 1e-7;
       for (int j = 0; j < 2; ++j)
         for (int s = 0; s < n; ++s) {

@@ -13,6 +13,7 @@
 #include "hbtrack/elements/elastic_dry_friction.hpp"
 #include "hbtrack/elements/frictional_contact.hpp"
 #include "hbtrack/elements/iwan.hpp"
+#include "hbtrack/elements/tip_contact.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/stability/hill.hpp"
 #include "hbtrack/stability/monodromy.hpp"
@@ -38,14 +39,17 @@ std::shared_ptr<Element> with_properties(std::shared_ptr<Element> e, std::vector
 }
 
 // Three dofs: a Jenkins element on x1, an Iwan joint between x2 and x1, a frictional contact
-// [normal x3, tangential x2].
+// [normal x3, tangential x2], a stick-slip tip contact [radial x3, theta x2, z x1] on a turning
+// casing.
 ElementList history_elements() {
   auto jenkins = std::make_shared<ElasticDryFriction>();
   jenkins->weights = VectorXd::Ones(1);
   auto iwan = std::make_shared<Iwan>(8);
   iwan->weights = (VectorXd(2) << 1.0, -1.0).finished();
   return {with_properties(jenkins, {0}, {20.0, 1.0}), with_properties(iwan, {1, 0}, {1.0, 30.0, -0.4, 0.5}),
-          with_properties(std::make_shared<FrictionalContact>(), {2, 1}, {5.0, 20.0, 0.4, 1.0})};
+          with_properties(std::make_shared<FrictionalContact>(), {2, 1}, {5.0, 20.0, 0.4, 1.0}),
+          with_properties(std::make_shared<TipContact>(ContactLawKind::polynomial, TipFriction::stick_slip), {2, 1, 0},
+                          {5.0, 0.05, 0.2, 0.3, 0.2, 1.0, 0.0, 15.0})};
 }
 
 }  // namespace
@@ -55,7 +59,7 @@ TEST(HistoryTimeStepping, TangentsWithCommittedStatesMatchFiniteDifferences) {
   // are exact up to round-off / h (~1e-9 relative) away from a stick/slip boundary, which these
   // states keep further than h from.
   EquationOfMotion eom(test::chain_between_walls(3, 1), history_elements(), ParameterSet(), 1.0);
-  ASSERT_EQ(eom.history_size(), 1 + 9 + 1);
+  ASSERT_EQ(eom.history_size(), 1 + 9 + 1 + 2);
   const VectorXd v = VectorXd::Zero(3);
   struct Case {
     const char* name;
@@ -83,7 +87,8 @@ TEST(HistoryTimeStepping, TangentsWithCommittedStatesMatchFiniteDifferences) {
 
 TEST(HistoryTimeStepping, SteppingFromThePeriodicHistoryReproducesThePeriodicForces) {
   // history_step from the variables after sample t-1 to sample t is the return mapping the
-  // periodic pass makes: forces and variables agree to round-off, in stick, slip and separation.
+  // periodic pass makes (over the sample interval, which the turning casing needs): forces and
+  // variables agree to round-off, in stick, slip and separation.
   const ElementList elements = history_elements();
   const int n = 128;
   MatrixXd x(n, 3);
@@ -103,7 +108,7 @@ TEST(HistoryTimeStepping, SteppingFromThePeriodicHistoryReproducesThePeriodicFor
     ASSERT_EQ(history.cols(), e->history_state_size()) << e->type();
     HistoryStep step;
     for (int t = 0; t < n; ++t) {
-      e->history_step(local.row(t), history.row((t + n - 1) % n).transpose(), 0.0, 1.0, props, step);
+      e->history_step(local.row(t), history.row((t + n - 1) % n).transpose(), 2 * kPi / n, 1.0, props, step);
       EXPECT_LT((step.force.transpose() - r.force.row(t)).cwiseAbs().maxCoeff(), 1e-12) << e->type() << " sample " << t;
       EXPECT_LT((step.state - history.row(t).transpose()).cwiseAbs().maxCoeff(), 1e-12) << e->type() << " sample " << t;
     }

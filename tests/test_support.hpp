@@ -87,16 +87,16 @@ inline double residual_jacobian_error(HarmonicBalance& hbm, const Eigen::VectorX
   return relative_error(jacobian, fd_jacobian(residual, x, h));
 }
 
-// Central differences (N x k) of an element's forces at the samples x (velocities v) with
-// respect to its property p, with step h.
+// Central differences (N x k) of an element's forces at the samples x (velocities v, frequency
+// omega) with respect to its property p, with step h.
 inline Eigen::MatrixXd property_difference(const NonlinearElement& e, const Eigen::MatrixXd& x, const Eigen::MatrixXd& v,
-                                           const std::vector<double>& props, size_t p, double h) {
+                                           const std::vector<double>& props, size_t p, double h, double omega = 1.0) {
   std::vector<double> plus = props, minus = props;
   plus[p] += h;
   minus[p] -= h;
   ElementResponse rp, rm;
-  e.evaluate(x, v, 1.0, plus, rp, false);
-  e.evaluate(x, v, 1.0, minus, rm, false);
+  e.evaluate(x, v, omega, plus, rp, false);
+  e.evaluate(x, v, omega, minus, rm, false);
   return (rp.force - rm.force) / (2 * h);
 }
 

@@ -15,6 +15,12 @@ void NonlinearElement::history_step(const Eigen::MatrixXd&, const Eigen::VectorX
   throw std::logic_error("element " + type() + " has no time-stepping form");
 }
 
+Eigen::MatrixXd history_sensitivity_matrix(const ElementResponse& response, Eigen::Index samples, int dofs) {
+  const Eigen::Index size = samples * dofs;
+  if (response.history_operator) return response.history_operator->apply(Eigen::MatrixXd::Identity(size, size));
+  return Eigen::MatrixXd(response.history_dforce_dx);
+}
+
 Eigen::MatrixXd NonlinearElement::periodic_history(const Eigen::MatrixXd& x, double, const std::vector<double>&) const {
   return Eigen::MatrixXd(x.rows(), 0);
 }

@@ -167,6 +167,23 @@ void HarmonicBalance::add_element_blocks(ElementSlot& s, double omega, int strid
     for (int cc = 0; cc < nc; ++cc)
       for (int rr = 0; rr < nc; ++rr) target(rr * stride + row_dof, cc * stride + col_dof) += s.sigma(rr) * block(rr, cc);
   };
+  if (resp.history_operator) {
+    // A history element whose sensitivities are an operator: S applied to the synthesis of
+    // each dof's harmonics, then analysed. No velocity part.
+    if (!jacobian) return;
+    const int n = basis_.samples();
+    for (int jd = 0; jd < k; ++jd) {
+      Eigen::MatrixXd perturbation = MatrixXd::Zero(static_cast<Eigen::Index>(n) * k, nc);
+      perturbation.middleRows(static_cast<Eigen::Index>(jd) * n, n) = basis_.synthesis();
+      const MatrixXd response = resp.history_operator->apply(perturbation);
+      for (int i = 0; i < k; ++i) {
+        block_.noalias() = basis_.analysis() * response.middleRows(static_cast<Eigen::Index>(i) * n, n);
+        if (block_.isZero(0.0)) continue;
+        scatter(*jacobian, block_, positions[static_cast<size_t>(i)], positions[static_cast<size_t>(jd)]);
+      }
+    }
+    return;
+  }
   if (resp.history_dforce_dx.size() > 0) {
     // A history element: block (i, j) = Gamma^-1 S_ij Gamma with S_ij the sparse N x N
     // sensitivities d f_i(t) / d x_j(s). No velocity part.
@@ -380,10 +397,11 @@ double HarmonicBalance::nonlinear_adjoint_products(const VectorXd& x, double ome
     omega_derivative_samples(s, omega_samples_);
     w_dot_omega_derivative += (adjoint_local_.array() * omega_samples_.array()).sum();
     const bool with_v = resp.dforce_dv.size() > 0;
-    if (resp.history_dforce_dx.size() > 0) {
+    if (resp.history_dforce_dx.size() > 0 || resp.history_operator) {
       // History element: the transposed sensitivities map the weights back to earlier samples.
       const Eigen::Map<const VectorXd> local(adjoint_local_.data(), adjoint_local_.size());
-      const VectorXd back = resp.history_dforce_dx.transpose() * local;
+      const VectorXd back = resp.history_operator ? VectorXd(resp.history_operator->apply_transpose(local))
+                                                  : VectorXd(resp.history_dforce_dx.transpose() * local);
       const Eigen::Index n = basis_.samples();
       for (int jd = 0; jd < k; ++jd) adjoint_x_.col(s.columns[static_cast<size_t>(jd)]) += back.segment(jd * n, n);
       continue;

@@ -82,6 +82,14 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
         in.fail(l, field + ".law", err.what());
       }
     }
+    TipFriction friction = TipFriction::sliding;
+    if (const toml::value* f = type == "tip_contact" ? in.find(e, "friction") : nullptr) {
+      try {
+        friction = parse_tip_friction(in.string(*f, field + ".friction"));
+      } catch (const std::invalid_argument& err) {
+        in.fail(f, field + ".friction", err.what());
+      }
+    }
     if (type == "cubic_spring") {
       element = std::make_shared<CubicSpring>();
       specs = {{"cubic_stiffness", true, 0}};
@@ -95,9 +103,10 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
       element = std::make_shared<TanhFriction>();
       specs = {{"mu", true, 0}, {"normal_load", true, 0}, {"regularization_velocity", true, 0}};
     } else if (type == "tip_contact") {
-      element = std::make_shared<TipContact>(law);
+      element = std::make_shared<TipContact>(law, friction);
       specs = {{"stiffness", true, 0}, {"clearance", true, 0}, {"width", true, 0}, {"mu", true, 0},
                {"radius", true, 0},    {"engine_order", false, 1.0}, {"rotation_speed", false, 0.0}};
+      if (friction == TipFriction::stick_slip) specs.push_back({"tangential_stiffness", true, 0});
     } else if (type == "polynomial_stiffness") {
       element = read_polynomial_exponents(in, e, field);
     } else if (type == "power_damper") {
@@ -124,6 +133,7 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
     }
     std::vector<std::string> allowed{"type", "dofs", "lanczos"};
     if (type == "regularized_contact" || type == "tip_contact") allowed.push_back("law");
+    if (type == "tip_contact") allowed.push_back("friction");
     const bool polynomial = type == "polynomial_stiffness";
     const bool scalar = type != "tip_contact" && type != "frictional_contact" && !polynomial;
     if (scalar) allowed.push_back("weights");
@@ -176,8 +186,9 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
                                     (name == "width" && type != "unilateral_spring") || name == "radius" ||
                                     (name == "limit_force" && type == "iwan");
       // The sign of engine_order is the sense of rotation (rotor 67 and the parametric blade
-      // turn towards -theta of their tip frames); 0 would stop the rotor.
-      const bool must_be_nonzero = name == "engine_order";
+      // turn towards -theta of their tip frames); 0 would stop the rotor, and leave permanent
+      // sliding without a direction (stick-slip friction does without).
+      const bool must_be_nonzero = name == "engine_order" && friction == TipFriction::sliding;
       const bool must_be_nonnegative = name == "mu" || name == "normal_load" || name == "clearance" || name == "limit_force" || name == "beta";
       const toml::value* v = in.find(e, name);
       if (must_be_positive && !(values[p] > 0)) in.fail(v ? v : &e, field + "." + name, "must be > 0");

@@ -7,12 +7,12 @@ namespace hbtrack {
 
 // Normal: N(t) = max(0, normal_preload + normal_stiffness x_n(t)) (penalty; a negative preload is
 // an initial gap of -preload / normal_stiffness). Tangential: T = tangential_stiffness (x_t - z)
-// with |T| <= mu N; z follows x_t while separated (T = 0).
-// Periodic steady state: every slip or separation sample erases the memory, so a pass started at
-// such an event is periodic once the event recurs when the pass comes back to it. The element
-// takes the last event of a pass from the midrange state as the next start and repeats until
-// the start event recurs (usually the second pass). A period without any event is a permanent
-// stick, with z at the midrange of x_t as for elastic_dry_friction.
+// with |T| <= mu N; z follows x_t while separated (T = 0): the one-direction case of the slider
+// in src/elements/coulomb_slider.hpp, shared with tip_contact's stick-slip friction.
+// Periodic steady state: every slip or separation sample erases the memory, so the pass after
+// the first event is periodic (the second pass in the tests' motions). A period without any
+// event is a permanent stick, with z at the midrange of x_t as for elastic_dry_friction.
+// Sensitivities: an operator (history_operator), the slider's periodic recurrence.
 // Properties: normal_stiffness, tangential_stiffness, mu, normal_preload.
 class FrictionalContact final : public NonlinearElement {
  public:

@@ -25,10 +25,23 @@ namespace hbtrack {
 //   history_dforce_dx  sparse (N*k) x (N*k), entry (t + N*i, s + N*j) = d f_i(t) / d x_j(s),
 // a compact form of the time-domain sensitivities (a Jenkins slider: two entries per sample,
 // the sample itself and the last slip event) that the AFT turns into Fourier blocks.
+// Where the memory fades instead of ending at events (friction in two directions, whose force
+// keeps the direction of its past), that matrix would fill up: such an element leaves
+// history_dforce_dx empty and sets history_operator, the same map applied to perturbations.
+class HistorySensitivity {
+ public:
+  virtual ~HistorySensitivity() = default;
+  // d f = S dx and S^T w, for batches of columns in the layout of history_dforce_dx
+  // ((N k) x c, row t + N i).
+  virtual Eigen::MatrixXd apply(const Eigen::MatrixXd& dx) const = 0;
+  virtual Eigen::MatrixXd apply_transpose(const Eigen::MatrixXd& w) const = 0;
+};
+
 struct ElementResponse {
   Eigen::MatrixXd force;
   Eigen::MatrixXd dforce_dx;
   Eigen::SparseMatrix<double> history_dforce_dx;
+  std::shared_ptr<const HistorySensitivity> history_operator;
   Eigen::MatrixXd dforce_dv;
   Eigen::MatrixXd dforce_domega;
   Eigen::MatrixXd dforce_dproperty;
@@ -90,5 +103,9 @@ class NonlinearElement {
 };
 
 using ElementList = std::vector<std::shared_ptr<NonlinearElement>>;
+
+// A history element's sensitivities d f_i(t) / d x_j(s) as a dense (N k) x (N k) matrix, from
+// whichever form it returned (for tests and small checks).
+Eigen::MatrixXd history_sensitivity_matrix(const ElementResponse& response, Eigen::Index samples, int dofs);
 
 }  // namespace hbtrack
