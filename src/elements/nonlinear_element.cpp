@@ -15,6 +15,11 @@ void NonlinearElement::history_step(const Eigen::MatrixXd&, const Eigen::VectorX
   throw std::logic_error("element " + type() + " has no time-stepping form");
 }
 
+void NonlinearElement::evaluate_with_residual(const Eigen::MatrixXd&, const Eigen::MatrixXd&, double, const std::vector<double>&,
+                                              ElementResponse&, bool) const {
+  throw std::logic_error("element " + type() + " does not read the linear residual");
+}
+
 Eigen::MatrixXd history_sensitivity_matrix(const ElementResponse& response, Eigen::Index samples, int dofs) {
   const Eigen::Index size = samples * dofs;
   if (response.history_operator) return response.history_operator->apply(Eigen::MatrixXd::Identity(size, size));

@@ -42,6 +42,9 @@ struct ElementResponse {
   Eigen::MatrixXd dforce_dx;
   Eigen::SparseMatrix<double> history_dforce_dx;
   std::shared_ptr<const HistorySensitivity> history_operator;
+  // Elements that read the linear residual (uses_linear_residual()): d f / d r as an operator,
+  // layouts as history_operator's.
+  std::shared_ptr<const HistorySensitivity> residual_operator;
   Eigen::MatrixXd dforce_dv;
   Eigen::MatrixXd dforce_domega;
   Eigen::MatrixXd dforce_dproperty;
@@ -92,6 +95,20 @@ class NonlinearElement {
   virtual void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                         const std::vector<double>& property_values, ElementResponse& out,
                         bool want_property_derivatives) const = 0;
+  // The dynamic Lagrangian frequency/time method (DLFT, Nacivet et al. 2003: frictional_contact
+  // with law = "dlft") computes contact forces from what the rest of the structure asks of the
+  // contact: the linear part of the harmonic-balance residual at the element's dofs,
+  //   r_lin = Zr(omega) x - amplitude Fr(omega)   (rows of the element's dofs, all harmonics),
+  // as well as from the displacements. An element that does returns true here; the harmonic
+  // balance then calls evaluate_with_residual with the samples of r_lin (N x k), the element
+  // fills history_operator (d f / d x) and residual_operator (d f / d r_lin), and the harmonic
+  // balance chains the latter with d r_lin / d(x, omega, amplitude). Its dofs may carry no other
+  // element (r_lin would then not be what the contact balances), and it has no time-domain form
+  // (time integration, stability) and no Lanczos filter.
+  virtual bool uses_linear_residual() const { return false; }
+  virtual void evaluate_with_residual(const Eigen::MatrixXd& x, const Eigen::MatrixXd& r, double omega,
+                                      const std::vector<double>& property_values, ElementResponse& out,
+                                      bool want_property_derivatives) const;
 
   int local_dofs() const { return static_cast<int>(dofs.size()); }
   std::vector<double> property_values(const ParameterSet& parameters) const;
