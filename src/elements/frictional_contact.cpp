@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "coulomb_slider.hpp"
+#include "penalty_contact_period.hpp"
 
 namespace hbtrack {
 
@@ -23,14 +24,27 @@ NormalLoad normal_load(const std::vector<double>& props, double xn) {
 
 }  // namespace
 
+ContactFormulation parse_contact_formulation(const std::string& name) {
+  if (name == "penalty") return ContactFormulation::penalty;
+  if (name == "dlft") return ContactFormulation::dlft;
+  throw std::invalid_argument("must be \"penalty\" or \"dlft\", got \"" + name + "\"");
+}
+
 const std::vector<std::string>& FrictionalContact::property_names() const {
-  static const std::vector<std::string> names{"normal_stiffness", "tangential_stiffness", "mu", "normal_preload"};
-  return names;
+  static const std::vector<std::string> penalty{"normal_stiffness", "tangential_stiffness", "mu", "normal_preload"};
+  static const std::vector<std::string> dlft{"mu", "epsilon", "gap"};
+  return law_ == ContactFormulation::penalty ? penalty : dlft;
 }
 
 void FrictionalContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& /*v*/, double /*omega*/,
                                  const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) const {
   if (local_dofs() != 2 || x.cols() != 2) throw std::invalid_argument("frictional_contact: needs 2 dofs [normal, tangential]");
+  if (law_ == ContactFormulation::dlft) throw std::logic_error("frictional_contact with law = \"dlft\" needs the linear residual");
+  penalty_contact_period(x, props, out, want_property_derivatives);
+}
+
+void penalty_contact_period(const Eigen::MatrixXd& x, const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) {
+  out.residual_operator.reset();
   const Eigen::Index n = x.rows();
   Eigen::VectorXd normal(n), slope(n);
   for (Eigen::Index t = 0; t < n; ++t) {
@@ -70,14 +84,19 @@ void FrictionalContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd
   out.history_operator = std::make_shared<ContactSliderSensitivity>(std::move(slider), std::move(slope));
 }
 
-void FrictionalContact::history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double /*dt*/, double /*omega*/,
+void FrictionalContact::history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
                                      const std::vector<double>& props, HistoryStep& out) const {
+  if (law_ == ContactFormulation::dlft) {
+    NonlinearElement::history_step(x, state, dt, omega, props, out);
+    return;
+  }
   const NormalLoad load = normal_load(props, x(0, 0));
   contact_slider_step(CoulombSlider(1, props[kTangentialStiffness], props[kMu]), load.force, load.slope, x, Eigen::VectorXd::Zero(1), state,
                       out);
 }
 
-Eigen::MatrixXd FrictionalContact::periodic_history(const Eigen::MatrixXd& x, double /*omega*/, const std::vector<double>& props) const {
+Eigen::MatrixXd FrictionalContact::periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& props) const {
+  if (law_ == ContactFormulation::dlft) return NonlinearElement::periodic_history(x, omega, props);
   Eigen::VectorXd normal(x.rows());
   for (Eigen::Index t = 0; t < x.rows(); ++t) normal(t) = normal_load(props, x(t, 0)).force;
   CoulombSlider slider(1, props[kTangentialStiffness], props[kMu]);

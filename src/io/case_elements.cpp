@@ -59,6 +59,36 @@ void read_polynomial_coefficients(const CaseReader& in, const toml::value& e, co
   }
 }
 
+// The keys that choose an element's variant: `law` (a normal contact law, or penalty / dlft
+// for frictional_contact) and tip_contact's `friction`.
+struct ElementVariant {
+  ContactLawKind law = ContactLawKind::polynomial;
+  ContactFormulation formulation = ContactFormulation::penalty;
+  TipFriction friction = TipFriction::sliding;
+};
+
+template <class Parse>
+auto parse_key(const CaseReader& in, const toml::value& v, const std::string& field, Parse parse) {
+  try {
+    return parse(in.string(v, field));
+  } catch (const std::invalid_argument& err) {
+    in.fail(&v, field, err.what());
+  }
+}
+
+ElementVariant read_variant(const CaseReader& in, const toml::value& e, const std::string& type, const std::string& field) {
+  ElementVariant v;
+  if (const toml::value* l = in.find(e, "law")) {
+    if (type == "frictional_contact")
+      v.formulation = parse_key(in, *l, field + ".law", parse_contact_formulation);
+    else if (type == "regularized_contact" || type == "tip_contact")
+      v.law = parse_key(in, *l, field + ".law", parse_contact_law);
+  }
+  if (const toml::value* f = type == "tip_contact" ? in.find(e, "friction") : nullptr)
+    v.friction = parse_key(in, *f, field + ".friction", parse_tip_friction);
+  return v;
+}
+
 }  // namespace
 
 void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
@@ -74,22 +104,9 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
     const std::string type = in.string(type_value, field + ".type");
     std::shared_ptr<NonlinearElement> element;
     std::vector<PropertySpec> specs;
-    ContactLawKind law = ContactLawKind::polynomial;
-    if (const toml::value* l = in.find(e, "law")) {
-      try {
-        law = parse_contact_law(in.string(*l, field + ".law"));
-      } catch (const std::invalid_argument& err) {
-        in.fail(l, field + ".law", err.what());
-      }
-    }
-    TipFriction friction = TipFriction::sliding;
-    if (const toml::value* f = type == "tip_contact" ? in.find(e, "friction") : nullptr) {
-      try {
-        friction = parse_tip_friction(in.string(*f, field + ".friction"));
-      } catch (const std::invalid_argument& err) {
-        in.fail(f, field + ".friction", err.what());
-      }
-    }
+    const ElementVariant variant = read_variant(in, e, type, field);
+    const ContactLawKind law = variant.law;
+    const TipFriction friction = variant.friction;
     if (type == "cubic_spring") {
       element = std::make_shared<CubicSpring>();
       specs = {{"cubic_stiffness", true, 0}};
@@ -124,15 +141,18 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
       element = std::make_shared<Iwan>(sliders);
       specs = {{"limit_force", true, 0}, {"stiffness", true, 0}, {"chi", true, 0}, {"beta", true, 0}};
     } else if (type == "frictional_contact") {
-      element = std::make_shared<FrictionalContact>();
-      specs = {{"normal_stiffness", true, 0}, {"tangential_stiffness", true, 0}, {"mu", true, 0}, {"normal_preload", false, 0.0}};
+      element = std::make_shared<FrictionalContact>(variant.formulation);
+      if (variant.formulation == ContactFormulation::penalty)
+        specs = {{"normal_stiffness", true, 0}, {"tangential_stiffness", true, 0}, {"mu", true, 0}, {"normal_preload", false, 0.0}};
+      else
+        specs = {{"mu", true, 0}, {"epsilon", true, 0}, {"gap", false, 0.0}};
     } else {
       const std::string guess = nearest(type, types);
       in.fail(&type_value, field + ".type", "unknown element type '" + type + "'" +
                                                  (guess.empty() ? " (expected one of: " + join(types) + ")" : " (did you mean '" + guess + "'?)"));
     }
     std::vector<std::string> allowed{"type", "dofs", "lanczos"};
-    if (type == "regularized_contact" || type == "tip_contact") allowed.push_back("law");
+    if (type == "regularized_contact" || type == "tip_contact" || type == "frictional_contact") allowed.push_back("law");
     if (type == "tip_contact") allowed.push_back("friction");
     const bool polynomial = type == "polynomial_stiffness";
     const bool scalar = type != "tip_contact" && type != "frictional_contact" && !polynomial;
@@ -182,7 +202,7 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
     const std::vector<double> values = element->property_values(c.parameters);
     for (size_t p = 0; p < specs.size(); ++p) {
       const std::string& name = specs[p].name;
-      const bool must_be_positive = name == "stiffness" || name == "normal_stiffness" || name == "tangential_stiffness" || name == "regularization_velocity" ||
+      const bool must_be_positive = name == "stiffness" || name == "normal_stiffness" || name == "tangential_stiffness" || name == "regularization_velocity" || name == "epsilon" ||
                                     (name == "width" && type != "unilateral_spring") || name == "radius" ||
                                     (name == "limit_force" && type == "iwan");
       // The sign of engine_order is the sense of rotation (rotor 67 and the parametric blade

@@ -222,6 +222,18 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
   if (co.tolerance >= 1) in.fail(in.find(cont, "tolerance"), "continuation.tolerance", "must be < 1 (it is relative to the forcing)");
 }
 
+// DLFT contact forces are Lagrange multipliers of the harmonic balance: no time-domain law, so no
+// Floquet analysis of them.
+void check_stability_supported(const CaseReader& in, const toml::value& root, const CaseDefinition& c) {
+  if (c.nfrc.stability.method == "none") return;
+  for (size_t i = 0; i < c.elements.size(); ++i) {
+    if (!c.elements[i]->uses_linear_residual()) continue;
+    const toml::value& e = root.at("elements").as_array()[i];
+    in.fail(in.find(e, "law"), "elements[" + std::to_string(i) + "].law",
+            "\"dlft\" has no stability analysis (its forces are Lagrange multipliers of the harmonic balance): set stability.method = \"none\"");
+  }
+}
+
 // A forcing harmonic above the truncation would silently vanish from the balance.
 void check_forcing_within_harmonics(const CaseReader& in, const toml::value& root, const CaseDefinition& c) {
   const toml::value* forcing = in.find(root, "forcing");
@@ -434,6 +446,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   read_parameters(in, root, c);
   read_elements(in, root, c);
   read_settings(in, root, c);
+  check_stability_supported(in, root, c);
   check_forcing_within_harmonics(in, root, c);
   read_outputs(in, root, c);
   read_study(in, root, c);

@@ -21,6 +21,8 @@ EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementLi
   for (const auto& element : elements) {
     if (element->properties.size() != element->property_names().size())
       throw std::invalid_argument("element " + element->type() + ": property count does not match");
+    if (element->uses_linear_residual())
+      throw std::invalid_argument("element " + element->type() + " takes its forces from the harmonic-balance residual (law = \"dlft\"): time integration needs a time-domain law (law = \"penalty\")");
     if (element->history_dependent() && element->history_state_size() == 0)
       throw std::invalid_argument("element " + element->type() + " has no time-stepping form: time integration does not support it");
     for (int d : element->dofs)
