@@ -29,8 +29,8 @@ print(f"| {name} | {len(own)} | {slots} | {wall:.2f} | {sum(own):.2f} | {1000 * 
 PY
 }
 
-blade=(sweep examples/blade/sweep.toml --param clearance --values 1e-4:4.5e-4:8 --param mu --values 0.02,0.1,0.18,0.26)
-duffing=(sweep examples/duffing.toml --param amplitude --values 0.5:1.5:32)
+blade=(sweep examples/blade/sweep.toml --param clearance --values 1e-4:4.5e-4:count=8 --param mu --values 0.02,0.1,0.18,0.26)
+duffing=(sweep examples/duffing.toml --param amplitude --values 0.5:1.5:count=32)
 echo "| run | tasks | processes | wall [s] | tasks' own time [s] | overhead per task [ms] |"
 echo "|---|---|---|---|---|---|"
 run blade_mpi1 1 mpirun -n 1 "$hbtrack" "${blade[@]}"

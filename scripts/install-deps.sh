@@ -20,7 +20,7 @@ packages=(
   libbenchmark-dev       # bench/
   python3-numpy python3-matplotlib  # plots of the main job
   pybind11-dev python3-pybind11     # the Python module (python/)
-  python3-pytest                    # its tests (python/tests, run by ctest)
+  python3-pytest python3-scipy      # its tests (python/tests, run by ctest; scipy: sparse matrix input)
   libopenmpi-dev openmpi-bin        # `mpirun hbtrack sweep|study` (optional: without it tasks run locally)
 )
 

@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -91,6 +92,22 @@ inline std::vector<std::string> csv_header(const std::filesystem::path& p) {
   std::stringstream ss(line);
   while (std::getline(ss, cell, ',')) cells.push_back(cell);
   return cells;
+}
+
+// The data rows of a numeric CSV file, each as {column name: value}.
+inline std::vector<std::map<std::string, double>> csv_records(const std::filesystem::path& p) {
+  const std::vector<std::string> header = csv_header(p);
+  std::ifstream in(p);
+  std::string line, cell;
+  std::getline(in, line);
+  std::vector<std::map<std::string, double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::map<std::string, double> row;
+    for (size_t c = 0; c < header.size() && std::getline(ss, cell, ','); ++c) row[header[c]] = std::stod(cell);
+    rows.push_back(std::move(row));
+  }
+  return rows;
 }
 
 }  // namespace hbtrack::test

@@ -174,7 +174,7 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"negative_time_limit", variant("omega_end = 2.0", "omega_end = 2.0\nwall_time_limit = -1"), "continuation.wall_time_limit: must be >= 0"},
       {"bad_corrector", variant("omega_end = 2.0", "omega_end = 2.0\ncorrector = \"newton\""), "continuation.corrector: must be pseudo_arclength or hypersphere"},
       {"locate_not_boolean", variant("omega_end = 2.0", "omega_end = 2.0\nlocate = 1"), "continuation.locate: expected true or false"},
-      {"bad_stability_method", variant("", "[stability]\nmethod = \"floquet\""), "stability.method: must be hill, monodromy or none"},
+      {"bad_stability_method", variant("", "[stability]\nmethod = \"floquet\""), "stability.method: must be hill, monodromy, shooting or none"},
       {"bad_condensation", variant("harmonics = 3", "harmonics = 3\ncondensation = \"guyan\""), "harmonic_balance.condensation: must be auto, schur, modal or none"},
       // Model, damping, forcing, elements, outputs.
       {"nan_in_matrix", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0, nan], [nan, 1.0]]"), "model.K[0][1]: must be finite"},

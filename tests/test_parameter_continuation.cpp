@@ -112,8 +112,13 @@ TEST(ContinueCli, WritesTheBranchWithTheParameterColumnAndItsFolds) {
     EXPECT_EQ(sp["amplitude"].get<double>(), sp["parameters"]["amplitude"].get<double>());
   }
   EXPECT_EQ(lps, 2);
-  const std::vector<std::string> expected{"omega", "amplitude", "stable", "max_x", "min_x", "h1_x"};
-  EXPECT_EQ(test::csv_header(out / "branch.csv"), expected);
+  // The historical columns first, then h0_x, h2_x .. h7_x and phase1_x .. phase7_x (H = 7), as
+  // branch.csv of frc (docs/outputs.md).
+  const std::vector<std::string> expected{"omega", "amplitude", "stable", "max_x", "min_x", "h1_x", "h0_x"};
+  const std::vector<std::string> header = test::csv_header(out / "branch.csv");
+  ASSERT_EQ(header.size(), 6u + 7u + 7u);
+  EXPECT_EQ(std::vector<std::string>(header.begin(), header.begin() + 7), expected);
+  EXPECT_EQ(header.back(), "phase7_x");
   EXPECT_EQ(test::csv_header(out / "states.csv").size(), 1u + 15u);  // omega, 2H+1 harmonics
   EXPECT_EQ(test::csv_header(out / "special_states.csv").size(), 1u + 15u);
 

@@ -40,8 +40,11 @@ nlohmann::json summary_of(const fs::path& dir) { return nlohmann::json::parse(st
 // The result files a resumed run must reproduce exactly (CSV numbers are printed with %.17g, so
 // equal bytes mean equal doubles).
 void expect_same_results(const fs::path& expected, const fs::path& actual) {
-  for (const char* file : {"branch.csv", "states.csv", "special_states.csv"})
+  // stability.csv holds several rows per point: a resumed run keeps them by point index.
+  for (const char* file : {"branch.csv", "states.csv", "special_states.csv", "stability.csv"}) {
+    EXPECT_FALSE(file_bytes(expected / file).empty()) << file << " missing";
     EXPECT_EQ(file_bytes(expected / file), file_bytes(actual / file)) << file << " differs";
+  }
   const nlohmann::json a = summary_of(expected), b = summary_of(actual);
   EXPECT_EQ(a["points"], b["points"]);
   EXPECT_EQ(a["stop_reason"], b["stop_reason"]);
@@ -56,7 +59,7 @@ TEST(Reliability, TwoRunsOfTheSameInputGiveIdenticalBytes) {
   ASSERT_EQ(run_cli("frc " + duffing() + " -q -o " + first.string()).exit_code, 0);
   ASSERT_EQ(run_cli("frc " + duffing() + " -q -o " + second.string()).exit_code, 0);
   ASSERT_GT(count_lines(first / "branch.csv"), 20);
-  for (const char* file : {"branch.csv", "states.csv", "special_states.csv"})
+  for (const char* file : {"branch.csv", "states.csv", "special_states.csv", "stability.csv"})
     EXPECT_EQ(file_bytes(first / file), file_bytes(second / file)) << file << " differs";
 }
 

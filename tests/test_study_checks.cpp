@@ -42,3 +42,14 @@ TEST(StudyChecks, AValidationThatDidNotStartOrAFailedStepFailsTheStudy) {
   EXPECT_NE(failed[0].get<std::string>().find("validate_a_1: exit 1"), std::string::npos) << failed;
   EXPECT_NE(failed[1].get<std::string>().find("no_convergence_at_start"), std::string::npos) << failed;
 }
+
+TEST(StudyChecks, ANominalNfrcThatStoppedEarlyFailsTheStudy) {
+  json s = passing_summary();
+  s["nfrc"] = {{"stop_reason", "max_points"}, {"points", 3}};
+  const json failed = hbtrack::cli::failed_checks(s);
+  ASSERT_EQ(failed.size(), 1u);
+  EXPECT_NE(failed[0].get<std::string>().find("nfrc: the nominal NFRC stopped before the end of its range (max_points)"), std::string::npos)
+      << failed;
+  s["nfrc"]["stop_reason"] = "reached_end";
+  EXPECT_TRUE(hbtrack::cli::failed_checks(s).empty());
+}

@@ -123,3 +123,32 @@ TEST(StudyCli, BadStudyInputGivesOneLineErrors) {
 }
 
 }  // namespace
+
+TEST(StudyCli, AStudyWhoseValidationFailsExitsOneAndSaysSoFirst) {
+  // The Duffing oscillator's limit points tracked in the amplitude with at most 4 points a leg:
+  // the curves stop near the start, so the validation NFRC at amplitude 2.5 (the case's
+  // `validate`) has limit points on no tracking curve. The study must not say "completed".
+  const fs::path dir = fresh_dir("hbtrack_study_failing");
+  fs::create_directories(dir);
+  {
+    std::ifstream duffing(hbtrack::test::source_path("examples/duffing.toml"));
+    std::ofstream out(dir / "case.toml");
+    out << duffing.rdbuf()
+        << "\n[study]\ntrack = [ { parameter = \"amplitude\", range = [0.5, 3.0], validate = [2.5] } ]\nmax_points = 4\nsimulate_periods = 0\n";
+  }
+  const CliRun r = run_cli("study " + (dir / "case.toml").string() + " -q -o " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("check(s) failed"), std::string::npos) << r.err;
+  const json s = read_json(dir / "out" / "summary.json");
+  EXPECT_EQ(s["stop_reason"], "checks_failed");
+  ASSERT_FALSE(s["failed_checks"].empty());
+  EXPECT_NE(s["failed_checks"][0].get<std::string>().find("lie on no tracking curve"), std::string::npos);
+  std::ifstream page(dir / "out" / "index.md");
+  std::stringstream text;
+  text << page.rdbuf();
+  const std::string index = text.str();
+  EXPECT_NE(index.find("Status: checks_failed"), std::string::npos);
+  // The failed checks come before the first figure.
+  EXPECT_LT(index.find("## Failed checks"), index.find("!["));
+  fs::remove_all(dir);
+}

@@ -54,7 +54,10 @@ TEST(SweepCli, MergedTableIsTheSameWithOneAndTwoJobs) {
   const fs::path one = fresh_dir("hbtrack_sweep_jobs1"), two = fresh_dir("hbtrack_sweep_jobs2");
   const CliRun r1 = run_cli("sweep " + kCase + " " + kGrid + " --jobs 1 -o " + one.string());
   ASSERT_EQ(r1.exit_code, 0) << r1.err;
-  const CliRun r2 = run_cli("sweep " + kCase + " " + kGrid + " --jobs 2 -o " + two.string());
+  // The second run spells the count out (LO:HI:count=N): the same grid, so the same table.
+  std::string counted_grid = kGrid;
+  counted_grid.replace(counted_grid.find(":3"), 2, ":count=3");
+  const CliRun r2 = run_cli("sweep " + kCase + " " + counted_grid + " --jobs 2 -o " + two.string());
   ASSERT_EQ(r2.exit_code, 0) << r2.err;
   EXPECT_NE(r2.err.find(" left"), std::string::npos) << "progress with an estimate of the time left: " << r2.err;
   EXPECT_EQ(file_bytes(one / "sweep.csv"), file_bytes(two / "sweep.csv"));
@@ -186,9 +189,11 @@ TEST(SweepCli, BadInputGivesOneLineErrorsAndWritesNothing) {
   std::ofstream(unknown_column) << "amplitude,mu\n0.8,0.1\n";
   const std::vector<std::pair<std::string, std::string>> cases{
       {"--param cubik --values 0.1,0.2", "--param: 'cubik' is not a named parameter"},
-      {"--param cubic --values 0.1:0.2", "--values (cubic): expected A,B,... or LO:HI:COUNT, got '0.1:0.2'"},
+      {"--param cubic --values 0.1:0.2", "--values (cubic): expected A,B,... or LO:HI:count=N, got '0.1:0.2'"},
       {"--param cubic --values 0.1:0.2:0", "--values (cubic) COUNT: must be an integer >= 1, got '0'"},
       {"--param cubic --values 0.1:0.2:2.5", "--values (cubic) COUNT: must be an integer >= 1, got '2.5'"},
+      {"--param cubic --values 0.1:0.2:count=0", "--values (cubic) COUNT: must be an integer >= 1, got '0'"},
+      {"--param cubic --values 0.1:0.2:step=0.01", "--values (cubic): the third field of LO:HI:count=N is a number of values, got 'step=0.01'"},
       {"--param cubic --values ''", "--values (cubic): empty list"},
       {"--param cubic --values 0.1,,0.2", "--values (cubic): empty value in the list"},
       {"--param cubic --values 0.1,abc", "--values (cubic): must be a finite number, got 'abc'"},

@@ -45,4 +45,28 @@ std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>&
   return warnings;
 }
 
+std::string first_nonsmooth_element(const CaseDefinition& c) {
+  for (size_t i = 0; i < c.elements.size(); ++i)
+    if (!c.elements[i]->smoothness_limit().empty()) return "elements[" + std::to_string(i) + "] (" + c.elements[i]->type() + ")";
+  return "";
+}
+
+std::vector<std::string> unconfirmed_hill_bifurcations(const std::vector<SpecialPoint>& points, const std::string& nonsmooth_element,
+                                                       int harmonics) {
+  if (nonsmooth_element.empty()) return {};
+  std::string listed;
+  int count = 0;
+  for (const SpecialPoint& p : points) {
+    if (p.decided_by != "hill" || (p.type != "PD" && p.type != "NS")) continue;
+    char at[64];
+    std::snprintf(at, sizeof at, "%s%s at omega = %.6g", count ? ", " : "", p.type.c_str(), p.lambda);
+    listed += at;
+    ++count;
+  }
+  if (count == 0) return {};
+  return {std::to_string(count) + " bifurcation" + (count > 1 ? "s" : "") + " (" + listed + ") decided by Hill's method alone on " +
+          nonsmooth_element + ", where its exponents converge slowly: confirm with harmonic_balance.harmonics = " +
+          std::to_string(2 * harmonics) + " (a truncation artefact moves or vanishes) or stability.method = \"shooting\""};
+}
+
 }  // namespace hbtrack::cli

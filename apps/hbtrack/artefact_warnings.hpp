@@ -8,11 +8,21 @@
 #include <vector>
 
 #include "hbtrack/continuation/continuation.hpp"
+#include "hbtrack/io/case_file.hpp"
 
 namespace hbtrack::cli {
 
 // omega_range: |omega_end - omega_start| of the NFRC; a cluster is at least kClusterSize special
 // points with consecutive spacings below kClusterSpacing of the range.
 std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>& points, double omega_range);
+
+// PD/NS points that Hill's method alone decided on a law that is not smooth (the model too large
+// for the automatic shooting cross-check): Hill's exponent families converge slowly there, and on
+// the 32-mass chain example at H = 5 it reports NS points that vanish at H = 10 and that shooting
+// does not see. `nonsmooth_element` names such an element ("" when every law is smooth).
+// "elements[i] (type)" of the first element whose law is not smooth, "" when none.
+std::string first_nonsmooth_element(const CaseDefinition& c);
+std::vector<std::string> unconfirmed_hill_bifurcations(const std::vector<SpecialPoint>& points, const std::string& nonsmooth_element,
+                                                       int harmonics);
 
 }  // namespace hbtrack::cli

@@ -1,7 +1,5 @@
 #include "cli_common.hpp"
 
-#include <unistd.h>
-
 #include <csignal>
 #include <cstdio>
 
@@ -47,19 +45,6 @@ HarmonicBalance make_system(const CaseDefinition& c) {
   } catch (const std::invalid_argument& e) {
     throw CaseError(c.path + ": " + e.what());
   }
-}
-
-Progress::Progress(bool quiet) : enabled_(!quiet && isatty(STDERR_FILENO)) {}
-
-Progress::~Progress() {
-  if (enabled_) std::fprintf(stderr, "\n");
-}
-
-void Progress::update(int index, double omega, const RecordedPoint& p, const std::vector<OutputDof>& outputs) {
-  if (!enabled_) return;
-  std::fprintf(stderr, "\r  point %5d  omega %-12.6g", index, omega);
-  if (!outputs.empty() && !p.outputs.empty()) std::fprintf(stderr, "  max_%s %-12.5g", outputs[0].name.c_str(), p.outputs[0].max);
-  std::fflush(stderr);
 }
 
 }  // namespace hbtrack::cli

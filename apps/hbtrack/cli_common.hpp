@@ -1,6 +1,6 @@
 #pragma once
 // What every hbtrack verb shares: registration, the uniform failure types, result-folder rows
-// and the progress line.
+// and the progress line (progress.hpp).
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <functional>
@@ -12,6 +12,7 @@
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/result_tables.hpp"  // options_json, branch rows: shared with the Python module
 #include "interruption.hpp"
+#include "progress.hpp"
 
 namespace hbtrack::cli {
 
@@ -50,17 +51,6 @@ std::string number_text(double v, int significant = 10);
 
 
 HarmonicBalance make_system(const CaseDefinition& c);
-
-// A one-line progress report on a terminal (stderr), silent otherwise or when quiet.
-class Progress {
- public:
-  explicit Progress(bool quiet);
-  ~Progress();
-  void update(int index, double omega, const RecordedPoint& p, const std::vector<OutputDof>& outputs);
-
- private:
-  bool enabled_;
-};
 
 // Verbs register themselves, one file each: `const VerbRegistrar registrar(add_my_verbs);`
 // at namespace scope in the verb's file adds its sub-commands to the tool.

@@ -17,7 +17,7 @@ std::string continuation_failure_advice(const ContinuationSummary& s, const Cont
   const std::string tried = std::to_string(s.newton_iterations) + " Newton iterations, " + std::to_string(s.failed_steps) +
                             " failed steps, " + std::to_string(s.step_halvings) + " step halvings";
   if (s.stop_reason == "no_convergence_at_start")
-    return "Newton from the linear solution did not converge at omega = " + at + " (" + tried + ", at most " +
+    return "Newton from the linear solution and from the solution linearised about rest did not converge at omega = " + at + " (" + tried + ", at most " +
            std::to_string(3 * o.max_iterations) +
            " iterations): start where the response is nearly linear (move continuation.omega_start away from the resonance), "
            "or raise continuation.max_iterations";

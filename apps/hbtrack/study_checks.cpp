@@ -15,6 +15,14 @@ json failed_checks(const json& s) {
     if (code != 0 && !simulation_ran)
       failed.push_back(folder + ": exit " + std::to_string(code) + " (see " + folder + "/log.txt)");
   }
+  // The nominal NFRC must cover its range: stopped early (max_points, say) it may not have
+  // reached every limit point, and the study would track and validate only some of them.
+  if (s.contains("nfrc")) {
+    const std::string reason = s["nfrc"].value("stop_reason", "reached_end");
+    if (reason != "reached_end")
+      failed.push_back("nfrc: the nominal NFRC stopped before the end of its range (" + reason +
+                       "), so the study may miss limit points and what they lead to");
+  }
   for (const auto& t : s.value("tracking", json::array()))
     for (const auto& v : t.value("validations", json::array())) {
       const std::string folder = v.value("folder", "");

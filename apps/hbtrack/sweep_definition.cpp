@@ -60,18 +60,24 @@ std::string file_fingerprint(const std::string& path) {
 
 std::vector<std::string> parse_sweep_values(const std::string& name, const std::string& spec) {
   const std::string flag = "--values (" + name + ")";
-  if (trimmed(spec).empty()) throw CaseError(flag + ": empty list, expected A,B,... or LO:HI:COUNT");
+  if (trimmed(spec).empty()) throw CaseError(flag + ": empty list, expected A,B,... or LO:HI:count=N");
   const std::vector<std::string> range = split(spec, ':');
   std::vector<std::string> values;
   if (range.size() == 3) {
     const double lo = parse_number(flag + " LO", trimmed(range[0])), hi = parse_number(flag + " HI", trimmed(range[1]));
-    const long count = parse_integer(flag + " COUNT", trimmed(range[2]), 1);
+    // The third field is a count, not a step (Matlab's LO:STEP:HI reads otherwise): `count=N`
+    // says so explicitly, a bare N means the same.
+    std::string count_text = trimmed(range[2]);
+    if (count_text.rfind("count=", 0) == 0) count_text = trimmed(count_text.substr(6));
+    else if (count_text.find('=') != std::string::npos)
+      throw CaseError(flag + ": the third field of LO:HI:count=N is a number of values, got '" + range[2] + "'");
+    const long count = parse_integer(flag + " COUNT", count_text, 1);
     if (static_cast<unsigned long>(count) > kMaxSweepTasks) throw too_many_tasks(flag + " COUNT", std::to_string(count));
     for (long i = 0; i < count; ++i)
       values.push_back(value_text(i + 1 == count && count > 1 ? hi : lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(std::max(count - 1, 1L))));
     return values;
   }
-  if (range.size() != 1) throw CaseError(flag + ": expected A,B,... or LO:HI:COUNT, got '" + spec + "'");
+  if (range.size() != 1) throw CaseError(flag + ": expected A,B,... or LO:HI:count=N, got '" + spec + "'");
   for (const std::string& item : split(spec, ',')) {
     if (values.size() == kMaxSweepTasks) throw too_many_tasks(flag, more_than_the_limit());
     if (trimmed(item).empty()) throw CaseError(flag + ": empty value in the list '" + spec + "'");

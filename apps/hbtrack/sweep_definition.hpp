@@ -28,7 +28,8 @@ struct SweepTracking {
 // typo such as 1:2:100000000 must fail at once rather than exhaust memory or the disk.
 inline constexpr std::size_t kMaxSweepTasks = 100000;
 
-// "A,B,C" or "LO:HI:COUNT" (COUNT evenly spaced values, both ends included; COUNT = 1 gives LO).
+// "A,B,C" or "LO:HI:count=N" / "LO:HI:N" (N evenly spaced values, both ends included: a count,
+// not a step; N = 1 gives LO).
 std::vector<std::string> parse_sweep_values(const std::string& name, const std::string& spec);
 
 // The cartesian product of --param NAME --values SPEC pairs (given in the same order).

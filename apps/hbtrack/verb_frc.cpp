@@ -47,10 +47,24 @@ int run_frc(const FrcOptions& options) {
   // A resumed run appends to its CSVs; a folder that does not fit its checkpoint is bad input.
   CsvAppender branch = open_result_csv(dir + "/branch.csv", branch_header(c), resumed.has_value(), rows_kept);
   CsvAppender states = open_result_csv(dir + "/states.csv", state_header(hbm.unknowns()), resumed.has_value(), rows_kept);
+  // stability.csv: several rows per point (its Floquet exponents), so resumed by point index.
+  std::optional<CsvAppender> stability;
+  if (c.nfrc.stability.enabled()) {
+    if (!resumed) {
+      stability.emplace(dir + "/stability.csv", stability_header());
+    } else {
+      try {
+        stability.emplace(CsvAppender::continuing_points(dir + "/stability.csv", stability_header(), rows_kept));
+      } catch (const std::runtime_error& e) {
+        throw CaseError(std::string("--resume: ") + e.what());
+      }
+    }
+  }
+  int point = rows_kept;
   if (resumed) summary["resumed_at_point"] = rows_kept;
   write_json_atomically(dir + "/summary.json", summary);
 
-  Progress progress(o.quiet);
+  Progress progress(o.quiet, c.nfrc.omega_start, c.nfrc.omega_end);
   StopRequest stop(options.time_limit);
   ContinuationRestart restart;
   if (resumed) restart.resume_from = &resumed->state;
@@ -61,6 +75,9 @@ int run_frc(const FrcOptions& options) {
       [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
         branch.append(branch_row(rec));
         states.append(state_row(p.lambda, p.u));
+        if (stability)
+          for (const auto& row : stability_rows(point, rec)) stability->append(row);
+        ++point;
         progress.update(index, p.lambda, rec, c.outputs);
         return !stop.requested();
       },
@@ -73,8 +90,10 @@ int run_frc(const FrcOptions& options) {
   // The state of each special point, in summary order: `track` starts from a limit point's.
   CsvAppender special_states(dir + "/special_states.csv", state_header(hbm.unknowns()));
   for (const auto& sp : r.continuation.special_points) special_states.append(state_row(sp.lambda, sp.u));
-  const std::vector<std::string> warnings =
+  std::vector<std::string> warnings =
       special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start));
+  for (std::string& w : unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
+    warnings.push_back(std::move(w));
   summary["warnings"] = warnings;
   for (const std::string& w : warnings) std::fprintf(stderr, "frc: warning: %s\n", w.c_str());
   const double last_omega = r.recorded.empty() ? c.nfrc.omega_start : r.recorded.back().omega;

@@ -139,7 +139,7 @@ class Study {
     for (const auto& sp : s["special_points"])
       if (sp.value("type", "") == "LP") limit_points_.push_back(sp);
     summary_["nfrc"] = {{"points", s["points"]}, {"special_points", s["special_points"]}, {"limit_points", limit_points_.size()},
-                        {"wall_s", s["timings"]["wall_s"]}};
+                        {"stop_reason", s.value("stop_reason", "")}, {"wall_s", s["timings"]["wall_s"]}};
     return true;
   }
 

@@ -31,15 +31,6 @@ struct SweepOptions {
   int jobs = 0;
 };
 
-std::string duration_text(double seconds) {
-  char buf[32];
-  const long s = static_cast<long>(seconds + 0.5);
-  if (s >= 3600) std::snprintf(buf, sizeof buf, "%ldh%02ldm", s / 3600, s / 60 % 60);
-  else if (s >= 60) std::snprintf(buf, sizeof buf, "%ldm%02lds", s / 60, s % 60);
-  else std::snprintf(buf, sizeof buf, "%lds", s);
-  return buf;
-}
-
 // DIR may be new, empty, or hold this same sweep; anything else is refused before it is touched.
 void claim_folder(const std::string& dir, const json& definition) {
   namespace fs = std::filesystem;
@@ -224,7 +215,7 @@ void add_sweep_verb(CLI::App& app, VerbList& verbs) {
   CLI::App* s = app.add_subcommand("sweep", "NFRCs (or limit-point tracking) over a grid or table of parameter values, on threads or MPI ranks");
   add_common_options(s, options.common);
   s->add_option("--param", options.params, "a named parameter to vary (repeatable, each with its --values)")->type_name("NAME");
-  s->add_option("--values", options.values, "its values: A,B,C or LO:HI:COUNT (evenly spaced, ends included)")->type_name("LIST");
+  s->add_option("--values", options.values, "its values: A,B,C or LO:HI:count=N (N evenly spaced values, ends included; not a step)")->type_name("LIST");
   s->add_option("--samples", options.samples, "a CSV table instead: a header of parameter names, one task per row")->type_name("FILE");
   s->add_option("--track", options.track, "follow every limit point of each NFRC in PARAM over LO:HI (default: the case's [study] range)")
       ->type_name("PARAM[:LO:HI]");

@@ -246,8 +246,12 @@ int run_isolas(const IsolaOptions& o) {
       ensure_directory(dir);
       CsvAppender branch(dir + "/branch.csv", branch_header(c));
       CsvAppender states(dir + "/states.csv", state_header(hbm.unknowns()));
+      std::optional<CsvAppender> stability;
+      if (c.nfrc.stability.enabled()) stability.emplace(dir + "/stability.csv", stability_header());
       for (size_t i = 0; i < f.branch.recorded.size(); ++i) {
         branch.append(branch_row(f.branch.recorded[i]));
+        if (stability)
+          for (const auto& row : stability_rows(static_cast<int>(i), f.branch.recorded[i])) stability->append(row);
         states.append(state_row(f.branch.continuation.points[i].lambda, f.branch.continuation.points[i].u));
       }
       const auto& s = f.branch.continuation.summary;

@@ -8,10 +8,12 @@ tracking, isolated branches, time integration and Craig-Bampton reduction.
     lp1 = hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.5, 3.0))
     hbtrack.plots.save_figure(hbtrack.plots.nfrc_figure(nfrc), "out/nfrc")   # out/nfrc.png, .pdf
 
+hbtrack.plots (matplotlib) is imported when first used, so `import hbtrack` works without it.
 Import with PYTHONPATH=build/python (the build assembles the package and its compiled part
 there); plotting and reading result folders also work from python/ without a build.
 """
-from . import plots
+import importlib
+
 from ._core import core as _core
 from .analysis import backbone, continuation, frc, isolas, limit_point, track
 from .cases import case_from_arrays, load_case
@@ -27,3 +29,10 @@ if _core is not None:
 __all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "track", "isolas", "limit_point", "simulate", "reduce",
            "normal_modes", "output_harmonics", "add_python_element", "read_result", "plots", "Case", "ContinuationOptions",
            "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
+
+
+def __getattr__(name):
+    """hbtrack.plots is imported on first use: computing needs no matplotlib."""
+    if name == "plots":
+        return importlib.import_module(".plots", __name__)
+    raise AttributeError(f"module 'hbtrack' has no attribute {name!r}")

@@ -3,30 +3,87 @@ functions. Results are dicts holding what the CLI writes to a result folder:
 
     branch          {column: 1-D array}, the columns and numbers of branch.csv
     states          2-D array, the rows of states.csv (omega or leg, omega, parameter; then x0, x1, ...)
+    stability       {column: 1-D array}, stability.csv (frc and isola branches, with stability on)
     special_points  list of dicts, as summary.json's special_points
     special_states  2-D array, special_states.csv (frc only)
     summary         dict, as summary.json
     kind            "frc", "continue", "track", "isolas" (as hbtrack.results.read_result names folders)
 
 A run that stops early (summary["stop_reason"]) still returns what it computed, as the CLI keeps
-its points; bad arguments raise ValueError naming the argument.
+its points; bad arguments raise ValueError naming the argument. The columns are described in
+docs/outputs.md.
 """
 import numpy as np
 
 from ._core import require_core
 
 
-def frc(case):
-    """The NFRC of `case` over its frequency range, with stability and special points."""
-    result = require_core().frc(case)
+def frc(case, *, progress=None):
+    """The NFRC of `case` over its frequency range, with stability and special points.
+
+    What ``hbtrack frc CASE -o DIR`` computes, returned instead of written.
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        From :func:`hbtrack.load_case` or :func:`hbtrack.case_from_arrays`.
+    progress : callable, optional
+        Called after every accepted point as ``progress(fraction, point, omega)``: `fraction`
+        the part of the frequency range covered (0 to 1; a folding branch may step back),
+        `point` the 0-based row, `omega` its frequency (rad/s). Return False to stop the
+        continuation there (stop_reason "stopped_by_callback"); None or True go on.
+
+    Returns
+    -------
+    dict
+        ``branch`` ({column: array}: omega, stable, max_NAME, min_NAME, h1_NAME, then hK_NAME and
+        phaseK_NAME per output), ``states`` (rows [omega, x0, ...]), ``stability`` ({column:
+        array}, the Floquet exponents and multipliers per point; absent with stability "none"),
+        ``special_points`` (list of dicts: type LP/BP/PD/NS, index, omega, located, outputs),
+        ``special_states``, ``summary`` (as summary.json) and ``kind`` = "frc".
+
+    Examples
+    --------
+    >>> case = hbtrack.load_case("examples/duffing.toml")
+    >>> nfrc = hbtrack.frc(case)
+    >>> nfrc["branch"]["max_x"].max()                      # the peak
+    >>> [p["omega"] for p in nfrc["special_points"] if p["type"] == "LP"]
+    """
+    core = require_core()
+    if progress is not None and not callable(progress):
+        raise ValueError(f"progress: must be callable, got {type(progress).__name__}")
+    result = core.frc(case, progress)
     result["kind"] = "frc"
     return result
 
 
 def continuation(case, *, param, omega, range):  # noqa: A002 - the CLI's --range
-    """`hbtrack continue`: the periodic solution at fixed frequency `omega` followed in the named
-    parameter `param` from range[0] towards range[1], with stability and special points (LPs in
-    the parameter located). branch holds the parameter as a column beside omega."""
+    """The periodic solution at a fixed frequency followed in a named parameter (``hbtrack continue``).
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        From :func:`hbtrack.load_case` or :func:`hbtrack.case_from_arrays`.
+    param : str
+        The named parameter to vary ("amplitude", "mu", "clearance", ...).
+    omega : float
+        The fixed forcing frequency (rad/s).
+    range : tuple of float
+        (start, end): the parameter goes from start towards end (the case's value is not used).
+
+    Returns
+    -------
+    dict
+        ``branch`` ({column: array}: omega, PARAM, stable, max_NAME, min_NAME, h1_NAME, then
+        hK_NAME and phaseK_NAME per output), ``states`` (rows [omega, x0, ...]),
+        ``special_points`` (LPs in the parameter, located; BP, PD, NS), ``special_states``,
+        ``summary`` (as summary.json) and ``kind`` = "continue".
+
+    Examples
+    --------
+    >>> branch = hbtrack.continuation(case, param="amplitude", omega=1.2, range=(0.05, 3.0))
+    >>> [p["amplitude"] for p in branch["special_points"] if p["type"] == "LP"]
+    """
     try:
         start, end = (float(v) for v in range)
     except (TypeError, ValueError):
@@ -37,9 +94,29 @@ def continuation(case, *, param, omega, range):  # noqa: A002 - the CLI's --rang
 
 
 def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
-    """`hbtrack backbone`: the nonlinear mode of linear mode `mode` (from 1) by the extended
-    periodic motion concept, from modal amplitude range[0] (near the linear mode) to range[1].
-    branch holds amplitude, omega, damping_ratio, xi and the outputs' extremes and harmonics."""
+    """The nonlinear mode of a linear mode by the extended periodic motion concept (``hbtrack backbone``).
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case; its forcing is ignored and every dof is an unknown (no condensation).
+    mode : int, optional
+        Which linear mode, counted from 1 (default 1).
+    range : tuple of float
+        (LO, HI), 0 < LO < HI: the modal amplitude a goes from LO (near the linear mode) to HI.
+
+    Returns
+    -------
+    dict
+        ``branch`` ({column: array}: amplitude, omega, damping_ratio, xi, then per output
+        max_NAME, min_NAME and h0_NAME .. hH_NAME, h0 the mean), ``states`` (rows [omega, x0,
+        ...]), ``special_points``, ``summary`` (as summary.json) and ``kind`` = "backbone".
+
+    Examples
+    --------
+    >>> mode = hbtrack.backbone(case, mode=1, range=(0.01, 5.0))
+    >>> mode["branch"]["omega"][-1], mode["branch"]["damping_ratio"][-1]
+    """
     if isinstance(mode, bool) or not isinstance(mode, (int, np.integer)) or mode < 1:
         raise ValueError(f"mode: must be an integer >= 1, got {mode!r}")
     try:
@@ -54,7 +131,25 @@ def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
 
 
 def limit_point(result, lp):
-    """State row [omega, x0, ...] of the lp-th (from 1) limit point of an frc result."""
+    """The state of the lp-th limit point of an frc result.
+
+    Parameters
+    ----------
+    result : dict
+        An frc result (:func:`frc` or :func:`hbtrack.read_result` of an frc folder).
+    lp : int
+        Which limit point, counted from 1 in the order of ``result["special_points"]``.
+
+    Returns
+    -------
+    numpy.ndarray
+        The row [omega, x0, x1, ...] of ``result["special_states"]``.
+
+    Examples
+    --------
+    >>> state = hbtrack.limit_point(nfrc, 1)
+    >>> omega, x = state[0], state[1:]
+    """
     if not isinstance(result, dict) or "special_points" not in result or "special_states" not in result:
         raise ValueError("start: expected an frc result (from hbtrack.frc, or read_result of an frc folder)")
     if isinstance(lp, bool) or not isinstance(lp, (int, np.integer)) or lp < 1:
@@ -66,8 +161,36 @@ def limit_point(result, lp):
 
 
 def track(case, start, *, lp, param, range, method="bordered"):  # noqa: A002 - the CLI's --range
-    """The lp-th limit point of the frc result `start` (computed on the same case) followed while
-    parameter `param` moves within range = (LO, HI); method "bordered" or "extended"."""
+    """A limit point followed in a second parameter (``hbtrack track``).
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case `start` was computed on.
+    start : dict
+        An frc result of `case`.
+    lp : int
+        Which of its limit points (from 1).
+    param : str
+        The named parameter to vary ("amplitude", "mu", "clearance", ...).
+    range : tuple of float
+        (LO, HI): leg 1 goes from the start towards LO, leg 2 towards HI.
+    method : {"bordered", "extended"}, optional
+        The defining system (docs/tracking.md).
+
+    Returns
+    -------
+    dict
+        ``branch`` ({column: array}: leg, omega, PARAM, max_NAME, min_NAME, h1_NAME, then the
+        harmonics' columns), ``states`` (rows [leg, omega, PARAM, x0, ...]), ``special_points``
+        (the located extrema of PARAM: type "min" or "max"), ``summary`` (stop_reason, closed,
+        legs, ...) and ``kind`` = "track".
+
+    Examples
+    --------
+    >>> curve = hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.1, 2.0))
+    >>> curve["branch"]["amplitude"].min()                  # where the fold is born
+    """
     state = limit_point(start, lp)
     try:
         low, high = (float(v) for v in range)
@@ -80,8 +203,29 @@ def track(case, start, *, lp, param, range, method="bordered"):  # noqa: A002 - 
 
 
 def isolas(case, tracks, *, at):
-    """Isolated branches at parameter value `at`, from one or more track results of the case:
-    {"summary": {... "crossings": [...]}, "branches": {"isola_1": branch result, ...}}."""
+    """Isolated branches at one parameter value, from limit-point tracking curves (``hbtrack isolas``).
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case the curves were tracked on.
+    tracks : dict or list of dict
+        One or more track results of the same parameter.
+    at : float
+        The parameter value where the curves are cut.
+
+    Returns
+    -------
+    dict
+        ``summary`` (with ``crossings``: status isola/open/duplicate/outside_range per crossing),
+        ``branches`` ({"isola_1": branch result, ...}, each as :func:`frc` returns plus
+        ``label``) and ``kind`` = "isolas".
+
+    Examples
+    --------
+    >>> found = hbtrack.isolas(case, curve, at=0.15)
+    >>> sorted(found["branches"])
+    """
     if isinstance(tracks, dict):
         tracks = [tracks]
     if not tracks:

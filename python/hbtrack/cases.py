@@ -11,11 +11,30 @@ import tempfile
 import numpy as np
 
 from ._core import require_core
+from .arrays import as_matrix, is_sparse
 
 
 def toml_key(key):
-    """A dict key as a TOML key: bare when it is one, else a quoted string (so that a key holding
-    '=', brackets or a newline cannot change the document around it)."""
+    """A dict key as TOML text.
+
+    Bare when it is a bare key, else a quoted string, so that a key holding '=', brackets or a
+    newline cannot change the document around it.
+
+    Parameters
+    ----------
+    key : object
+        The key (converted with str).
+
+    Returns
+    -------
+    str
+        Its TOML text.
+
+    Examples
+    --------
+    >>> toml_key("amplitude"), toml_key("a = 1")
+    ('amplitude', '"a = 1"')
+    """
     key = str(key)
     if key and all(c.isascii() and (c.isalnum() or c in "_-") for c in key):
         return key
@@ -23,7 +42,25 @@ def toml_key(key):
 
 
 def toml_value(value):
-    """A Python value (number, string, bool, sequence, dict, numpy array) as TOML text."""
+    """A Python value as TOML text (what case_from_arrays and `set` overrides write).
+
+    Parameters
+    ----------
+    value : bool, int, float, str, sequence, dict, numpy.ndarray or scipy.sparse matrix
+        The value; sparse matrices are written dense.
+
+    Returns
+    -------
+    str
+        Its TOML text: floats with the shortest repr that reads back to the same double.
+
+    Examples
+    --------
+    >>> toml_value({"cos": 0.18, "dof": "x"})
+    '{cos = 0.18, dof = "x"}'
+    """
+    if is_sparse(value):
+        value = value.toarray()
     if isinstance(value, (bool, np.bool_)):
         return "true" if value else "false"
     if isinstance(value, (int, np.integer)):
@@ -49,7 +86,23 @@ def toml_value(value):
 
 
 def override_strings(overrides):
-    """{NAME: value} or ["NAME=VALUE", ...] as the CLI's --set strings."""
+    """Overrides as the CLI's ``--set NAME=VALUE`` strings.
+
+    Parameters
+    ----------
+    overrides : dict or list of str or None
+        {NAME: value} or ["NAME=VALUE", ...].
+
+    Returns
+    -------
+    list of str
+        One "NAME=VALUE" per override (empty for None).
+
+    Examples
+    --------
+    >>> override_strings({"amplitude": 2.0})
+    ['amplitude=2.0']
+    """
     if overrides is None:
         return []
     if isinstance(overrides, dict):
@@ -60,30 +113,85 @@ def override_strings(overrides):
 
 
 def load_case(path, set=None):  # noqa: A002 - `set` is the CLI's flag name
-    """The case file at `path`, with overrides `set` = {NAME: value} (a named parameter such as
-    "amplitude", or a dotted case key such as "harmonic_balance.harmonics"), as `--set NAME=VALUE`.
-    Raises ValueError naming the file, the line and the field on bad input."""
+    """A case file, with overrides as ``hbtrack --set``.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The TOML case file (docs/case-file.md).
+    set : dict or list of str, optional
+        {NAME: value}: a named parameter such as "amplitude", or a dotted case key such as
+        "harmonic_balance.harmonics"; or ["NAME=VALUE", ...].
+
+    Returns
+    -------
+    hbtrack.Case
+        The case; its options (``case.continuation``, ``case.stability``, ...) can be changed
+        before computing.
+
+    Raises
+    ------
+    ValueError
+        Naming the file, the line and the field on bad input.
+
+    Examples
+    --------
+    >>> case = hbtrack.load_case("examples/duffing.toml", set={"amplitude": 2.0})
+    >>> case.continuation.step = 0.05
+    """
     return require_core().load_case(os.fspath(path), override_strings(set))
 
 
 def case_from_arrays(M, K, dofs, *, C=None, damping=None, forcing=(), elements=(), parameters=None,
                      harmonic_balance=None, continuation, stability=None, outputs=None):
-    """A case from numpy arrays and plain dicts whose keys are the case file's.
+    """A case from matrices and plain dicts whose keys are the case file's.
 
-    M, K, C: n x n arrays; dofs: n names; damping: {"rayleigh": [alpha, beta]} or
-    {"modal_ratios": [...]} instead of C; forcing: [{"dof": "x", "cos": 0.18}, ...] (or "cos"/"sin"
-    arrays of n entries); elements: [{"type": "cubic_spring", "dofs": ["x"], "cubic_stiffness": 0.1}];
-    continuation: {"omega_start": ..., "omega_end": ..., ...}; outputs: [{"name": ..., "dof": ...}]
-    (default: every dof under its own name)."""
-    for name, array in (("M", M), ("K", K), ("C", C)):
-        if array is not None and np.iscomplexobj(np.asarray(array)):
-            raise ValueError(f"{name}: complex values (the model is real; the imaginary part would be lost)")
-    M, K = np.asarray(M, dtype=float), np.asarray(K, dtype=float)
+    Parameters
+    ----------
+    M, K : array_like or scipy.sparse matrix
+        n x n mass and stiffness matrices (sparse ones are written dense).
+    dofs : sequence of str
+        The n dof names.
+    C : array_like or scipy.sparse matrix, optional
+        n x n damping matrix; or give `damping` instead.
+    damping : dict, optional
+        {"rayleigh": [alpha, beta]} or {"modal_ratios": [...]}.
+    forcing : sequence of dict, optional
+        [{"dof": "x", "cos": 0.18}, ...], or "cos"/"sin" arrays of n entries.
+    elements : sequence of dict, optional
+        [{"type": "cubic_spring", "dofs": ["x"], "cubic_stiffness": 0.1}, ...].
+    parameters, harmonic_balance, stability : dict, optional
+        The case file's sections of those names.
+    continuation : dict
+        {"omega_start": ..., "omega_end": ..., ...}.
+    outputs : sequence of dict, optional
+        [{"name": ..., "dof": ...}]; default every dof under its own name.
+
+    Returns
+    -------
+    hbtrack.Case
+        As :func:`load_case` returns, with ``case.path == "<arrays>"``.
+
+    Raises
+    ------
+    ValueError
+        Naming the argument or the case key (a matrix that is not n x n, an unknown key, ...).
+
+    Examples
+    --------
+    >>> import scipy.sparse
+    >>> case = hbtrack.case_from_arrays(scipy.sparse.eye(1), [[1.0]], ["x"], C=[[0.05]],
+    ...     forcing=[{"dof": "x", "cos": 0.18}], parameters={"amplitude": 1.0},
+    ...     elements=[{"type": "cubic_spring", "dofs": ["x"], "cubic_stiffness": 0.1}],
+    ...     continuation={"omega_start": 0.5, "omega_end": 1.6})
+    >>> nfrc = hbtrack.frc(case)
+    """
+    M, K = as_matrix(M, "M"), as_matrix(K, "K")
     if C is not None and damping is not None:
         raise ValueError("damping: give C or damping, not both")
     sections = [("model", {"dofs": list(dofs), "M": M, "K": K})]
     if C is not None:
-        sections.append(("damping", {"C": np.asarray(C, dtype=float)}))
+        sections.append(("damping", {"C": as_matrix(C, "C")}))
     elif damping is not None:
         sections.append(("damping", dict(damping)))
     for name, table in (("parameters", parameters), ("harmonic_balance", harmonic_balance),

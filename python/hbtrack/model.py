@@ -1,25 +1,87 @@
-"""Model building blocks: Craig-Bampton reduction, normal modes, harmonics of a solution."""
+"""Model building blocks: Craig-Bampton reduction, normal modes, harmonics of a solution.
+Matrices may be numpy arrays, any array-like or scipy.sparse matrices (hbtrack.arrays)."""
 import numpy as np
 
 from ._core import require_core
+from .arrays import as_matrix, as_sparse_matrix, is_sparse
 
 
 def reduce(M, K, boundary, *, frames=None, modes=12):
-    """Craig-Bampton reduction (`hbtrack reduce`) of dense M, K onto the translations of boundary
-    nodes (boundary: per node its three rows x, y, z; frames: per node a 3x3 matrix whose columns
-    are its local r, t, z axes, default identity) plus `modes` fixed-interface modes. Returns
-    {mass, stiffness, transformation, fixed_interface_frequencies (rad/s), dof_names}."""
-    frames = [] if frames is None else [np.asarray(f, dtype=float) for f in frames]
-    return require_core().reduce(np.asarray(M, dtype=float), np.asarray(K, dtype=float),
-                                 [list(b) for b in boundary], frames, int(modes))
+    """Craig-Bampton reduction (``hbtrack reduce``) onto boundary nodes' translations plus modes.
+
+    Parameters
+    ----------
+    M, K : array_like or scipy.sparse matrix
+        Mass and stiffness of the finite-element model (n x n). Sparse ones stay sparse (a
+        large model is never densified); dense ones are factorised sparsely inside too.
+    boundary : sequence of (int, int, int)
+        Per boundary node, its three rows x, y, z (0-based).
+    frames : sequence of 3x3 array_like, optional
+        Per boundary node, a matrix whose columns are its local r, t, z axes (default identity).
+    modes : int, optional
+        Number of fixed-interface modes kept (default 12).
+
+    Returns
+    -------
+    dict
+        ``mass``, ``stiffness`` (reduced matrices), ``transformation`` (n x reduced),
+        ``fixed_interface_frequencies`` (rad/s) and ``dof_names``.
+
+    Examples
+    --------
+    >>> rom = hbtrack.reduce(M, K, [(0, 1, 2)], modes=4)
+    >>> rom["stiffness"].shape
+    (7, 7)
+    """
+    frames = [] if frames is None else [as_matrix(f, "frames") for f in frames]
+    boundary = [list(b) for b in boundary]
+    if is_sparse(M) or is_sparse(K):  # a finite-element model stays sparse all the way
+        return require_core().reduce_sparse(as_sparse_matrix(M, "M"), as_sparse_matrix(K, "K"), boundary, frames, int(modes))
+    return require_core().reduce(as_matrix(M, "M"), as_matrix(K, "K"), boundary, frames, int(modes))
 
 
 def normal_modes(M, K):
-    """Undamped modes: (frequencies in rad/s, mass-normalised shapes as columns)."""
-    return require_core().normal_modes(np.asarray(M, dtype=float), np.asarray(K, dtype=float))
+    """Undamped normal modes of (M, K).
+
+    Parameters
+    ----------
+    M, K : array_like or scipy.sparse matrix
+        n x n mass (positive definite) and stiffness matrices.
+
+    Returns
+    -------
+    frequencies : numpy.ndarray
+        The n natural frequencies in rad/s, increasing.
+    shapes : numpy.ndarray
+        n x n, the mass-normalised mode shapes as columns.
+
+    Examples
+    --------
+    >>> frequencies, shapes = hbtrack.normal_modes(np.eye(2), [[2.0, -1.0], [-1.0, 2.0]])
+    """
+    return require_core().normal_modes(as_matrix(M, "M"), as_matrix(K, "K"))
 
 
 def output_harmonics(case, state):
-    """{output name: [a0, a1, b1, ..., aH, bH]} (x = a0/2 + sum a_j cos j wt + b_j sin j wt) of a
-    state row [omega, x0, x1, ...] of a result of `case`."""
+    """Fourier coefficients of every output dof of a solution.
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case the state was computed on.
+    state : array_like
+        A state row [omega, x0, x1, ...] (a row of a result's ``states``).
+
+    Returns
+    -------
+    dict
+        {output name: numpy.ndarray [a0, a1, b1, ..., aH, bH]} with
+        x = a0/2 + sum a_j cos(j w t) + b_j sin(j w t); branch.csv's hK_NAME is |(a_K, b_K)|
+        (h0 = a0/2) and phaseK_NAME is atan2(b_K, a_K).
+
+    Examples
+    --------
+    >>> harmonics = hbtrack.output_harmonics(case, nfrc["states"][20])
+    >>> harmonics["x"][1:3]                                  # a1, b1
+    """
     return require_core().output_harmonics(case, np.asarray(state, dtype=float))

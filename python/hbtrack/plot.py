@@ -32,7 +32,24 @@ def _related(folder, path):
 
 
 def figures_for(result, length_unit=None):
-    """{file stem: Figure} for a result dict (from read_result or the API, with "kind")."""
+    """The figures of a result, whatever verb produced it.
+
+    Parameters
+    ----------
+    result : dict
+        A result dict with "kind" (from read_result or the API).
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    dict
+        {file stem: matplotlib.figure.Figure}.
+
+    Examples
+    --------
+    >>> figures = figures_for(read_result("out/duffing"))
+    """
     kind = result["kind"]
     if kind in ("frc", "solve", "isola_branch"):
         figures = {"nfrc": plots.nfrc_figure(result, length_unit=length_unit)}
@@ -77,7 +94,26 @@ def figures_for(result, length_unit=None):
 
 
 def make_figures(folder, out=None, length_unit=None):
-    """Writes the figures of result folder `folder` into `out` (default: the folder itself)."""
+    """Writes the figures of a result folder as PNG and PDF.
+
+    Parameters
+    ----------
+    folder : str
+        A result folder of any verb.
+    out : str, optional
+        Where to write them (default: the folder itself).
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    list of str
+        The files written.
+
+    Examples
+    --------
+    >>> make_figures("out/duffing")
+    """
     result = read_result(folder)
     out = out or folder
     files = []
@@ -87,6 +123,22 @@ def make_figures(folder, out=None, length_unit=None):
 
 
 def main(argv=None):
+    """`hbtrack plot DIR [-o OUT] [--units U]`.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default sys.argv[1:]).
+
+    Returns
+    -------
+    int
+        The exit code: 0 on success, 2 for a folder that is not a result.
+
+    Examples
+    --------
+    >>> main(["out/duffing"])
+    """
     parser = argparse.ArgumentParser(prog="hbtrack plot", description=__doc__.splitlines()[0])
     parser.add_argument("folder", help="result folder")
     parser.add_argument("-o", "--output", help="folder for the figures (default: the result folder)")

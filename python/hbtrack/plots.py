@@ -21,10 +21,48 @@ PARAMETER_UNITS = {"amplitude": "-, scales the case's forcing", "mu": "-", "clea
 
 
 def length_label(what, unit=None):
+    """An axis label with a length unit.
+
+    Parameters
+    ----------
+    what : str
+        The quantity.
+    unit : str, optional
+        Its unit (default: "model length unit").
+
+    Returns
+    -------
+    str
+        "what [unit]".
+
+    Examples
+    --------
+    >>> length_label("max x", "m")
+    'max x [m]'
+    """
     return f"{what} [{unit or MODEL_LENGTH}]"
 
 
 def parameter_label(name, length_unit=None):
+    """An axis label for a named parameter, with its unit.
+
+    Parameters
+    ----------
+    name : str
+        The parameter ("amplitude", "mu", "clearance", ...).
+    length_unit : str, optional
+        The model's length unit, for length parameters.
+
+    Returns
+    -------
+    str
+        "name [unit]".
+
+    Examples
+    --------
+    >>> parameter_label("clearance", "m")
+    'clearance [m]'
+    """
     unit = PARAMETER_UNITS.get(name, "case units")
     if unit == MODEL_LENGTH and length_unit:
         unit = length_unit
@@ -32,7 +70,25 @@ def parameter_label(name, length_unit=None):
 
 
 def save_figure(fig, path):
-    """Writes PATH.png and PATH.pdf (path without extension); returns both file names."""
+    """Writes a figure as PNG and PDF.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure.
+    path : str
+        PATH without extension; its folder is created.
+
+    Returns
+    -------
+    list of str
+        [PATH.png, PATH.pdf].
+
+    Examples
+    --------
+    >>> save_figure(nfrc_figure(nfrc), "out/nfrc")
+    ['out/nfrc.png', 'out/nfrc.pdf']
+    """
     folder = os.path.dirname(path)
     if folder:
         os.makedirs(folder, exist_ok=True)
@@ -72,9 +128,31 @@ def _mark_special_points(ax, special_points, key):
 
 
 def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
-    """NFRC of the chosen outputs (default all): max and min over a period against omega, stable
-    solid, unstable dashed, special points (LP, BP, PD, NS) marked. `others`: more branch results
-    of the same case overlaid (e.g. isolas)."""
+    """The NFRC: max and min over a period against omega.
+
+    Stable parts solid, unstable dashed, special points (LP, BP, PD, NS) marked.
+
+    Parameters
+    ----------
+    result : dict
+        A branch result (frc, solve, isola branch), from the API or hbtrack.read_result.
+    outputs : list of str, optional
+        The outputs drawn (default all).
+    others : sequence of dict, optional
+        More branch results of the same case overlaid (e.g. isolas).
+    length_unit : str, optional
+        The model's length unit for the labels.
+    title : str, optional
+        The figure's title.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> fig = nfrc_figure(hbtrack.frc(case), length_unit="m")
+    """
     names = outputs or output_names(result)
     if not names:
         raise ValueError("nfrc_figure: the result records no outputs")
@@ -106,9 +184,30 @@ def _extrema(track):
 
 
 def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
-    """Limit-point curves in (omega, parameter, max of `output`), extrema of the parameter marked
-    (v: min, a pair of limit points is born; ^: max, a pair disappears); `validations`: NFRC
-    results overlaid at their own parameter value."""
+    """Limit-point curves in (omega, parameter, max of an output).
+
+    Extrema of the parameter marked (v: min, a pair of limit points is born; ^: max, a pair
+    disappears).
+
+    Parameters
+    ----------
+    tracks : dict or sequence of dict
+        Track results.
+    output : str, optional
+        The output drawn (default the first).
+    validations : sequence of dict, optional
+        NFRC results overlaid at their own parameter value.
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> fig = tracking_3d_figure([lp1, lp2])
+    """
     tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
     name = output or output_names(tracks[0])[0]
     param = _tracking_parameter(tracks[0])
@@ -133,9 +232,30 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
 
 
 def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
-    """Limit-point curves projected on (omega, parameter), start (o) and extrema (v min, ^ max)
-    annotated; limit points of the `validations` NFRCs (x) at their parameter value, which the
-    curves must pass through; `at`: a parameter value drawn as a line (isolas)."""
+    """Limit-point curves projected on (omega, parameter).
+
+    Start (o) and extrema (v min, ^ max) annotated; the limit points of the `validations` NFRCs
+    (x) at their parameter value, which the curves must pass through.
+
+    Parameters
+    ----------
+    tracks : dict or sequence of dict
+        Track results.
+    validations : sequence of dict, optional
+        NFRC results computed at fixed parameter values.
+    length_unit : str, optional
+        The model's length unit for the labels.
+    at : float, optional
+        A parameter value drawn as a line (isolas).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> fig = tracking_plane_figure(lp1, at=0.15)
+    """
     tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
     param = _tracking_parameter(tracks[0])
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
@@ -166,8 +286,29 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
 
 
 def validation_figure(tracks, nfrcs, output=None, length_unit=None):
-    """Tracking curves in (omega, max of `output`) with NFRCs computed separately overlaid: each
-    NFRC's folds must lie on a tracking curve."""
+    """Tracking curves in (omega, max of an output) with separately computed NFRCs.
+
+    Each NFRC's folds must lie on a tracking curve.
+
+    Parameters
+    ----------
+    tracks : dict or sequence of dict
+        Track results.
+    nfrcs : sequence of dict
+        NFRC results overlaid.
+    output : str, optional
+        The output drawn (default the first).
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> fig = validation_figure(lp1, [nfrc_low, nfrc_high])
+    """
     tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
     name = output or output_names(tracks[0])[0]
     param = _tracking_parameter(tracks[0])
@@ -194,23 +335,81 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None):
 
 
 def harmonic_signal(harmonics, omega, time):
-    """x(t) = a0/2 + sum a_j cos(j omega t) + b_j sin(j omega t) from [a0, a1, b1, ..., aH, bH]."""
-    h = np.asarray(harmonics)
-    x = np.full(np.shape(time), 0.5 * h[0])
+    """The time signal of Fourier coefficients.
+
+    x(t) = a0/2 + sum a_j cos(j omega t) + b_j sin(j omega t).
+
+    Parameters
+    ----------
+    harmonics : array_like
+        [a0, a1, b1, ..., aH, bH].
+    omega : float
+        The fundamental frequency (rad/s).
+    time : array_like
+        Instants (s).
+
+    Returns
+    -------
+    numpy.ndarray
+        x at each instant.
+
+    Examples
+    --------
+    >>> harmonic_signal([0.0, 1.0, 0.0], 1.0, [0.0])
+    array([1.])
+    """
+    h = np.asarray(harmonics, dtype=float)
+    time = np.asarray(time, dtype=float)  # a list of instants too
+    x = np.full(time.shape, 0.5 * h[0])
     for j in range(1, (len(h) - 1) // 2 + 1):
         x += h[2 * j - 1] * np.cos(j * omega * time) + h[2 * j] * np.sin(j * omega * time)
     return x
 
 
 def harmonic_amplitudes(harmonics):
-    """|mean| then hypot(a_j, b_j) for j = 1..H."""
+    """Magnitudes of Fourier coefficients.
+
+    Parameters
+    ----------
+    harmonics : array_like
+        [a0, a1, b1, ..., aH, bH].
+
+    Returns
+    -------
+    numpy.ndarray
+        H + 1 values: |a0/2|, then hypot(a_j, b_j) for j = 1..H.
+
+    Examples
+    --------
+    >>> harmonic_amplitudes([2.0, 3.0, 4.0])
+    array([1., 5.])
+    """
     h = np.asarray(harmonics)
     return np.concatenate([[abs(0.5 * h[0])], np.hypot(h[1::2], h[2::2])])
 
 
 def time_signals_figure(simulation, outputs=None, length_unit=None):
-    """Simulated displacement of each output over the recorded periods, with the HBM orbit the
-    simulation started from (when it started from one) for comparison."""
+    """Simulated displacement of each output over the recorded periods.
+
+    With the HBM orbit the simulation started from (when it started from one) for comparison.
+
+    Parameters
+    ----------
+    simulation : dict
+        A simulate result.
+    outputs : list of str, optional
+        The outputs drawn (default all).
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> fig = time_signals_figure(hbtrack.simulate(case, omega=1.0))
+    """
     names = outputs or output_names(simulation)
     signals, summary = simulation["signals"], simulation["summary"]
     omega = summary["omega"]
@@ -231,7 +430,25 @@ def time_signals_figure(simulation, outputs=None, length_unit=None):
 
 
 def harmonics_figure(series, title, length_unit=None):
-    """Bar chart of harmonic amplitudes: series = {label: [a0, a1, b1, ..., aH, bH]}, log scale."""
+    """Bar chart of harmonic amplitudes, log scale.
+
+    Parameters
+    ----------
+    series : dict
+        {label: [a0, a1, b1, ..., aH, bH]}.
+    title : str
+        The figure's title.
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> fig = harmonics_figure(hbtrack.output_harmonics(case, nfrc["states"][20]), "point 20")
+    """
     fig, ax = plt.subplots(figsize=(6.5, 3.6))
     width = 0.8 / max(len(series), 1)
     for i, (label, harmonics) in enumerate(series.items()):
@@ -250,9 +467,29 @@ def harmonics_figure(series, title, length_unit=None):
 
 
 def state_harmonics(result, point, largest=4):
-    """{label: harmonics} of row `point` of a result's states, per retained dof (the condensed
-    unknowns: the dofs the nonlinear elements act on, in model order), the `largest` in first
-    harmonic only (the blade retains 27)."""
+    """Fourier coefficients of the retained dofs at one point of a result.
+
+    The retained dofs are the condensed unknowns (the dofs the nonlinear elements act on, in model
+    order); only the `largest` in first harmonic are returned (the blade retains 27).
+
+    Parameters
+    ----------
+    result : dict
+        A result with ``states``.
+    point : int
+        The row of its states.
+    largest : int, optional
+        How many dofs to return.
+
+    Returns
+    -------
+    dict
+        {label: [a0, a1, b1, ..., aH, bH]}.
+
+    Examples
+    --------
+    >>> series = state_harmonics(nfrc, 20)
+    """
     harmonics = result["summary"]["options"]["harmonic_balance"]["harmonics"]
     row = np.asarray(result["states"][point])
     x = row[3:] if "leg" in result.get("branch", {}) else row[1:]  # after leg, omega, parameter or omega

@@ -19,7 +19,24 @@ from .results import read_result
 
 
 def study_figures(study_dir, length_unit=None):
-    """{file stem: Figure} for the study folder `study_dir`."""
+    """The figures of a study folder.
+
+    Parameters
+    ----------
+    study_dir : str
+        An `hbtrack study` folder.
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    dict
+        {file stem: matplotlib.figure.Figure}.
+
+    Examples
+    --------
+    >>> figures = study_figures("out/blade-study", length_unit="m")
+    """
     with open(os.path.join(study_dir, "summary.json")) as f:
         summary = json.load(f)
     figures = {}
@@ -49,6 +66,22 @@ def study_figures(study_dir, length_unit=None):
 
 
 def main(argv=None):
+    """`plot_study.py STUDY_DIR [--units U]`: the study's figures into STUDY_DIR/figures.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default sys.argv[1:]).
+
+    Returns
+    -------
+    int
+        The exit code.
+
+    Examples
+    --------
+    >>> main(["out/blade-study", "--units", "m"])
+    """
     parser = argparse.ArgumentParser(prog="plot_study.py", description=__doc__.splitlines()[0])
     parser.add_argument("folder", help="study folder")
     parser.add_argument("--units", help="the model's length unit for the labels (e.g. m)")

@@ -13,7 +13,24 @@ from . import plots
 
 
 def read_sweep(folder):
-    """(parameter names, {column: list of str}) of DIR/sweep.csv and DIR/sweep.json."""
+    """A sweep folder's merged table.
+
+    Parameters
+    ----------
+    folder : str
+        A sweep folder (sweep.csv, sweep.json).
+
+    Returns
+    -------
+    names : list of str
+        The swept parameters.
+    columns : dict
+        {column: list of str} of sweep.csv.
+
+    Examples
+    --------
+    >>> names, columns = read_sweep("out/sweep")
+    """
     with open(os.path.join(folder, "sweep.json")) as f:
         names = json.load(f)["parameters"]
     with open(os.path.join(folder, "sweep.csv"), newline="") as f:
@@ -52,6 +69,23 @@ def _grid_map(ax, x_values, y_values, x_name, y_name, z, label, length_unit):
 
 
 def sweep_figure(folder, length_unit=None):
+    """The peak of the outputs over a sweep's tasks.
+
+    Parameters
+    ----------
+    folder : str
+        A sweep folder.
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> save_figure(sweep_figure("out/sweep"), "out/sweep/sweep_peaks")
+    """
     names, columns = read_sweep(folder)
     outputs = [key[len("peak_max_"):] for key in columns if key.startswith("peak_max_")]
     if not outputs:

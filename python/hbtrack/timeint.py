@@ -4,10 +4,39 @@ from ._core import require_core
 
 def simulate(case, omega=None, *, start=None, point=None, method="newmark", steps_per_period=256,
              max_periods=2000, record_periods=1):
-    """From rest at `omega` (rad/s), or from row `point` of the states of a result `start` (frc,
-    solve, a branch of isolas) of the same case. Returns {"signals": {"time": ..., NAME: ...},
-    "summary": {...}} as signals.csv and summary.json; summary["start"]["harmonics_NAME"] holds
-    the HBM orbit's coefficients when started from one."""
+    """Time integration to the periodic steady state (``hbtrack simulate``).
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case.
+    omega : float, optional
+        Forcing frequency in rad/s, to start from rest; not needed with `start`.
+    start : dict, optional
+        A result (frc, solve, a branch of isolas) of the same case to start from ...
+    point : int, optional
+        ... at this row of its ``states`` (0-based).
+    method : {"newmark", "dopri5"}, optional
+        HHT-alpha Newmark (stiff contact, default) or adaptive Dormand-Prince 5(4).
+    steps_per_period : int, optional
+        Newmark's steps per period (default 256; 512 or more near lightly damped resonances).
+    max_periods : int, optional
+        Give up after this many periods (summary["converged"] False).
+    record_periods : int, optional
+        Periods kept in the signals.
+
+    Returns
+    -------
+    dict
+        ``signals`` ({"time": array, NAME: array} per output, as signals.csv), ``summary``
+        (converged, periods, max_NAME, min_NAME, h1_NAME, harmonics_NAME, and with `start`
+        summary["start"] with the HBM orbit's values) and ``kind`` = "simulate".
+
+    Examples
+    --------
+    >>> sim = hbtrack.simulate(case, start=nfrc, point=20, steps_per_period=512)
+    >>> sim["summary"]["converged"], sim["summary"]["max_x"]
+    """
     core = require_core()
     if (start is None) != (point is None):
         raise ValueError("point: needs start" if start is None else "start: needs point")

@@ -3,7 +3,9 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
@@ -41,6 +43,12 @@ py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const Nfrc
   for (const auto& sp : r.continuation.special_points) special.rows.push_back(state_row(sp.lambda, sp.u));
   add_nfrc_summary(summary, c, hbm, r);
   py::dict out;
+  if (c.nfrc.stability.enabled()) {  // stability.csv: the Floquet exponents of every point
+    Table stability{stability_header(), {}};
+    for (size_t i = 0; i < r.recorded.size(); ++i)
+      for (auto& row : stability_rows(static_cast<int>(i), r.recorded[i])) stability.rows.push_back(std::move(row));
+    out["stability"] = stability.columns();
+  }
   out["branch"] = branch.columns();
   out["states"] = states.matrix();
   out["special_states"] = special.matrix();
@@ -49,19 +57,41 @@ py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const Nfrc
   return out;
 }
 
-py::dict frc(const CaseDefinition& c) {
+// progress(fraction, point, omega) after every accepted point (fraction of the omega range
+// covered); False stops the run ("stopped_by_callback"), an exception stops it and is re-raised.
+py::dict frc(const CaseDefinition& c, const py::object& progress) {
   const auto t0 = Clock::now();
   HarmonicBalance hbm = make_system(c);
   json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}};
   NfrcResult r;
-  bool interrupted = false;
+  bool interrupted = false, stopped_by_callback = false, bad_answer = false;
+  std::optional<py::error_already_set> callback_error;
+  const double span = c.nfrc.omega_end - c.nfrc.omega_start;
   {
     GilRelease release;
-    r = compute_nfrc(hbm, c.nfrc, c.outputs, [&](const BranchPoint&, const RecordedPoint&, int) { return !(interrupted = python_interrupted()); });
+    r = compute_nfrc(hbm, c.nfrc, c.outputs, [&](const BranchPoint& p, const RecordedPoint&, int index) {
+      if ((interrupted = python_interrupted())) return false;
+      if (progress.is_none()) return true;
+      py::gil_scoped_acquire acquire;
+      try {
+        const double fraction = std::clamp((p.lambda - c.nfrc.omega_start) / span, 0.0, 1.0);
+        const py::object answer = progress(fraction, index, p.lambda);
+        stopped_by_callback = !answer.is_none() && !answer.cast<bool>();
+      } catch (py::error_already_set& e) {
+        callback_error.emplace(std::move(e));
+      } catch (const py::cast_error&) {
+        bad_answer = true;
+      }
+      return !stopped_by_callback && !callback_error && !bad_answer;
+    });
   }
   if (interrupted) throw py::error_already_set();
+  if (callback_error) throw *callback_error;
+  if (bad_answer) throw py::value_error("progress: must return None, True or False");
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", r.continuation.summary.wall_s}};
-  return branch_result(c, hbm, r, summary);
+  py::dict out = branch_result(c, hbm, r, summary);
+  if (stopped_by_callback) out["summary"]["stop_reason"] = "stopped_by_callback";
+  return out;
 }
 
 // `hbtrack track` from a limit point (x, omega) of an NFRC of the same case.
@@ -185,7 +215,8 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
 }  // namespace
 
 void bind_analysis(py::module_& m) {
-  m.def("frc", &frc, py::arg("case"), "NFRC with stability: {branch, states, special_points, special_states, summary}");
+  m.def("frc", &frc, py::arg("case"), py::arg("progress") = py::none(),
+        "NFRC with stability: {branch, states, stability, special_points, special_states, summary}");
   m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
         py::arg("parameter_max"), py::arg("method") = "bordered", "limit point (x, omega) tracked in param");
   m.def("isolas", &isolas, py::arg("case"), py::arg("curves"), py::arg("param"), py::arg("at"),

@@ -12,9 +12,10 @@ namespace hbtrack::python {
 namespace {
 
 // boundary: per node its three full-model rows (x, y, z); frames: per node the 3x3 matrix whose
-// columns are its local r, t, z axes (identity when omitted).
-py::dict reduce(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, const std::vector<std::array<int, 3>>& boundary,
-                const std::vector<Eigen::MatrixXd>& frames, int modes) {
+// columns are its local r, t, z axes (identity when omitted). M and K arrive as scipy.sparse
+// (compressed columns) so that a finite-element model is never densified.
+py::dict reduce_sparse(const Eigen::SparseMatrix<double>& mass, const Eigen::SparseMatrix<double>& stiffness,
+                       const std::vector<std::array<int, 3>>& boundary, const std::vector<Eigen::MatrixXd>& frames, int modes) {
   if (!frames.empty() && frames.size() != boundary.size())
     throw std::invalid_argument("frames: one per boundary node (" + std::to_string(boundary.size()) + "), got " + std::to_string(frames.size()));
   std::vector<CraigBamptonBoundaryNode> nodes(boundary.size());
@@ -24,11 +25,10 @@ py::dict reduce(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, c
     if (frames[k].rows() != 3 || frames[k].cols() != 3) throw std::invalid_argument("frames[" + std::to_string(k) + "]: expected 3x3");
     nodes[k].frame = frames[k];
   }
-  const Eigen::SparseMatrix<double> m = mass.sparseView(), k = stiffness.sparseView();
   CraigBamptonModel r;
   {
     GilRelease release;
-    r = craig_bampton(m, k, nodes, modes);
+    r = craig_bampton(mass, stiffness, nodes, modes);
   }
   py::dict out;
   out["mass"] = r.mass;
@@ -39,6 +39,13 @@ py::dict reduce(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, c
   return out;
 }
 
+// The same from dense numpy arrays (pybind11's sparse caster imports scipy: numpy-only users
+// come through here).
+py::dict reduce(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, const std::vector<std::array<int, 3>>& boundary,
+                const std::vector<Eigen::MatrixXd>& frames, int modes) {
+  return reduce_sparse(mass.sparseView(), stiffness.sparseView(), boundary, frames, modes);
+}
+
 }  // namespace
 
 void bind_model(py::module_& m) {
@@ -47,6 +54,8 @@ void bind_model(py::module_& m) {
   m.def("reduce", &reduce, py::arg("mass"), py::arg("stiffness"), py::arg("boundary"),
         py::arg("frames") = std::vector<Eigen::MatrixXd>{},
         py::arg("modes") = 12, "Craig-Bampton reduction onto boundary node translations and fixed-interface modes");
+  m.def("reduce_sparse", &reduce_sparse, py::arg("mass"), py::arg("stiffness"), py::arg("boundary"),
+        py::arg("frames") = std::vector<Eigen::MatrixXd>{}, py::arg("modes") = 12, "reduce, from scipy.sparse M and K");
   m.def(
       "normal_modes",
       [](const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness) {

@@ -93,9 +93,8 @@ BackbonePoint backbone_point(HarmonicBalance& hbm, const VectorXd& u, double lam
   const int h = hbm.basis().harmonics();
   for (const OutputDof& o : outputs) {
     const VectorXd c = dof_harmonics(full, hbm.model().dofs(), h, o.dof);
-    VectorXd magnitudes(h + 1);
-    magnitudes(0) = std::abs(c(0)) / 2;
-    for (int j = 1; j <= h; ++j) magnitudes(j) = std::hypot(c(2 * j - 1), c(2 * j));
+    VectorXd magnitudes(h + 1);  // as branch.csv of frc: h0 the (signed) mean
+    for (int j = 0; j <= h; ++j) magnitudes(j) = harmonic_magnitude(c, j);
     p.harmonics.push_back(magnitudes);
   }
   return p;

@@ -92,6 +92,8 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
           const FloquetResult& f = monitor.result_for(p);
           rec.stable = f.stable ? 1 : 0;
           rec.max_floquet_real = f.max_real;
+          rec.floquet_exponents = f.exponents;
+          rec.floquet_multipliers = f.multipliers;
           rec.stability_method = f.method;
         }
         result.recorded.push_back(std::move(rec));

@@ -31,6 +31,15 @@ std::string TipContact::smoothness_limit() const {
   return "stick-slip transitions make the friction force non-smooth";
 }
 
+int TipContact::switching_surfaces(const std::vector<double>& p) const {
+  return kind_ == ContactLawKind::penalty || p[kWidth] <= 0.0 ? 1 : 0;
+}
+
+void TipContact::switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd&, const std::vector<double>& p,
+                                  double* out) const {
+  out[0] = x(0, kR) - p[kClearance];
+}
+
 void TipContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& p,
                           ElementResponse& out, bool want_property_derivatives) const {
   if (friction_ == TipFriction::stick_slip) {

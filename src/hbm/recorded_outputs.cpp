@@ -1,5 +1,6 @@
 #include "hbtrack/hbm/recorded_outputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -29,7 +30,19 @@ OutputValues output_values(const Eigen::VectorXd& full, int dofs, int harmonics,
   out.max = x.maxCoeff();
   out.min = x.minCoeff();
   out.h1 = harmonics >= 1 ? std::hypot(full(dofs + dof), full(2 * dofs + dof)) : 0.0;
+  out.harmonics = dof_harmonics(full, dofs, harmonics, dof);
   return out;
+}
+
+double harmonic_magnitude(const Eigen::VectorXd& harmonics, int k) {
+  return k == 0 ? 0.5 * harmonics(0) : std::hypot(harmonics(2 * k - 1), harmonics(2 * k));
+}
+
+double harmonic_phase(const Eigen::VectorXd& harmonics, int k) {
+  double largest = std::abs(0.5 * harmonics(0));
+  for (int j = 1; 2 * j < harmonics.size(); ++j) largest = std::max(largest, harmonic_magnitude(harmonics, j));
+  if (harmonic_magnitude(harmonics, k) <= 1e-12 * largest) return 0.0;
+  return std::atan2(harmonics(2 * k), harmonics(2 * k - 1));
 }
 
 }  // namespace hbtrack

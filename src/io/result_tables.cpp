@@ -1,6 +1,9 @@
 #include "hbtrack/io/result_tables.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <complex>
 #include <nlohmann/json.hpp>
 
 namespace hbtrack {
@@ -54,17 +57,36 @@ void add_outputs(json& j, const CaseDefinition& c, const RecordedPoint& p) {
 }
 
 namespace {
+std::string column_name(const std::string& prefix, int k, const std::string& output) {
+  std::string column = prefix;  // appended, not operator+: GCC 12's false -Wrestrict at -O3
+  if (k >= 0) column += std::to_string(k);
+  column += "_";
+  column += output;
+  return column;
+}
+
+// The first columns (max_, min_, h1_ per output) are the historical ones that other tools read by
+// position; the other harmonics' magnitudes and all phases come after them.
 void add_output_columns(std::vector<std::string>& header, const CaseDefinition& c) {
   for (const auto& o : c.outputs)
-    for (const char* kind : {"max_", "min_", "h1_"}) {
-      std::string column = kind;  // appended, not operator+: GCC 12's false -Wrestrict at -O3
-      column += o.name;
-      header.push_back(column);
-    }
+    for (const char* kind : {"max", "min", "h1"}) header.push_back(column_name(kind, -1, o.name));
+  const int harmonics = c.harmonic_balance.harmonics;
+  for (const auto& o : c.outputs) {
+    for (int k = 0; k <= harmonics; ++k)
+      if (k != 1) header.push_back(column_name("h", k, o.name));
+    for (int k = 1; k <= harmonics; ++k) header.push_back(column_name("phase", k, o.name));
+  }
 }
 
 void add_output_values(std::vector<double>& row, const RecordedPoint& p) {
   for (const auto& v : p.outputs) row.insert(row.end(), {v.max, v.min, v.h1});
+  for (const auto& v : p.outputs) {
+    if (v.harmonics.size() == 0) continue;  // not recorded: the row comes out short, CsvAppender refuses it
+    const int harmonics = static_cast<int>(v.harmonics.size() - 1) / 2;
+    for (int k = 0; k <= harmonics; ++k)
+      if (k != 1) row.push_back(harmonic_magnitude(v.harmonics, k));
+    for (int k = 1; k <= harmonics; ++k) row.push_back(harmonic_phase(v.harmonics, k));
+  }
 }
 }  // namespace
 
@@ -80,6 +102,42 @@ std::vector<double> branch_row(const RecordedPoint& p) {
   if (p.stable >= 0) row.push_back(p.stable);
   add_output_values(row, p);
   return row;
+}
+
+namespace {
+// The methods that decide a point's stability: the keys of summary.json's stability_methods, and
+// in this order the codes of stability.csv's `method` column (its cells are numbers).
+constexpr std::array<const char*, 3> kStabilityMethods{"hill", "monodromy", "shooting"};
+
+double stability_method_code(const std::string& method) {
+  for (size_t i = 0; i < kStabilityMethods.size(); ++i)
+    if (method == kStabilityMethods[i]) return static_cast<double>(i);
+  return -1;  // not computed
+}
+
+json method_counts() {
+  json counts = json::object();
+  for (const char* method : kStabilityMethods) counts[method] = 0;
+  return counts;
+}
+}  // namespace
+
+std::vector<std::string> stability_header() {
+  return {"point", "omega", "k", "exponent_real", "exponent_imag", "multiplier_real", "multiplier_imag", "method"};
+}
+
+std::vector<std::vector<double>> stability_rows(int point, const RecordedPoint& p) {
+  std::vector<Eigen::Index> order(static_cast<size_t>(p.floquet_exponents.size()));
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<Eigen::Index>(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](Eigen::Index a, Eigen::Index b) { return p.floquet_exponents(a).real() > p.floquet_exponents(b).real(); });
+  std::vector<std::vector<double>> rows;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const std::complex<double> exponent = p.floquet_exponents(order[k]), multiplier = p.floquet_multipliers(order[k]);
+    rows.push_back({static_cast<double>(point), p.omega, static_cast<double>(k), exponent.real(), exponent.imag(),
+                    multiplier.real(), multiplier.imag(), stability_method_code(p.stability_method)});
+  }
+  return rows;
 }
 
 std::vector<std::string> state_header(int unknowns) {
@@ -129,10 +187,10 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   // What decided the stability of the rows and of the PD/NS points (Hill, or the monodromy
   // matrix where Hill is unreliable: see stability.cross_check).
   if (c.nfrc.stability.enabled()) {
-    json decided = {{"hill", 0}, {"monodromy", 0}};
+    json decided = method_counts();
     for (const RecordedPoint& p : r.recorded)
       if (!p.stability_method.empty()) decided[p.stability_method] = decided[p.stability_method].get<int>() + 1;
-    json special_decided = {{"hill", 0}, {"monodromy", 0}};
+    json special_decided = method_counts();
     for (const auto& sp : r.continuation.special_points)
       if (!sp.decided_by.empty()) special_decided[sp.decided_by] = special_decided[sp.decided_by].get<int>() + 1;
     summary["stability_methods"] = {{"points", decided}, {"special_points", special_decided}};
@@ -222,7 +280,7 @@ void add_simulation_summary(json& summary, const CaseDefinition& c, const Steady
   summary["force_evaluations"] = r.statistics.force_evaluations;
   summary["newton_iterations"] = r.statistics.newton_iterations;
   RecordedPoint last_period;
-  for (const PeriodSummary& s : r.outputs) last_period.outputs.push_back({s.max, s.min, s.first_harmonic()});
+  for (const PeriodSummary& s : r.outputs) last_period.outputs.push_back({s.max, s.min, s.first_harmonic(), s.harmonics});
   add_outputs(summary, c, last_period);
   for (size_t i = 0; i < c.outputs.size() && i < r.outputs.size(); ++i) {
     const Eigen::VectorXd& h = r.outputs[i].harmonics;

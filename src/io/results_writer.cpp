@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -24,7 +25,8 @@ CsvAppender::CsvAppender(const std::string& path, size_t columns) : path_(path),
   if (!out_) throw std::runtime_error(path + ": cannot open for appending");
 }
 
-CsvAppender CsvAppender::continuing(const std::string& path, const std::vector<std::string>& header, int rows) {
+template <class Keep>
+CsvAppender CsvAppender::keep_leading_rows(const std::string& path, const std::vector<std::string>& header, Keep keep, int expected) {
   std::string expected_header;
   for (const std::string& h : header) {
     if (!expected_header.empty()) expected_header += ',';
@@ -36,16 +38,25 @@ CsvAppender CsvAppender::continuing(const std::string& path, const std::vector<s
   if (!std::getline(in, line) || line != expected_header) throw std::runtime_error(path + ":1: header differs from this case's columns");
   kept = line + '\n';
   int found = 0;
-  while (found < rows && std::getline(in, line)) {
+  while (std::getline(in, line) && keep(line, found)) {
     kept += line;
     kept += '\n';
     ++found;
   }
-  if (found < rows)
-    throw std::runtime_error(path + ": holds " + std::to_string(found) + " rows, the checkpoint " + std::to_string(rows));
+  if (found < expected)
+    throw std::runtime_error(path + ": holds " + std::to_string(found) + " rows, the checkpoint " + std::to_string(expected));
   in.close();
   write_file_atomically(path, kept);
   return CsvAppender(path, header.size());
+}
+
+CsvAppender CsvAppender::continuing(const std::string& path, const std::vector<std::string>& header, int rows) {
+  return keep_leading_rows(path, header, [rows](const std::string&, int found) { return found < rows; }, rows);
+}
+
+CsvAppender CsvAppender::continuing_points(const std::string& path, const std::vector<std::string>& header, int points) {
+  // Rows are in point order: keep them up to the first of a point beyond the checkpoint.
+  return keep_leading_rows(path, header, [points](const std::string& line, int) { return std::atof(line.c_str()) < points; }, 0);
 }
 
 void CsvAppender::append(const std::vector<double>& row) {

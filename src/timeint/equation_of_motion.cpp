@@ -35,6 +35,8 @@ EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementLi
     slot.history_offset = history_size_so_far;
     slot.history_count = element->history_dependent() ? element->history_state_size() : 0;
     history_size_so_far += slot.history_count;
+    slot.switching = element->switching_surfaces(slot.property_values);
+    switching_count_ += slot.switching;
     elements_.push_back(std::move(slot));
   }
   history_ = Eigen::VectorXd::Zero(history_size_so_far);
@@ -124,6 +126,17 @@ void EquationOfMotion::nonlinear_force(double time, const Eigen::VectorXd& x, co
         if (df_dv && r.dforce_dv.size() > 0) (*df_dv)(row, col) += r.dforce_dv(0, i + k * j);
       }
     }
+  }
+}
+
+void EquationOfMotion::switching_values(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+  out.resize(switching_count_);
+  int next = 0;
+  for (ElementSlot& s : elements_) {
+    if (s.switching == 0) continue;
+    gather(s, x, v);
+    s.element->switching_values(s.x, s.v, s.property_values, out.data() + next);
+    next += s.switching;
   }
 }
 

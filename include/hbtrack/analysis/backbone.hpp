@@ -53,7 +53,7 @@ struct BackbonePoint {
   double xi = 0;             // the EPMC damping coefficient (1/s)
   double damping_ratio = 0;  // xi / (2 omega)
   RecordedPoint recorded;    // the outputs of x = a psi
-  std::vector<Eigen::VectorXd> harmonics;  // per output: |harmonic j|, j = 0..H (0: |a0/2|)
+  std::vector<Eigen::VectorXd> harmonics;  // per output: harmonic_magnitude j = 0..H (0: the mean a0/2)
 };
 
 struct BackboneResult {

@@ -59,6 +59,8 @@ struct RecordedPoint {
   std::vector<OutputValues> outputs;  // one per OutputDof
   int stable = -1;                    // 1 stable, 0 unstable, -1 not computed
   double max_floquet_real = 0;        // largest real part of the Floquet exponents (1/s)
+  // The Floquet exponents (1/s) and multipliers that decided `stable` (empty when not computed).
+  Eigen::VectorXcd floquet_exponents, floquet_multipliers;
   std::string stability_method;       // what decided `stable`: hill | monodromy ("" not computed)
 };
 

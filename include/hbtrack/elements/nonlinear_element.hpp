@@ -91,6 +91,12 @@ class NonlinearElement {
   // Why the force is not twice continuously differentiable ("" when it is): limit-point tracking
   // differentiates the Jacobian and cannot follow a fold through such a law.
   virtual std::string smoothness_limit() const { return ""; }
+  // Surfaces where the law's tangent jumps (a C0 law's corner), as signed functions of one
+  // sample (x, v: 1 x k) that change sign there, so that time stepping can stop on them:
+  // switching_surfaces() values written to `out`. None (0) for a law with a continuous tangent.
+  virtual int switching_surfaces(const std::vector<double>& /*property_values*/) const { return 0; }
+  virtual void switching_values(const Eigen::MatrixXd& /*x*/, const Eigen::MatrixXd& /*v*/,
+                                const std::vector<double>& /*property_values*/, double* /*out*/) const {}
   // Evaluates forces and derivatives. x, v: N x k samples; property_values: one per property.
   virtual void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                         const std::vector<double>& property_values, ElementResponse& out,

@@ -21,6 +21,17 @@ class ScalarElement : public NonlinearElement {
     double df_dp[4] = {0, 0, 0, 0};
   };
   virtual ScalarLaw law(double d, double d_dot, const double* properties) const = 0;
+  // Over a period of N samples (the AFT), a law with a corner is replaced by its mean over one
+  // sample's width, the displacement taken linear across it: with h = (pi / N) dd/dtau,
+  //   f(d, h) = (F(d + h) - F(d - h)) / 2h,  F' = the law.
+  // The sampled force then changes smoothly (C1) as a sample enters contact, instead of with the
+  // jump of tangent that makes the branch a saw-tooth of folds narrower than a sample. It tends
+  // to the law as N grows (the error is O(1/N^2), that of sampling itself) and is the law itself
+  // at a turning point (h = 0). df_dv is d f / d h here. False: the law has no corner.
+  virtual bool sample_mean_law(double /*d*/, double /*h*/, const double* /*properties*/, ScalarLaw& /*out*/) const {
+    return false;
+  }
+  virtual bool averages_over_samples(const std::vector<double>& /*properties*/) const { return false; }
 };
 
 // f = k3 d^3. Properties: cubic_stiffness.
@@ -43,12 +54,21 @@ class GapContact final : public ScalarElement {
       : kind_(kind), type_name_(std::move(type_name)) {}
   std::string type() const override { return type_name_; }
   const std::vector<std::string>& property_names() const override;
-  bool depends_on_velocity() const override { return false; }
+  // The penalty law's sample mean (sample_mean_law) depends on the velocity.
+  bool depends_on_velocity() const override { return kind_ == ContactLawKind::penalty; }
   std::string smoothness_limit() const override { return hbtrack::smoothness_limit(kind_); }
+  // The penalty law's corner d = gap (also the polynomial law given no width).
+  int switching_surfaces(const std::vector<double>& property_values) const override;
+  void switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, const std::vector<double>& property_values,
+                        double* out) const override;
   ContactLawKind law_kind() const { return kind_; }
 
  protected:
   ScalarLaw law(double d, double, const double* p) const override;
+  bool sample_mean_law(double d, double h, const double* p, ScalarLaw& out) const override;
+  bool averages_over_samples(const std::vector<double>& property_values) const override {
+    return switching_surfaces(property_values) > 0;
+  }
 
  private:
   ContactLawKind kind_;

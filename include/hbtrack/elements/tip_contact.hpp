@@ -33,6 +33,10 @@ class TipContact final : public NonlinearElement {
   bool depends_on_omega() const override { return true; }
   bool history_dependent() const override { return friction_ == TipFriction::stick_slip; }
   std::string smoothness_limit() const override;
+  // The penalty law's corner: the radial displacement at the clearance.
+  int switching_surfaces(const std::vector<double>& property_values) const override;
+  void switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, const std::vector<double>& property_values,
+                        double* out) const override;
   void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                 const std::vector<double>& property_values, ElementResponse& out,
                 bool want_property_derivatives) const override;

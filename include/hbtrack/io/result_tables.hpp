@@ -24,9 +24,15 @@ void add_continuation_counts(nlohmann::json& summary, const ContinuationSummary&
 // Adds max_NAME, min_NAME, h1_NAME of a recorded point to a JSON object.
 void add_outputs(nlohmann::json& j, const CaseDefinition& c, const RecordedPoint& p);
 
-// branch.csv of an NFRC: omega, stable (when computed), max_/min_/h1_NAME per output.
+// branch.csv of an NFRC: omega, stable (when computed), max_/min_/h1_NAME per output; then, per
+// output, h0_NAME (the mean), h2_NAME .. hH_NAME and phase1_NAME .. phaseH_NAME (docs/outputs.md).
 std::vector<std::string> branch_header(const CaseDefinition& c);
 std::vector<double> branch_row(const RecordedPoint& p);
+// stability.csv: one row per Floquet exponent of each point (point = row of branch.csv), the
+// exponents in decreasing real part, so k = 0 is the one that decides `stable`; `method` the
+// code of what decided the point: 0 Hill, 1 monodromy, 2 shooting (docs/outputs.md).
+std::vector<std::string> stability_header();
+std::vector<std::vector<double>> stability_rows(int point, const RecordedPoint& p);
 // states.csv: omega, x0, x1, ...
 std::vector<std::string> state_header(int unknowns);
 std::vector<double> state_row(double omega, const Eigen::VectorXd& x);
@@ -35,7 +41,8 @@ std::vector<double> state_row(double omega, const Eigen::VectorXd& x);
 // used, outputs and special_points (each with its own outputs and the options' parameters).
 void add_nfrc_summary(nlohmann::json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r);
 
-// branch.csv of a tracking curve: leg, omega, the parameter, max_/min_/h1_NAME per output.
+// branch.csv of a tracking curve: leg, omega, the parameter, max_/min_/h1_NAME per output, then
+// the harmonics' columns as branch_header.
 std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter);
 std::vector<double> tracking_row(const FoldCurvePoint& p);
 // What `track` adds to summary.json: stop_reason, closed, legs, counts, special_points (extrema).

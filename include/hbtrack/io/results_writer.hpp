@@ -16,11 +16,17 @@ class CsvAppender {
   // Appends to an existing file of a stopped run: checks its header, keeps its first `rows`
   // rows and drops any after them (written after the checkpoint the run resumes from).
   static CsvAppender continuing(const std::string& path, const std::vector<std::string>& header, int rows);
+  // The same for a table of several rows per point whose first column is the point's index:
+  // keeps the rows of points 0 .. points-1.
+  static CsvAppender continuing_points(const std::string& path, const std::vector<std::string>& header, int points);
   void append(const std::vector<double>& row);
   const std::string& path() const { return path_; }
 
  private:
   CsvAppender(const std::string& path, size_t columns);  // opens path for appending
+  // Keeps the header and the leading rows for which keep(line, rows kept so far) holds.
+  template <class Keep>
+  static CsvAppender keep_leading_rows(const std::string& path, const std::vector<std::string>& header, Keep keep, int expected);
   std::string path_;
   std::ofstream out_;
   size_t columns_;

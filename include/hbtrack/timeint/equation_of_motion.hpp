@@ -42,6 +42,10 @@ class EquationOfMotion {
   // Not const: reuses per-element buffers (one instance per thread).
   void nonlinear_force(double time, const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& f,
                        Eigen::MatrixXd* df_dx = nullptr, Eigen::MatrixXd* df_dv = nullptr);
+  // The elements' switching surfaces (NonlinearElement::switching_values): where the tangents
+  // jump, so that a stepper can stop on them. `out` gets switching_count() values.
+  int switching_count() const { return switching_count_; }
+  void switching_values(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& out);
 
   // The history elements' internal variables, concatenated in element order.
   int history_size() const { return static_cast<int>(history_.size()); }
@@ -62,6 +66,7 @@ class EquationOfMotion {
     ElementResponse response;
     int history_offset = 0, history_count = 0;  // its internal variables within history_
     HistoryStep step;
+    int switching = 0;  // the element's switching surfaces
   };
   void gather(ElementSlot& slot, const Eigen::VectorXd& x, const Eigen::VectorXd& v) const;
   struct ScaledForce {
@@ -75,6 +80,7 @@ class EquationOfMotion {
   double omega_;
   Eigen::VectorXd history_;  // committed internal variables of the history elements
   double history_time_ = 0;  // when they were committed
+  int switching_count_ = 0;
 };
 
 }  // namespace hbtrack

@@ -1,0 +1,83 @@
+"""branch.csv's harmonic columns recomputed from states.csv on a two-dof case whose first output
+is condensed out of the unknowns (so the check goes through the expansion), and stability.csv
+against the branch's `stable`."""
+import os
+
+import numpy as np
+import pytest
+
+import hbtrack
+
+from conftest import ROOT, run_cli
+
+TWO_DOF = os.path.join(ROOT, "examples", "two_dof_contact.toml")
+
+
+@pytest.fixture(scope="module")
+def two_dof(results_dir):
+    folder = str(results_dir / "two_dof")
+    run_cli("frc", TWO_DOF, "-o", folder)
+    return hbtrack.load_case(TWO_DOF), hbtrack.read_result(folder)
+
+
+def test_harmonic_columns_are_those_of_the_states(two_dof):
+    case, result = two_dof
+    branch, states = result["branch"], result["states"]
+    harmonics = case.harmonic_balance.harmonics
+    assert list(branch)[:8] == ["omega", "stable", "max_x1", "min_x1", "h1_x1", "max_x2", "min_x2", "h1_x2"]
+    for i, state in enumerate(states):
+        coefficients = hbtrack.output_harmonics(case, state)
+        # x2, the contact's dof, is the only unknown left by the condensation: its coefficients
+        # are the state's own [a0, a1, b1, ...] (the same doubles, so exactly).
+        np.testing.assert_array_equal(coefficients["x2"], state[1:])
+        for name, c in coefficients.items():
+            magnitudes = np.concatenate([[0.5 * c[0]], np.hypot(c[1::2], c[2::2])])
+            # The same expansion of the same 17-digit state: agreement to round-off, 1e-13 of the
+            # largest harmonic (the expansion sums over the condensed dofs).
+            tolerance = 1e-13 * np.abs(magnitudes).max()
+            for k in range(harmonics + 1):
+                assert branch[f"h{k}_{name}"][i] == pytest.approx(magnitudes[k], abs=tolerance), (i, name, k)
+            for k in range(1, harmonics + 1):
+                phase = branch[f"phase{k}_{name}"][i]
+                if magnitudes[k] <= 1e-11 * np.abs(magnitudes).max():
+                    continue  # round-off harmonics: the phase is reported as 0 (docs/outputs.md)
+                # a_k cos + b_k sin = h_k cos(k w t - phase_k): at t = 0 and at k w t = pi/2.
+                assert magnitudes[k] * np.cos(phase) == pytest.approx(c[2 * k - 1], abs=10 * tolerance)
+                assert magnitudes[k] * np.sin(phase) == pytest.approx(c[2 * k], abs=10 * tolerance)
+
+
+def test_stability_table_decides_stable(two_dof):
+    _, result = two_dof
+    table, branch = result["stability"], result["branch"]
+    points = table["point"].astype(int)
+    assert set(points) == set(range(len(branch["omega"])))
+    for i in range(len(branch["omega"])):
+        rows = points == i
+        real = table["exponent_real"][rows]
+        assert table["k"][rows][0] == 0 and real[0] == real.max()
+        assert branch["stable"][i] == float(real[0] <= 1e-9 * branch["omega"][i])  # finish_floquet's rule
+    assert 0 < branch["stable"].sum() < len(branch["stable"])  # the contact fold is unstable between its LPs
+    # The `method` code of each point (0 hill, 1 monodromy, 2 shooting) agrees with summary.json's
+    # count of what decided the points, one method per point (a C0 contact law on 2 dofs: the
+    # cross-check, not Hill, decides most of them).
+    codes = {"hill": 0, "monodromy": 1, "shooting": 2}
+    per_point = []
+    for i in range(len(branch["omega"])):
+        methods = set(table["method"][points == i])
+        assert len(methods) == 1, (i, methods)
+        per_point.append(methods.pop())
+    decided = result["summary"]["stability_methods"]["points"]
+    assert set(decided) == set(codes)
+    for name, code in codes.items():
+        assert per_point.count(code) == decided[name], name
+    assert per_point.count(codes["hill"]) < len(per_point)
+
+
+def test_api_returns_the_stability_table_of_the_cli(duffing_frc, duffing_frc_cli):
+    cli = duffing_frc_cli["stability"]
+    assert list(duffing_frc["stability"]) == list(cli)
+    # As the branch columns (test_same_as_cli): 1e-12 relative, and round-off of the largest
+    # entry for the parts that are zero up to round-off (imaginary parts of real exponents).
+    for name, values in cli.items():
+        np.testing.assert_allclose(duffing_frc["stability"][name], values, rtol=1e-12,
+                                   atol=1e-12 * np.abs(values).max(), err_msg=name)
