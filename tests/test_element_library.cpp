@@ -121,8 +121,8 @@ fs::path write_case(const std::string& name, const std::string& text) {
   return p;
 }
 
-std::string two_dof_case(const std::string& elements) {
-  return "[model]\ndofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 1.0]]\nK = [[2.0, -1.0], [-1.0, 1.0]]\n"
+std::string three_dof_case(const std::string& elements) {
+  return "[model]\ndofs = [\"a\", \"b\", \"c\"]\nM = {diagonal = [1.0, 1.0, 1.0]}\nK = [[2.0, -1.0, 0.0], [-1.0, 1.0, 0.0], [0.0, 0.0, 1.0]]\n"
          "[damping]\nrayleigh = [0.0, 0.01]\n[[forcing]]\ndof = \"a\"\ncos = 0.1\n[parameters]\nk3 = 0.5\n" +
          elements + "[continuation]\nomega_start = 0.5\nomega_end = 1.5\n";
 }
@@ -140,17 +140,7 @@ TEST(ElementLibraryCase, ExampleLoadsAndItsJacobianMatchesFiniteDifferences) {
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   VectorXd x = hbm.linear_solution(0.9) * 20.0;
   for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += 0.01 * std::cos(3.0 * static_cast<double>(i));
-  VectorXd r;
-  MatrixXd jacobian;
-  hbm.evaluate(x, 0.9, r, &jacobian, nullptr);
-  const MatrixXd fd = test::fd_jacobian(
-      [&](const VectorXd& y) {
-        VectorXd ry;
-        hbm.evaluate(y, 0.9, ry, nullptr, nullptr);
-        return ry;
-      },
-      x, 1e-6);
-  EXPECT_LT(test::relative_error(jacobian, fd), 1e-6);
+  EXPECT_LT(test::residual_jacobian_error(hbm, x, 0.9, 1e-6), 1e-6);
   // Tracking a coefficient: d r / d k3 against a difference in the parameter.
   const int k3 = c.parameters.find("k3");
   const VectorXd analytic = hbm.parameter_derivative(x, 0.9, k3);
@@ -188,9 +178,25 @@ TEST(ElementLibraryCase, BadInputIsOneClearLine) {
        "elements[0].limit_force: must be >= 0"},
       {"jenkins_missing_stiffness", "[[elements]]\ntype = \"elastic_dry_friction\"\ndofs = [\"a\"]\nlimit_force = 1.0\n",
        "elements[0].stiffness: missing"},
+      {"tip_friction", "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = 0.2\nradius = 0.3\nfriction = \"sticky\"\n",
+       "elements[0].friction: must be \"sliding\" or \"stick_slip\""},
+      {"tip_stick_slip_stiffness", "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = 0.2\nradius = 0.3\nfriction = \"stick_slip\"\n",
+       "elements[0].tangential_stiffness: missing (required for tip_contact)"},
+      {"tip_sliding_stiffness", "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = 0.2\nradius = 0.3\ntangential_stiffness = 5.0\n",
+       "elements[0].tangential_stiffness: unknown key"},
+      {"tip_sliding_engine_order", "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = 0.2\nradius = 0.3\nengine_order = 0.0\n",
+       "elements[0].engine_order: must be nonzero"},
+      {"iwan_chi", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -1.0\nbeta = 0.1\n",
+       "elements[0].chi: must be > -1"},
+      {"iwan_beta", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -0.5\nbeta = -0.1\n",
+       "elements[0].beta: must be >= 0"},
+      {"iwan_limit", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 0.0\nstiffness = 3.0\nchi = -0.5\nbeta = 0.1\n",
+       "elements[0].limit_force: must be > 0"},
+      {"iwan_sliders", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -0.5\nbeta = 0.1\nsliders = 1.5\n",
+       "elements[0].sliders: expected an integer"},
   };
   for (const Bad& bad : cases) {
-    const fs::path p = write_case(bad.name, two_dof_case(bad.elements));
+    const fs::path p = write_case(bad.name, three_dof_case(bad.elements));
     try {
       load_case(p.string());
       ADD_FAILURE() << bad.name << ": no error";

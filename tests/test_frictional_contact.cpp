@@ -103,7 +103,7 @@ TEST(FrictionalContact, DerivativesMatchFiniteDifferences) {
       const MatrixXd x = motion(n, an, at);
       ElementResponse r;
       e->evaluate(x, x, 1.0, kProps, r, true);
-      const MatrixXd dense = MatrixXd(r.history_dforce_dx);
+      const MatrixXd dense = history_sensitivity_matrix(r, n, 2);
       const double h = 1e-7;
       for (int j = 0; j < 2; ++j)
         for (int s = 0; s < n; ++s) {
@@ -118,14 +118,8 @@ TEST(FrictionalContact, DerivativesMatchFiniteDifferences) {
                 << "an " << an << " at " << at << " df" << i << "/dx" << j << "(" << s << ")";
         }
       for (int p = 0; p < 4; ++p) {
-        auto plus = kProps, minus = kProps;
         const double hp = 1e-7 * std::max(1.0, std::abs(kProps[static_cast<size_t>(p)]));
-        plus[static_cast<size_t>(p)] += hp;
-        minus[static_cast<size_t>(p)] -= hp;
-        ElementResponse rp, rm;
-        e->evaluate(x, x, 1.0, plus, rp, false);
-        e->evaluate(x, x, 1.0, minus, rm, false);
-        const MatrixXd fd = (rp.force - rm.force) / (2 * hp);
+        const MatrixXd fd = test::property_difference(*e, x, x, kProps, static_cast<size_t>(p), hp);
         EXPECT_LT((fd - r.dforce_dproperty.middleCols(2 * p, 2)).cwiseAbs().maxCoeff(), 1e-6 * std::max(1.0, fd.cwiseAbs().maxCoeff()))
             << "an " << an << " at " << at << " property " << e->property_names()[static_cast<size_t>(p)];
       }
@@ -151,16 +145,6 @@ TEST(FrictionalContact, AftJacobianMatchesFiniteDifferences) {
       x(2 * c) = an / (c * c) * std::cos(0.9 * c);
       x(2 * c + 1) = 0.2 / (c * c) * std::sin(1.7 * c + 0.3);
     }
-    VectorXd r;
-    MatrixXd jacobian;
-    hbm.evaluate(x, 1.1, r, &jacobian, nullptr);
-    const MatrixXd fd = test::fd_jacobian(
-        [&](const VectorXd& y) {
-          VectorXd ry;
-          hbm.evaluate(y, 1.1, ry, nullptr, nullptr);
-          return ry;
-        },
-        x, 1e-7);
-    EXPECT_LT(test::relative_error(jacobian, fd), 1e-6) << "normal amplitude " << an;
+    EXPECT_LT(test::residual_jacobian_error(hbm, x, 1.1, 1e-7), 1e-6) << "normal amplitude " << an;
   }
 }

@@ -9,7 +9,6 @@
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/elements/elastic_dry_friction.hpp"
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/timeint/equation_of_motion.hpp"
 #include "test_support.hpp"
 
 using namespace hbtrack;
@@ -123,14 +122,7 @@ TEST(Jenkins, PropertyDerivativesMatchFiniteDifferences) {
     ElementResponse r;
     e->evaluate(x, x, 1.0, {kStiffness, kLimit}, r, true);
     for (int p = 0; p < 2; ++p) {
-      std::vector<double> plus{kStiffness, kLimit}, minus = plus;
-      const double h = 1e-6 * plus[static_cast<size_t>(p)];
-      plus[static_cast<size_t>(p)] += h;
-      minus[static_cast<size_t>(p)] -= h;
-      ElementResponse rp, rm;
-      e->evaluate(x, x, 1.0, plus, rp, false);
-      e->evaluate(x, x, 1.0, minus, rm, false);
-      const MatrixXd fd = (rp.force - rm.force) / (2 * h);
+      const MatrixXd fd = test::property_difference(*e, x, x, {kStiffness, kLimit}, static_cast<size_t>(p), 1e-6 * (p == 0 ? kStiffness : kLimit));
       // Piecewise linear in the properties at a fixed stick-slip pattern: round-off / h only.
       EXPECT_LT((fd - r.dforce_dproperty.middleCols(2 * p, 2)).cwiseAbs().maxCoeff(), 1e-6 * std::max(1.0, fd.cwiseAbs().maxCoeff()))
           << "a = " << a << ", property " << p;
@@ -142,12 +134,7 @@ namespace {
 
 // Two masses between walls with a Jenkins element on x1 and one on x2 - x1.
 HarmonicBalance two_jenkins_model(int harmonics, int samples) {
-  StructuralModel m;
-  m.dof_names = {"x1", "x2"};
-  m.mass = MatrixXd::Identity(2, 2);
-  m.stiffness = (MatrixXd(2, 2) << 2.0, -1.0, -1.0, 2.0).finished();
-  m.damping = 0.02 * m.stiffness;
-  m.forcing.push_back({1, (VectorXd(2) << 0.0, 1.0).finished(), VectorXd::Zero(2)});
+  const StructuralModel m = test::chain_between_walls(2, 1);
   ElementList elements{jenkins({0}, VectorXd::Ones(1)), jenkins({1, 0}, (VectorXd(2) << 1.0, -1.0).finished())};
   HarmonicBalanceOptions options;
   options.harmonics = harmonics;
@@ -183,17 +170,7 @@ TEST(Jenkins, AftJacobianMatchesFiniteDifferencesInStickSlipAndMixed) {
   };
   for (const Regime& regime : {Regime{"stick", 0.01, 0.012}, Regime{"slip", 1.0, 0.8}, Regime{"mixed", 0.012, 0.8}}) {
     const VectorXd x = motion(harmonics, regime.a1, regime.a2);
-    VectorXd r;
-    MatrixXd jacobian;
-    hbm.evaluate(x, omega, r, &jacobian, nullptr);
-    const MatrixXd fd = test::fd_jacobian(
-        [&](const VectorXd& y) {
-          VectorXd ry;
-          hbm.evaluate(y, omega, ry, nullptr, nullptr);
-          return ry;
-        },
-        x, 1e-7);
-    EXPECT_LT(test::relative_error(jacobian, fd), 1e-6) << regime.name;
+    EXPECT_LT(test::residual_jacobian_error(hbm, x, omega, 1e-7), 1e-6) << regime.name;
     // The adjoint product used by limit-point tracking: J_nl^T w from the same sensitivities.
     const MatrixXd fd_nl = test::fd_jacobian([&](const VectorXd& y) { return hbm.nonlinear_forces(y, omega); }, x, 1e-7);
     const VectorXd w = VectorXd::LinSpaced(x.size(), -1.0, 2.0);
@@ -201,16 +178,6 @@ TEST(Jenkins, AftJacobianMatchesFiniteDifferencesInStickSlipAndMixed) {
     hbm.nonlinear_adjoint_products(x, omega, w, jt_w);
     EXPECT_LT(test::relative_error(jt_w, fd_nl.transpose() * w), 1e-6) << regime.name;
   }
-}
-
-TEST(Jenkins, PointwiseSolversRefuseTheHistoryElement) {
-  StructuralModel m;
-  m.dof_names = {"x1"};
-  m.mass = MatrixXd::Identity(1, 1);
-  m.stiffness = MatrixXd::Identity(1, 1);
-  m.damping = 0.02 * m.stiffness;
-  const ElementList elements{jenkins({0}, VectorXd::Ones(1))};
-  EXPECT_THROW({ const EquationOfMotion equation(m, elements, ParameterSet(), 1.0); }, std::invalid_argument);
 }
 
 TEST(Jenkins, NlvibThreeOscillatorFrequencyResponseReachesTheEnd) {

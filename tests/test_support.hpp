@@ -54,6 +54,52 @@ inline double relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b)
   return (a - b).cwiseAbs().maxCoeff() / std::max(b.cwiseAbs().maxCoeff(), 1e-300);
 }
 
+// n unit masses in a chain between two walls (unit springs to both walls and between the
+// masses, dofs x1..xn), damping 0.02 K, a unit cosine force on dof `forced`.
+inline StructuralModel chain_between_walls(int n, int forced) {
+  StructuralModel m;
+  for (int i = 1; i <= n; ++i) {
+    std::string name(1, 'x');  // appended, as in source_path: GCC 12 warns falsely on "x" + ...
+    name += std::to_string(i);
+    m.dof_names.push_back(name);
+  }
+  m.mass = Eigen::MatrixXd::Identity(n, n);
+  m.stiffness = 2.0 * Eigen::MatrixXd::Identity(n, n);
+  for (int i = 0; i + 1 < n; ++i) m.stiffness(i, i + 1) = m.stiffness(i + 1, i) = -1.0;
+  m.damping = 0.02 * m.stiffness;
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(n);
+  force(forced) = 1.0;
+  m.forcing.push_back({1, force, Eigen::VectorXd::Zero(n)});
+  return m;
+}
+
+// relative_error of the harmonic-balance Jacobian at (x, omega) against central differences of
+// the residual with step h.
+inline double residual_jacobian_error(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, double h) {
+  Eigen::VectorXd r;
+  Eigen::MatrixXd jacobian;
+  hbm.evaluate(x, omega, r, &jacobian, nullptr);
+  const auto residual = [&](const Eigen::VectorXd& y) {
+    Eigen::VectorXd ry;
+    hbm.evaluate(y, omega, ry, nullptr, nullptr);
+    return ry;
+  };
+  return relative_error(jacobian, fd_jacobian(residual, x, h));
+}
+
+// Central differences (N x k) of an element's forces at the samples x (velocities v, frequency
+// omega) with respect to its property p, with step h.
+inline Eigen::MatrixXd property_difference(const NonlinearElement& e, const Eigen::MatrixXd& x, const Eigen::MatrixXd& v,
+                                           const std::vector<double>& props, size_t p, double h, double omega = 1.0) {
+  std::vector<double> plus = props, minus = props;
+  plus[p] += h;
+  minus[p] -= h;
+  ElementResponse rp, rm;
+  e.evaluate(x, v, omega, plus, rp, false);
+  e.evaluate(x, v, omega, minus, rm, false);
+  return (rp.force - rm.force) / (2 * h);
+}
+
 // A 9-dof model: a 3-dof tip node [r, t, z] in contact with a casing (polynomial law, Lanczos,
 // friction), a cubic spring between dofs 3 and 4, tanh friction on dof 5, and three linear dofs
 // (6-8) that condensation eliminates.

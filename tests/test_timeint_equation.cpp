@@ -48,11 +48,11 @@ TEST(TimeIntegrationEquation, TangentsMatchFiniteDifferences) {
   v << 0.1, 0.4, -0.3, 0.2, 0.1, 0.03, 0.0, -0.1, 0.2;
   VectorXd force;
   MatrixXd df_dx, df_dv;
-  eom.nonlinear_force(x, v, force, &df_dx, &df_dv);
+  eom.nonlinear_force(0.0, x, v, force, &df_dx, &df_dv);
   ASSERT_GT(force.cwiseAbs().maxCoeff(), 0.0);
   const auto force_at = [&](const VectorXd& xs, const VectorXd& vs) {
     VectorXd fs;
-    eom.nonlinear_force(xs, vs, fs);
+    eom.nonlinear_force(0.0, xs, vs, fs);
     return fs;
   };
   const MatrixXd fd_x = test::fd_jacobian([&](const VectorXd& xs) { return force_at(xs, v); }, x, 1e-6);

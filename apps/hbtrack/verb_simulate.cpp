@@ -73,6 +73,7 @@ int run_simulate(const SimulateOptions& o) {
   std::optional<RecordedPoint> start_point;
   std::vector<Eigen::VectorXd> start_harmonics;  // of each output dof: the HBM orbit to compare with
   double omega = omega_flag.value_or(0.0);
+  Eigen::VectorXd orbit;  // harmonics of every dof of the start orbit
   if (!o.from.empty()) {
     const HbmState s = read_hbm_state(o.from + "/states.csv", point);
     if (s.x.size() != hbm.unknowns())
@@ -81,6 +82,7 @@ int run_simulate(const SimulateOptions& o) {
     if (!(s.omega > 0) || !std::isfinite(s.omega)) throw CaseError(o.from + "/states.csv: point " + o.point + ": omega must be > 0");
     if (!omega_flag) omega = s.omega;
     const Eigen::VectorXd full = hbm.expand(s.x, s.omega);
+    orbit = full;
     initial = state_from_harmonics(full, n, harmonics, s.omega);
     for (const OutputDof& out : c.outputs) start_harmonics.push_back(dof_harmonics(full, n, harmonics, out.dof));
     start_point = record_point(hbm, s.x, s.omega, c.outputs);
@@ -92,6 +94,9 @@ int run_simulate(const SimulateOptions& o) {
   } catch (const std::invalid_argument& e) {
     throw CaseError(c.path + ": " + e.what());
   }
+  // Friction sliders start where the HBM orbit's periodic steady state has them at t = 0.
+  if (orbit.size() > 0 && equation->history_size() > 0)
+    initial.history = equation->periodic_history(period_samples(orbit, n, harmonics, hbm.basis().samples()));
   std::unique_ptr<TimeIntegrator> integrator;
   json method_options;
   if (o.method == "newmark") {

@@ -103,6 +103,9 @@ BackbonePoint backbone_point(HarmonicBalance& hbm, const VectorXd& u, double lam
 BackboneResult compute_backbone(HarmonicBalance& hbm, const BackboneOptions& options, const std::vector<OutputDof>& outputs,
                                 const BackboneObserver& observer) {
   options.validate();
+  // The EPMC's negative damping is outside the harmonic balance: a DLFT contact would balance
+  // the wrong linear residual.
+  hbm.refuse_residual_elements("the backbone (EPMC)");
   const StructuralModel& model = hbm.model();
   if (hbm.retained_dofs() != model.dofs())
     throw std::invalid_argument("backbone: needs every dof as unknown (harmonic_balance.condensation = \"none\")");

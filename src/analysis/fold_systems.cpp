@@ -34,6 +34,8 @@ FoldSystem::FoldSystem(HarmonicBalance& hbm, int parameter, const FoldScales& sc
     : hbm_(hbm), parameter_(parameter), linear_in_parameter_(parameter == hbm.amplitude_parameter()), scales_(scales),
       q_(hbm.unknowns()) {
   if (parameter < 0 || parameter >= hbm.parameters().size()) throw std::invalid_argument("fold: parameter index out of range");
+  // The fold's second derivatives (adjoint products) need the element's own law.
+  hbm.refuse_residual_elements("limit-point tracking");
 }
 
 VectorXd FoldSystem::unknown_scale(const VectorXd& u) const {

@@ -33,24 +33,32 @@ bool all_laws_smooth(const HarmonicBalance& hbm) {
   return true;
 }
 
-bool any_history_element(const HarmonicBalance& hbm) {
+// A history element without a time-stepping form cannot enter the monodromy matrix.
+bool any_element_without_stepping(const HarmonicBalance& hbm) {
   for (const auto& e : hbm.elements())
-    if (e->history_dependent()) return true;
+    if (e->history_dependent() && e->history_state_size() == 0) return true;
   return false;
 }
 }  // namespace
 
 bool hill_needs_cross_check(const HarmonicBalance& hbm, const FloquetResult& hill, const StabilityOptions& options) {
   if (options.method != "hill" || options.cross_check == "off" || hbm.model().dofs() > kCrossCheckDofs) return false;
-  // The monodromy matrix integrates pointwise laws only: a hysteretic element stays with Hill.
-  if (any_history_element(hbm)) return false;
+  if (any_element_without_stepping(hbm)) return false;
+  // Hysteretic (history) elements are not smooth either, and there Hill is worse than slow:
+  // the harmonic balance linearises the hysteresis for periodic perturbations only (lambda = 0),
+  // which can miss most of the friction's damping of a perturbation (docs/stability.md).
   return !all_laws_smooth(hbm) || hill.centroid_spread > kSpreadLimit;
 }
 
 namespace {
 // The multipliers of the orbit the equation of motion really has (shooting from the HBM state),
-// or, where shooting does not converge, the linearisation along the HBM orbit itself.
+// or, where shooting does not converge or with history elements, the linearisation along the HBM
+// orbit itself.
 FloquetResult shooting_or_monodromy(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int steps) {
+  // Shooting's state has no room for the sliders of history elements; the monodromy matrix
+  // carries their variables along the HBM orbit (docs/stability.md).
+  for (const auto& e : hbm.elements())
+    if (e->history_dependent()) return monodromy_floquet(hbm, x, omega, steps);
   ShootingOutcome outcome;
   FloquetResult r = shooting_floquet(hbm, x, omega, steps, &outcome);
   return outcome.converged ? r : monodromy_floquet(hbm, x, omega, steps);

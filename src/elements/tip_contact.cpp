@@ -1,6 +1,7 @@
 #include "hbtrack/elements/tip_contact.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace hbtrack {
 
@@ -9,10 +10,25 @@ enum Property { kStiffness, kClearance, kWidth, kMu, kRadius, kEngineOrder, kRot
 enum Local { kR = 0, kTheta = 1, kZ = 2 };
 }  // namespace
 
+TipFriction parse_tip_friction(const std::string& name) {
+  if (name == "sliding") return TipFriction::sliding;
+  if (name == "stick_slip") return TipFriction::stick_slip;
+  throw std::invalid_argument("must be \"sliding\" or \"stick_slip\", got \"" + name + "\"");
+}
+
+std::string to_string(TipFriction friction) { return friction == TipFriction::sliding ? "sliding" : "stick_slip"; }
+
 const std::vector<std::string>& TipContact::property_names() const {
-  static const std::vector<std::string> names{"stiffness", "clearance",    "width",         "mu",
-                                              "radius",    "engine_order", "rotation_speed"};
-  return names;
+  static const std::vector<std::string> sliding{"stiffness", "clearance",    "width",         "mu",
+                                                "radius",    "engine_order", "rotation_speed"};
+  static const std::vector<std::string> stick_slip{"stiffness",    "clearance",      "width", "mu", "radius",
+                                                   "engine_order", "rotation_speed", "tangential_stiffness"};
+  return friction_ == TipFriction::sliding ? sliding : stick_slip;
+}
+
+std::string TipContact::smoothness_limit() const {
+  if (friction_ == TipFriction::sliding) return hbtrack::smoothness_limit(kind_);
+  return "stick-slip transitions make the friction force non-smooth";
 }
 
 int TipContact::switching_surfaces(const std::vector<double>& p) const {
@@ -24,9 +40,18 @@ void TipContact::switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixX
   out[0] = x(0, kR) - p[kClearance];
 }
 
-void TipContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                          const std::vector<double>& p, ElementResponse& out,
-                          bool want_property_derivatives) const {
+void TipContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& p,
+                          ElementResponse& out, bool want_property_derivatives) const {
+  if (friction_ == TipFriction::stick_slip) {
+    evaluate_stick_slip(x, omega, p, out, want_property_derivatives);
+    return;
+  }
+  evaluate_sliding(x, v, omega, p, out, want_property_derivatives);
+}
+
+void TipContact::evaluate_sliding(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
+                                  const std::vector<double>& p, ElementResponse& out,
+                                  bool want_property_derivatives) const {
   const Eigen::Index n = x.rows();
   constexpr int k = 3;
   out.force.setZero(n, k);

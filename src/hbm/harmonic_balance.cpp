@@ -82,6 +82,19 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
     condenser_ = make_schur_condenser(model_, retained_, options_.harmonics);
   }
 
+  // An element that reads the linear residual at its dofs (DLFT) must be alone on them: another
+  // element's force there would be part of what the contact balances.
+  for (size_t e = 0; e < elements_.size(); ++e) {
+    if (!elements_[e]->uses_linear_residual()) continue;
+    residual_elements_ = true;
+    if (elements_[e]->lanczos_exponent != 0.0)
+      throw std::invalid_argument("element " + elements_[e]->type() + " reads the linear residual (DLFT): no Lanczos filter on it");
+    for (size_t o = 0; o < elements_.size(); ++o)
+      for (int d : elements_[o]->dofs)
+        if (o != e && std::find(elements_[e]->dofs.begin(), elements_[e]->dofs.end(), d) != elements_[e]->dofs.end())
+          throw std::invalid_argument("element " + elements_[e]->type() + " reads the linear residual (DLFT) at dof " + model_.dof_names[static_cast<size_t>(d)] +
+                                      ", which another element (" + elements_[o]->type() + ") also acts on");
+  }
   const int n_samples = basis_.samples();
   slots_.resize(elements_.size());
   for (size_t e = 0; e < elements_.size(); ++e) {
@@ -167,6 +180,23 @@ void HarmonicBalance::add_element_blocks(ElementSlot& s, double omega, int strid
     for (int cc = 0; cc < nc; ++cc)
       for (int rr = 0; rr < nc; ++rr) target(rr * stride + row_dof, cc * stride + col_dof) += s.sigma(rr) * block(rr, cc);
   };
+  if (resp.history_operator) {
+    // A history element whose sensitivities are an operator: S applied to the synthesis of
+    // each dof's harmonics, then analysed. No velocity part.
+    if (!jacobian) return;
+    const int n = basis_.samples();
+    for (int jd = 0; jd < k; ++jd) {
+      Eigen::MatrixXd perturbation = MatrixXd::Zero(static_cast<Eigen::Index>(n) * k, nc);
+      perturbation.middleRows(static_cast<Eigen::Index>(jd) * n, n) = basis_.synthesis();
+      const MatrixXd response = resp.history_operator->apply(perturbation);
+      for (int i = 0; i < k; ++i) {
+        block_.noalias() = basis_.analysis() * response.middleRows(static_cast<Eigen::Index>(i) * n, n);
+        if (block_.isZero(0.0)) continue;
+        scatter(*jacobian, block_, positions[static_cast<size_t>(i)], positions[static_cast<size_t>(jd)]);
+      }
+    }
+    return;
+  }
   if (resp.history_dforce_dx.size() > 0) {
     // A history element: block (i, j) = Gamma^-1 S_ij Gamma with S_ij the sparse N x N
     // sensitivities d f_i(t) / d x_j(s). No velocity part.
@@ -225,6 +255,17 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
     const ScopedPhase timing(Phase::aft);
     sample(x, omega);
   }
+  // With elements that read the linear residual, the linear part comes first and is kept apart.
+  VectorXd r_linear, r_omega_linear;
+  MatrixXd jacobian_linear;
+  if (residual_elements_) {
+    const ScopedPhase timing(Phase::jacobian);
+    condenser_->update(omega);
+    add_condensed_linear_part(x, r, jacobian, r_omega);
+    r_linear = r;
+    if (r_omega) r_omega_linear = *r_omega;
+    if (jacobian) jacobian_linear = *jacobian;
+  }
   for (size_t e = 0; e < elements_.size(); ++e) {
     const NonlinearElement& element = *elements_[e];
     ElementSlot& s = slots_[e];
@@ -232,7 +273,7 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
     const ElementResponse& resp = s.response;
     // The AFT: forces in time, their harmonics, and those of d f / d omega.
     std::optional<ScopedPhase> aft_timing(std::in_place, Phase::aft);
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    evaluate_element(e, omega, r_linear, false);
 
     multiply(basis_.analysis(), resp.force, coeffs_);  // nc x k
     for (int i = 0; i < k; ++i)
@@ -243,12 +284,15 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
       multiply(basis_.analysis(), omega_samples_, coeffs_);
       for (int i = 0; i < k; ++i)
         for (int c = 0; c < nc; ++c) (*r_omega)(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs_(c, i);
+      if (element.uses_linear_residual()) add_residual_response(s, r_omega_linear, *r_omega);
     }
     aft_timing.reset();
 
     const ScopedPhase assembly_timing(Phase::jacobian);
     if (jacobian) add_element_blocks(s, omega, q, s.columns, jacobian, nullptr);
+    if (jacobian && element.uses_linear_residual()) add_residual_coupling(s, jacobian_linear, *jacobian);
   }
+  if (residual_elements_) return;
   // The condensed linear part (Schur complements per harmonic when omega changed).
   const ScopedPhase timing(Phase::jacobian);
   condenser_->update(omega);
@@ -270,6 +314,19 @@ VectorXd HarmonicBalance::parameter_derivative(const VectorXd& x, double omega, 
     }
   }
   bool sampled = false;
+  VectorXd r_linear;
+  if (residual_elements_) {
+    // The linear residual, and the amplitude's effect on it as the elements that read it see it.
+    r_linear = linear_residual(x, omega);
+    sample(x, omega);
+    sampled = true;
+    const VectorXd amplitude_part = out;
+    for (size_t e = 0; e < elements_.size() && parameter == amplitude_index_; ++e) {
+      if (!elements_[e]->uses_linear_residual()) continue;
+      evaluate_element(e, omega, r_linear, false);
+      add_residual_response(slots_[e], amplitude_part, out);
+    }
+  }
   for (size_t e = 0; e < elements_.size(); ++e) {
     const NonlinearElement& element = *elements_[e];
     bool bound = false;
@@ -280,7 +337,7 @@ VectorXd HarmonicBalance::parameter_derivative(const VectorXd& x, double omega, 
     sampled = true;
     ElementSlot& s = slots_[e];
     const int k = element.local_dofs();
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, true);
+    evaluate_element(e, omega, r_linear, true);
     MatrixXd df = MatrixXd::Zero(s.x.rows(), k);
     for (size_t p = 0; p < element.properties.size(); ++p) {
       const double scale = element.properties[p].derivative(parameter);
@@ -339,11 +396,12 @@ VectorXd HarmonicBalance::rest_linearized_solution(double omega) {
 VectorXd HarmonicBalance::nonlinear_forces(const VectorXd& x, double omega) {
   VectorXd r = VectorXd::Zero(unknowns());
   const int q = retained_dofs();
+  const VectorXd r_linear = residual_elements_ ? linear_residual(x, omega) : VectorXd();
   sample(x, omega);
   for (size_t e = 0; e < elements_.size(); ++e) {
     const NonlinearElement& element = *elements_[e];
     ElementSlot& s = slots_[e];
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    evaluate_element(e, omega, r_linear, false);
     const MatrixXd coeffs = basis_.analysis() * s.response.force;
     for (int i = 0; i < element.local_dofs(); ++i)
       for (int c = 0; c < basis_.coefficients(); ++c) r(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs(c, i);
@@ -357,6 +415,7 @@ double HarmonicBalance::nonlinear_adjoint_products(const VectorXd& x, double ome
   const int nc = basis_.coefficients();
   if (x.size() != unknowns() || w.size() != unknowns())
     throw std::invalid_argument("HarmonicBalance::nonlinear_adjoint_products: x or w has the wrong size");
+  refuse_residual_elements("limit-point tracking");
   const ScopedPhase timing(Phase::aft);
   sample(x, omega);
   // Block (i, j) of J_nl is diag(sigma) Gamma^-1 [diag(df_i/dx_j) Gamma + omega diag(df_i/dv_j) Gamma nabla]
@@ -380,10 +439,11 @@ double HarmonicBalance::nonlinear_adjoint_products(const VectorXd& x, double ome
     omega_derivative_samples(s, omega_samples_);
     w_dot_omega_derivative += (adjoint_local_.array() * omega_samples_.array()).sum();
     const bool with_v = resp.dforce_dv.size() > 0;
-    if (resp.history_dforce_dx.size() > 0) {
+    if (resp.history_dforce_dx.size() > 0 || resp.history_operator) {
       // History element: the transposed sensitivities map the weights back to earlier samples.
       const Eigen::Map<const VectorXd> local(adjoint_local_.data(), adjoint_local_.size());
-      const VectorXd back = resp.history_dforce_dx.transpose() * local;
+      const VectorXd back = resp.history_operator ? VectorXd(resp.history_operator->apply_transpose(local))
+                                                  : VectorXd(resp.history_dforce_dx.transpose() * local);
       const Eigen::Index n = basis_.samples();
       for (int jd = 0; jd < k; ++jd) adjoint_x_.col(s.columns[static_cast<size_t>(jd)]) += back.segment(jd * n, n);
       continue;
@@ -423,6 +483,7 @@ VectorXd HarmonicBalance::linear_omega_derivative(const VectorXd& d, double omeg
 namespace hbtrack {
 
 void HarmonicBalance::hill_matrices(const VectorXd& x, double omega, MatrixXd& jacobian, MatrixXd& damping) {
+  refuse_residual_elements("Hill's stability method");
   const int n = model_.dofs();
   const int nc = basis_.coefficients();
   const int size = n * nc;

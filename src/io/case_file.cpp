@@ -13,13 +13,9 @@
 #include <set>
 #include <sstream>
 
-#include "hbtrack/elements/elastic_dry_friction.hpp"
-#include "hbtrack/elements/frictional_contact.hpp"
-#include "hbtrack/elements/polynomial_elements.hpp"
-#include "hbtrack/elements/scalar_elements.hpp"
-#include "hbtrack/elements/tip_contact.hpp"
+#include "case_elements.hpp"
+#include "case_reader.hpp"
 #include "hbtrack/io/input_file.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
 #include "hbtrack/model/damping.hpp"
 #include "utf8_validation.hpp"
 
@@ -33,170 +29,7 @@ using Eigen::VectorXd;
 
 constexpr int kMaxChainCount = 4000;
 
-size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
-
-std::string nearest(const std::string& word, const std::vector<std::string>& candidates) {
-  std::string best;
-  size_t best_d = std::string::npos;
-  for (const auto& c : candidates) {
-    const size_t d = edit_distance(word, c);
-    if (d < best_d) best_d = d, best = c;
-  }
-  return best_d <= std::max<size_t>(2, word.size() / 3) ? best : "";
-}
-
-std::string join(const std::vector<std::string>& words) {
-  std::string out;
-  for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
-  return out;
-}
-
-// Reads one case file, keeping the file name and field path for every error message.
-class Reader {
- public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const toml::value* where, const std::string& field, const std::string& rule) const {
-    std::string loc = file_;
-    if (where) {
-      const auto l = where->location();
-      if (l.line() > 0 && l.file_name() != "unknown file" && l.file_name() != "--set") loc += ":" + std::to_string(l.line());
-      if (l.file_name() == "--set") loc = "--set";
-    }
-    throw CaseError(loc + ": " + (field.empty() ? "" : field + ": ") + rule);
-  }
-
-  const toml::value* find(const toml::value& table, const std::string& key) const {
-    if (!table.is_table() || !table.contains(key)) return nullptr;
-    return &table.at(key);
-  }
-  const toml::value& require(const toml::value& table, const std::string& key, const std::string& field) const {
-    const toml::value* v = find(table, key);
-    if (!v) fail(&table, field, "missing (required)");
-    return *v;
-  }
-  const toml::value& table(const toml::value& v, const std::string& field) const {
-    if (!v.is_table()) fail(&v, field, "expected a table");
-    return v;
-  }
-  void check_keys(const toml::value& table_value, const std::string& field, const std::vector<std::string>& allowed) const {
-    for (const auto& [key, value] : table_value.as_table()) {
-      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      const std::string guess = nearest(key, allowed);
-      fail(&value, field.empty() ? key : field + "." + key,
-           "unknown key" + (guess.empty() ? " (expected one of: " + join(allowed) + ")" : " (did you mean '" + guess + "'?)"));
-    }
-  }
-  double number(const toml::value& v, const std::string& field) const {
-    double x = 0;
-    if (v.is_integer()) x = static_cast<double>(v.as_integer());
-    else if (v.is_floating()) x = v.as_floating();
-    else fail(&v, field, "expected a number");
-    if (!std::isfinite(x)) fail(&v, field, "must be finite");
-    return x;
-  }
-  int integer(const toml::value& v, const std::string& field) const {
-    if (!v.is_integer()) fail(&v, field, "expected an integer");
-    const auto i = v.as_integer();
-    if (i < -2147483647 || i > 2147483647) fail(&v, field, "integer out of range");
-    return static_cast<int>(i);
-  }
-  std::string string(const toml::value& v, const std::string& field) const {
-    if (!v.is_string()) fail(&v, field, "expected a string");
-    return v.as_string().str;
-  }
-  double number_or(const toml::value& t, const std::string& key, const std::string& field, double fallback) const {
-    const toml::value* v = find(t, key);
-    return v ? number(*v, field) : fallback;
-  }
-  int integer_or(const toml::value& t, const std::string& key, const std::string& field, int fallback) const {
-    const toml::value* v = find(t, key);
-    return v ? integer(*v, field) : fallback;
-  }
-  std::string string_or(const toml::value& t, const std::string& key, const std::string& field, std::string fallback) const {
-    const toml::value* v = find(t, key);
-    return v ? string(*v, field) : fallback;
-  }
-  VectorXd vector(const toml::value& v, const std::string& field) const {
-    if (!v.is_array()) fail(&v, field, "expected an array of numbers");
-    const auto& a = v.as_array();
-    VectorXd out(static_cast<Eigen::Index>(a.size()));
-    for (size_t i = 0; i < a.size(); ++i) out(static_cast<Eigen::Index>(i)) = number(a[i], field + "[" + std::to_string(i) + "]");
-    return out;
-  }
-  std::vector<std::string> strings(const toml::value& v, const std::string& field) const {
-    if (v.is_string()) return {v.as_string().str};
-    if (!v.is_array()) fail(&v, field, "expected a string or an array of strings");
-    std::vector<std::string> out;
-    for (size_t i = 0; i < v.as_array().size(); ++i) out.push_back(string(v.as_array()[i], field + "[" + std::to_string(i) + "]"));
-    return out;
-  }
-  fs::path resolve(const std::string& relative) const {
-    const fs::path p(relative);
-    return p.is_absolute() ? p : fs::path(file_).parent_path() / p;
-  }
-
-  // A matrix: inline rows, {diagonal = [...]}, {file = "K.mtx"} or {file = "m.mat", variable = "K"}.
-  MatrixXd matrix(const toml::value& v, const std::string& field, int n) const {
-    MatrixXd m;
-    if (v.is_array()) {
-      const auto& rows = v.as_array();
-      if (rows.empty()) fail(&v, field, "empty matrix");
-      for (size_t i = 0; i < rows.size(); ++i) {
-        const VectorXd row = vector(rows[i], field + "[" + std::to_string(i) + "]");
-        if (i == 0) m.resize(static_cast<Eigen::Index>(rows.size()), row.size());
-        if (row.size() != m.cols())
-          fail(&rows[i], field, "row " + std::to_string(i) + " has " + std::to_string(row.size()) + " entries, row 0 has " + std::to_string(m.cols()));
-        m.row(static_cast<Eigen::Index>(i)) = row.transpose();
-      }
-    } else if (v.is_table()) {
-      check_keys(v, field, {"file", "variable", "diagonal"});
-      if (const toml::value* d = find(v, "diagonal")) {
-        m = vector(*d, field + ".diagonal").asDiagonal();
-      } else if (const toml::value* f = find(v, "file")) {
-        const fs::path path = resolve(string(*f, field + ".file"));
-        if (!fs::exists(path)) fail(f, field + ".file", "file '" + path.string() + "' does not exist");
-        // A directory, a device (/dev/zero never ends) or a pipe is not a matrix file.
-        if (!fs::is_regular_file(path)) fail(f, field + ".file", "'" + path.string() + "' is not a regular file");
-        try {
-          if (path.extension() == ".mat") {
-            const toml::value* var = find(v, "variable");
-            if (!var) fail(&v, field + ".variable", "missing (required for a .mat file)");
-            m = read_mat_variable(path.string(), string(*var, field + ".variable"));
-          } else {
-            m = read_matrix_market(path.string());
-          }
-        } catch (const std::runtime_error& e) {
-          fail(f, field + ".file", e.what());
-        }
-      } else {
-        fail(&v, field, "a matrix table needs 'file' or 'diagonal'");
-      }
-    } else {
-      fail(&v, field, "expected an array of rows or a table {file = ...} / {diagonal = [...]}");
-    }
-    if (n >= 0 && (m.rows() != n || m.cols() != n))
-      fail(&v, field, "expected " + std::to_string(n) + "x" + std::to_string(n) + " (one row per dof), got " +
-                          std::to_string(m.rows()) + "x" + std::to_string(m.cols()));
-    if (!m.allFinite()) fail(&v, field, "contains NaN or Inf");
-    return m;
-  }
-
- private:
-  std::string file_;
-};
-
-void read_model(const Reader& in, const toml::value& root, CaseDefinition& c) {
+void read_model(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value& model = in.table(in.require(root, "model", "model"), "model");
   in.check_keys(model, "model", {"dofs", "M", "K", "chain"});
   StructuralModel& m = c.model;
@@ -236,7 +69,7 @@ void read_model(const Reader& in, const toml::value& root, CaseDefinition& c) {
   m.stiffness = in.matrix(in.require(model, "K", "model.K"), "model.K", n);
 }
 
-void read_damping(const Reader& in, const toml::value& root, CaseDefinition& c) {
+void read_damping(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   StructuralModel& m = c.model;
   const int n = m.dofs();
   const toml::value* damping = in.find(root, "damping");
@@ -267,17 +100,7 @@ void read_damping(const Reader& in, const toml::value& root, CaseDefinition& c) 
   }
 }
 
-int dof_index(const Reader& in, const StructuralModel& m, const toml::value& v, const std::string& field) {
-  const std::string name = in.string(v, field);
-  const int i = m.find_dof(name);
-  if (i < 0) {
-    const std::string guess = nearest(name, m.dof_names);
-    in.fail(&v, field, "unknown dof '" + name + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
-  }
-  return i;
-}
-
-void read_forcing(const Reader& in, const toml::value& root, CaseDefinition& c) {
+void read_forcing(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   StructuralModel& m = c.model;
   const int n = m.dofs();
   const toml::value* forcing = in.find(root, "forcing");
@@ -327,7 +150,7 @@ void read_forcing(const Reader& in, const toml::value& root, CaseDefinition& c) 
   }
 }
 
-void read_parameters(const Reader& in, const toml::value& root, CaseDefinition& c) {
+void read_parameters(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   if (const toml::value* p = in.find(root, "parameters")) {
     in.table(*p, "parameters");
     // Sorted for a stable order in outputs.
@@ -338,193 +161,7 @@ void read_parameters(const Reader& in, const toml::value& root, CaseDefinition& 
   if (c.parameters.find("amplitude") < 0) c.parameters.set("amplitude", 1.0);
 }
 
-// A property: a number, a parameter name, or {parameter = "mu", scale = 1, offset = 0}.
-ParameterBinding binding(const Reader& in, const CaseDefinition& c, const toml::value& v, const std::string& field) {
-  auto linked = [&](const toml::value& name_value, double scale, double offset) {
-    const std::string name = in.string(name_value, field);
-    const int index = c.parameters.find(name);
-    if (index < 0) {
-      const std::string guess = nearest(name, c.parameters.names());
-      in.fail(&name_value, field, "unknown parameter '" + name + "'" + (guess.empty() ? " (declare it in [parameters])" : " (did you mean '" + guess + "'?)"));
-    }
-    return ParameterBinding::linked(index, scale, offset);
-  };
-  if (v.is_string()) return linked(v, 1.0, 0.0);
-  if (v.is_table()) {
-    in.check_keys(v, field, {"parameter", "scale", "offset"});
-    return linked(in.require(v, "parameter", field + ".parameter"), in.number_or(v, "scale", field + ".scale", 1.0),
-                  in.number_or(v, "offset", field + ".offset", 0.0));
-  }
-  return ParameterBinding::constant(in.number(v, field));
-}
-
-struct PropertySpec {
-  std::string name;
-  bool required;
-  double fallback;
-};
-
-// polynomial_stiffness: `exponents` (one row of nonnegative integers per monomial) now, its
-// `coefficients` (same rows, one bindable entry per dof) once the dofs are known.
-std::shared_ptr<PolynomialStiffness> read_polynomial_exponents(const Reader& in, const toml::value& e, const std::string& field) {
-  const toml::value& value = in.require(e, "exponents", field + ".exponents");
-  if (!value.is_array() || value.as_array().empty()) in.fail(&value, field + ".exponents", "expected an array of rows, one per monomial");
-  const auto& rows = value.as_array();
-  Eigen::MatrixXi p;
-  for (size_t m = 0; m < rows.size(); ++m) {
-    const std::string row_field = field + ".exponents[" + std::to_string(m) + "]";
-    if (!rows[m].is_array()) in.fail(&rows[m], row_field, "expected an array of integers, one per dof");
-    const auto& row = rows[m].as_array();
-    if (m == 0) p.resize(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(row.size()));
-    if (static_cast<Eigen::Index>(row.size()) != p.cols()) in.fail(&rows[m], row_field, "every row needs the same length (one exponent per dof)");
-    for (size_t j = 0; j < row.size(); ++j) {
-      const int exponent = in.integer(row[j], row_field + "[" + std::to_string(j) + "]");
-      if (exponent < 0 || exponent > 64) in.fail(&row[j], row_field + "[" + std::to_string(j) + "]", "must be an integer in [0, 64]");
-      p(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(j)) = exponent;
-    }
-  }
-  return std::make_shared<PolynomialStiffness>(p);
-}
-
-void read_polynomial_coefficients(const Reader& in, const toml::value& e, const std::string& field, CaseDefinition& c,
-                                  NonlinearElement& element, Eigen::Index monomials) {
-  const int k = element.local_dofs();
-  const toml::value& value = in.require(e, "coefficients", field + ".coefficients");
-  if (!value.is_array() || static_cast<Eigen::Index>(value.as_array().size()) != monomials)
-    in.fail(&value, field + ".coefficients", "expected one row per monomial (" + std::to_string(monomials) + ")");
-  for (size_t m = 0; m < value.as_array().size(); ++m) {
-    const toml::value& row = value.as_array()[m];
-    const std::string row_field = field + ".coefficients[" + std::to_string(m) + "]";
-    if (!row.is_array() || static_cast<int>(row.as_array().size()) != k)
-      in.fail(&row, row_field, "expected one coefficient per dof (" + std::to_string(k) + ")");
-    for (size_t i = 0; i < row.as_array().size(); ++i)
-      element.properties.push_back(binding(in, c, row.as_array()[i], row_field + "[" + std::to_string(i) + "]"));
-  }
-}
-
-void read_elements(const Reader& in, const toml::value& root, CaseDefinition& c) {
-  const toml::value* elements = in.find(root, "elements");
-  if (!elements) return;
-  if (!elements->is_array()) in.fail(elements, "elements", "expected an array of tables ([[elements]])");
-  const std::vector<std::string> types{"cubic_spring",         "unilateral_spring", "regularized_contact", "tanh_friction", "tip_contact",
-                                       "polynomial_stiffness", "power_damper",      "elastic_dry_friction", "frictional_contact"};
-  for (size_t i = 0; i < elements->as_array().size(); ++i) {
-    const std::string field = "elements[" + std::to_string(i) + "]";
-    const toml::value& e = in.table(elements->as_array()[i], field);
-    const toml::value& type_value = in.require(e, "type", field + ".type");
-    const std::string type = in.string(type_value, field + ".type");
-    std::shared_ptr<NonlinearElement> element;
-    std::vector<PropertySpec> specs;
-    ContactLawKind law = ContactLawKind::polynomial;
-    if (const toml::value* l = in.find(e, "law")) {
-      try {
-        law = parse_contact_law(in.string(*l, field + ".law"));
-      } catch (const std::invalid_argument& err) {
-        in.fail(l, field + ".law", err.what());
-      }
-    }
-    if (type == "cubic_spring") {
-      element = std::make_shared<CubicSpring>();
-      specs = {{"cubic_stiffness", true, 0}};
-    } else if (type == "unilateral_spring") {
-      element = std::make_shared<GapContact>(ContactLawKind::penalty, type);
-      specs = {{"stiffness", true, 0}, {"gap", false, 0.0}, {"width", false, 0.0}};
-    } else if (type == "regularized_contact") {
-      element = std::make_shared<GapContact>(law, type);
-      specs = {{"stiffness", true, 0}, {"gap", false, 0.0}, {"width", true, 0}};
-    } else if (type == "tanh_friction") {
-      element = std::make_shared<TanhFriction>();
-      specs = {{"mu", true, 0}, {"normal_load", true, 0}, {"regularization_velocity", true, 0}};
-    } else if (type == "tip_contact") {
-      element = std::make_shared<TipContact>(law);
-      specs = {{"stiffness", true, 0}, {"clearance", true, 0}, {"width", true, 0}, {"mu", true, 0},
-               {"radius", true, 0},    {"engine_order", false, 1.0}, {"rotation_speed", false, 0.0}};
-    } else if (type == "polynomial_stiffness") {
-      element = read_polynomial_exponents(in, e, field);
-    } else if (type == "power_damper") {
-      element = std::make_shared<PowerDamper>();
-      specs = {{"coefficient", true, 0}, {"exponent", false, 2.0}};
-    } else if (type == "elastic_dry_friction") {
-      element = std::make_shared<ElasticDryFriction>();
-      specs = {{"stiffness", true, 0}, {"limit_force", true, 0}};
-    } else if (type == "frictional_contact") {
-      element = std::make_shared<FrictionalContact>();
-      specs = {{"normal_stiffness", true, 0}, {"tangential_stiffness", true, 0}, {"mu", true, 0}, {"normal_preload", false, 0.0}};
-    } else {
-      const std::string guess = nearest(type, types);
-      in.fail(&type_value, field + ".type", "unknown element type '" + type + "'" +
-                                                 (guess.empty() ? " (expected one of: " + join(types) + ")" : " (did you mean '" + guess + "'?)"));
-    }
-    std::vector<std::string> allowed{"type", "dofs", "lanczos"};
-    if (type == "regularized_contact" || type == "tip_contact") allowed.push_back("law");
-    const bool polynomial = type == "polynomial_stiffness";
-    const bool scalar = type != "tip_contact" && type != "frictional_contact" && !polynomial;
-    if (scalar) allowed.push_back("weights");
-    if (polynomial) allowed.insert(allowed.end(), {"exponents", "coefficients"});
-    for (const auto& s : specs) allowed.push_back(s.name);
-    in.check_keys(e, field, allowed);
-
-    const toml::value& dofs_value = in.require(e, "dofs", field + ".dofs");
-    if (!dofs_value.is_array() && !dofs_value.is_string()) in.fail(&dofs_value, field + ".dofs", "expected an array of dof names");
-    std::vector<toml::value> dof_values = dofs_value.is_array() ? dofs_value.as_array() : std::vector<toml::value>{dofs_value};
-    for (size_t d = 0; d < dof_values.size(); ++d)
-      element->dofs.push_back(dof_index(in, c.model, dof_values[d], field + ".dofs[" + std::to_string(d) + "]"));
-    const int k = element->local_dofs();
-    if (type == "tip_contact" && k != 3)
-      in.fail(&dofs_value, field + ".dofs", "expected 3 dofs [radial, circumferential, axial], got " + std::to_string(k));
-    if (type == "frictional_contact" && k != 2) in.fail(&dofs_value, field + ".dofs", "expected 2 dofs [normal, tangential], got " + std::to_string(k));
-    if (scalar && (k < 1)) in.fail(&dofs_value, field + ".dofs", "expected at least one dof");
-    if (std::set<int>(element->dofs.begin(), element->dofs.end()).size() != element->dofs.size())
-      in.fail(&dofs_value, field + ".dofs", "a dof appears twice");
-    if (scalar) {
-      auto* s = static_cast<ScalarElement*>(element.get());
-      if (const toml::value* w = in.find(e, "weights")) {
-        s->weights = in.vector(*w, field + ".weights");
-        if (s->weights.size() != k) in.fail(w, field + ".weights", "expected one weight per dof (" + std::to_string(k) + ")");
-        if (s->weights.isZero(0.0)) in.fail(w, field + ".weights", "must not all be zero (the element would act on nothing)");
-      } else if (k == 1) {
-        s->weights = VectorXd::Ones(1);
-      } else if (k == 2) {
-        s->weights = (VectorXd(2) << 1.0, -1.0).finished();  // relative displacement x_a - x_b
-      } else {
-        in.fail(&e, field + ".weights", "required for more than two dofs");
-      }
-    }
-    if (polynomial) {
-      const auto& exponents = static_cast<PolynomialStiffness*>(element.get())->exponents();
-      if (exponents.cols() != k) in.fail(&e.at("exponents"), field + ".exponents", "expected one exponent per dof (" + std::to_string(k) + ") in each row");
-      read_polynomial_coefficients(in, e, field, c, *element, exponents.rows());
-    }
-    for (const auto& spec : specs) {
-      const toml::value* v = in.find(e, spec.name);
-      if (!v && spec.required) in.fail(&e, field + "." + spec.name, "missing (required for " + type + ")");
-      element->properties.push_back(v ? binding(in, c, *v, field + "." + spec.name) : ParameterBinding::constant(spec.fallback));
-    }
-    // Physical ranges at the nominal parameter values.
-    const std::vector<double> values = element->property_values(c.parameters);
-    for (size_t p = 0; p < specs.size(); ++p) {
-      const std::string& name = specs[p].name;
-      const bool must_be_positive = name == "stiffness" || name == "normal_stiffness" || name == "tangential_stiffness" || name == "regularization_velocity" ||
-                                    (name == "width" && type != "unilateral_spring") || name == "radius";
-      // The sign of engine_order is the sense of rotation (rotor 67 and the parametric blade
-      // turn towards -theta of their tip frames); 0 would stop the rotor.
-      const bool must_be_nonzero = name == "engine_order";
-      const bool must_be_nonnegative = name == "mu" || name == "normal_load" || name == "clearance" || name == "limit_force";
-      const toml::value* v = in.find(e, name);
-      if (must_be_positive && !(values[p] > 0)) in.fail(v ? v : &e, field + "." + name, "must be > 0");
-      if (must_be_nonzero && !(values[p] != 0)) in.fail(v ? v : &e, field + "." + name, "must be nonzero (its sign is the sense of rotation)");
-      if (must_be_nonnegative && values[p] < 0) in.fail(v ? v : &e, field + "." + name, "must be >= 0");
-      if (name == "exponent" && !(values[p] >= 1)) in.fail(v ? v : &e, field + "." + name, "must be >= 1 (the force derivative is unbounded at zero velocity below 1)");
-    }
-    element->lanczos_exponent = in.number_or(e, "lanczos", field + ".lanczos", 0.0);
-    if (element->lanczos_exponent < 0) in.fail(&e.at("lanczos"), field + ".lanczos", "must be >= 0 (0 disables the filter)");
-    // sinc(j/(H+1))^p: beyond p = 10 the higher harmonics of the force vanish (1e9 removed them all).
-    if (element->lanczos_exponent > 10) in.fail(&e.at("lanczos"), field + ".lanczos", "must be <= 10");
-    c.elements.push_back(std::move(element));
-  }
-}
-
-void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c) {
+void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   if (const toml::value* h = in.find(root, "harmonic_balance")) {
     in.table(*h, "harmonic_balance");
     in.check_keys(*h, "harmonic_balance", {"harmonics", "samples", "condensation"});
@@ -585,8 +222,20 @@ void read_settings(const Reader& in, const toml::value& root, CaseDefinition& c)
   if (co.tolerance >= 1) in.fail(in.find(cont, "tolerance"), "continuation.tolerance", "must be < 1 (it is relative to the forcing)");
 }
 
+// DLFT contact forces are Lagrange multipliers of the harmonic balance: no time-domain law, so no
+// Floquet analysis of them.
+void check_stability_supported(const CaseReader& in, const toml::value& root, const CaseDefinition& c) {
+  if (c.nfrc.stability.method == "none") return;
+  for (size_t i = 0; i < c.elements.size(); ++i) {
+    if (!c.elements[i]->uses_linear_residual()) continue;
+    const toml::value& e = root.at("elements").as_array()[i];
+    in.fail(in.find(e, "law"), "elements[" + std::to_string(i) + "].law",
+            "\"dlft\" has no stability analysis (its forces are Lagrange multipliers of the harmonic balance): set stability.method = \"none\"");
+  }
+}
+
 // A forcing harmonic above the truncation would silently vanish from the balance.
-void check_forcing_within_harmonics(const Reader& in, const toml::value& root, const CaseDefinition& c) {
+void check_forcing_within_harmonics(const CaseReader& in, const toml::value& root, const CaseDefinition& c) {
   const toml::value* forcing = in.find(root, "forcing");
   const int harmonics = c.harmonic_balance.harmonics;
   for (size_t i = 0; forcing && i < forcing->as_array().size(); ++i) {
@@ -597,7 +246,7 @@ void check_forcing_within_harmonics(const Reader& in, const toml::value& root, c
   }
 }
 
-void read_outputs(const Reader& in, const toml::value& root, CaseDefinition& c) {
+void read_outputs(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value* outputs = in.find(root, "outputs");
   if (!outputs) return;
   if (!outputs->is_array()) in.fail(outputs, "outputs", "expected an array of tables ([[outputs]])");
@@ -616,7 +265,7 @@ void read_outputs(const Reader& in, const toml::value& root, CaseDefinition& c) 
   }
 }
 
-void read_study(const Reader& in, const toml::value& root, CaseDefinition& c) {
+void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value* st = in.find(root, "study");
   if (!st) return;
   in.table(*st, "study");
@@ -671,7 +320,7 @@ void read_study(const Reader& in, const toml::value& root, CaseDefinition& c) {
 }
 
 // Applies "NAME=VALUE" overrides to the parsed TOML document.
-void apply_overrides(const Reader& in, toml::value& root, const std::vector<std::string>& overrides) {
+void apply_overrides(const CaseReader& in, toml::value& root, const std::vector<std::string>& overrides) {
   for (const std::string& o : overrides) {
     const size_t eq = o.find('=');
     if (eq == std::string::npos || eq == 0) throw CaseError("--set " + o + ": expected NAME=VALUE");
@@ -780,7 +429,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
     std::string msg = e.what();
     throw CaseError(path + ": cannot read: " + msg.substr(0, msg.find('\n')));
   }
-  Reader in(path);
+  CaseReader in(path);
   if (!root.is_table()) throw CaseError(path + ": expected a TOML table at the top level");
   apply_overrides(in, root, overrides);
   in.check_keys(root, "", {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs", "study"});
@@ -797,6 +446,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   read_parameters(in, root, c);
   read_elements(in, root, c);
   read_settings(in, root, c);
+  check_stability_supported(in, root, c);
   check_forcing_within_harmonics(in, root, c);
   read_outputs(in, root, c);
   read_study(in, root, c);

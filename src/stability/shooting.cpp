@@ -5,6 +5,7 @@
 #include <unsupported/Eigen/MatrixFunctions>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "hbtrack/timeint/equation_of_motion.hpp"
 #include "hbtrack/timeint/initial_state.hpp"
@@ -60,15 +61,16 @@ class PeriodFlow {
   VectorXd field(double t, const VectorXd& z) {
     const auto x = z.head(n_), v = z.tail(n_);
     eq_.external_force(t, force_);
-    eq_.nonlinear_force(x, v, nonlinear_);
+    eq_.nonlinear_force(t, x, v, nonlinear_);
     VectorXd dz(2 * n_);
     dz.head(n_) = v;
     dz.tail(n_) = mass_inverse_ * (force_ - nonlinear_ - eq_.stiffness() * x - eq_.damping() * v);
     return dz;
   }
   // A(t, z) = [[0, I], [-M^-1 (K + df/dx), -M^-1 (C + df/dv)]].
+  // (The time matters to history elements only, which shooting_floquet refuses.)
   MatrixXd tangent(const VectorXd& z) {
-    eq_.nonlinear_force(z.head(n_), z.tail(n_), nonlinear_, &dfdx_, &dfdv_);
+    eq_.nonlinear_force(0.0, z.head(n_), z.tail(n_), nonlinear_, &dfdx_, &dfdv_);
     MatrixXd a = MatrixXd::Zero(2 * n_, 2 * n_);
     a.topRightCorner(n_, n_).setIdentity();
     a.bottomLeftCorner(n_, n_) = -mass_inverse_ * (eq_.stiffness() + dfdx_);
@@ -140,6 +142,9 @@ class PeriodFlow {
 
 FloquetResult shooting_floquet(HarmonicBalance& hbm, const VectorXd& x, double omega, int steps, ShootingOutcome* outcome) {
   EquationOfMotion equation(hbm.model(), hbm.elements(), hbm.parameters(), omega);
+  // The shooting state is (x, v): the sliders' positions of history elements would have to join
+  // it, and their periodicity be solved for. The monodromy matrix carries them instead.
+  if (equation.history_size() > 0) throw std::invalid_argument("shooting: history elements (friction sliders) are not supported");
   const int n = equation.dofs();
   const MotionState start = state_from_harmonics(hbm.expand(x, omega), n, hbm.basis().harmonics(), omega);
   VectorXd z0(2 * n);

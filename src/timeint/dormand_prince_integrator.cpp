@@ -51,6 +51,8 @@ void DormandPrinceIntegrator::start(const MotionState& initial) {
   statistics_ = {};
   failure_ = {};
   OdeState& y = stepper_->y;
+  equation_.start_history(initial.time, initial.history);
+  state_.history = equation_.history();
   y.resize(static_cast<size_t>(2 * n));
   Eigen::Map<Eigen::VectorXd>(y.data(), n) = initial.x;
   Eigen::Map<Eigen::VectorXd>(y.data() + n, n) = initial.v;
@@ -65,7 +67,7 @@ bool DormandPrinceIntegrator::advance_to(double t) {
     const Eigen::Map<const Eigen::VectorXd> x(y.data(), n), v(y.data() + n, n);
     s.x = x;
     s.v = v;
-    equation_.nonlinear_force(s.x, s.v, s.f_nl);
+    equation_.nonlinear_force(time, s.x, s.v, s.f_nl);
     equation_.external_force(time, s.f_ext);
     s.force = s.f_ext - s.f_nl;
     s.force.noalias() -= equation_.damping() * s.v;
@@ -83,6 +85,9 @@ bool DormandPrinceIntegrator::advance_to(double t) {
         failure_ = {"diverged", "non-finite state at t = " + std::to_string(s.dense.current_time())};
         return false;
       }
+      // The step is accepted: history elements move on to its end (every stage of the step,
+      // rejected tries included, return-mapped from its start).
+      if (equation_.history_size() > 0) equation_.commit_history(s.dense.current_time(), Eigen::Map<const Eigen::VectorXd>(y.data(), n));
     }
   } catch (const std::exception& e) {
     // odeint gives up after repeated step-size reductions (step_adjustment_error).
@@ -119,6 +124,8 @@ bool DormandPrinceIntegrator::advance_period(const SampleObserver& observe) {
   const double t_end = start_time_ + static_cast<double>(period_index_ + 1) * period;
   if (!advance_to(t_end)) return false;
   interpolate(t_end, state_);
+  // The internal variables at the last accepted step, which may end a little after t_end.
+  state_.history = equation_.history();
   ++period_index_;
   return true;
 }

@@ -25,9 +25,9 @@ NewmarkIntegrator::NewmarkIntegrator(EquationOfMotion& equation, NewmarkOptions 
   start(MotionState{0.0, Eigen::VectorXd::Zero(equation_.dofs()), Eigen::VectorXd::Zero(equation_.dofs())});
 }
 
-void NewmarkIntegrator::internal_force(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& q,
+void NewmarkIntegrator::internal_force(double time, const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& q,
                                        bool with_tangents) {
-  equation_.nonlinear_force(x, v, f_nl_, with_tangents ? &df_dx_ : nullptr, with_tangents ? &df_dv_ : nullptr);
+  equation_.nonlinear_force(time, x, v, f_nl_, with_tangents ? &df_dx_ : nullptr, with_tangents ? &df_dv_ : nullptr);
   ++statistics_.force_evaluations;
   q.noalias() = equation_.damping() * v;
   q.noalias() += equation_.stiffness() * x;
@@ -42,8 +42,10 @@ void NewmarkIntegrator::start(const MotionState& initial) {
   period_index_ = 0;
   statistics_ = {};
   failure_ = {};
+  equation_.start_history(initial.time, initial.history);
+  state_.history = equation_.history();
   // The initial acceleration satisfies the equation of motion at t0.
-  internal_force(state_.x, state_.v, internal_, true);
+  internal_force(state_.time, state_.x, state_.v, internal_, true);
   df_dx_at_state_ = df_dx_;
   df_dv_at_state_ = df_dv_;
   equation_.external_force(state_.time, external_);
@@ -82,7 +84,7 @@ bool NewmarkIntegrator::needs_refinement(double h) {
   // Hermite interpolation of the step).
   mid_x_ = 0.5 * (state_.x + x_) + (h / 8.0) * (state_.v - v_);
   mid_v_ = 0.5 * (state_.v + v_) + (h / 8.0) * (acceleration_ - a_);
-  equation_.nonlinear_force(mid_x_, mid_v_, mid_f_, &mid_dx_, &mid_dv_);
+  equation_.nonlinear_force(state_.time + 0.5 * h, mid_x_, mid_v_, mid_f_, &mid_dx_, &mid_dv_);
   ++statistics_.force_evaluations;
   return element_rate(mid_dx_, mid_dv_) * h > limit;
 }
@@ -107,7 +109,7 @@ bool NewmarkIntegrator::solve_step(double t_next) {
   for (int iteration = 0;; ++iteration) {
     x_ = x_n + h * v_n + (h * h) * ((0.5 - beta_) * a_n + beta_ * a_);
     v_ = v_n + h * ((1.0 - gamma_) * a_n + gamma_ * a_);
-    internal_force(x_, v_, q_, true);
+    internal_force(t_next, x_, v_, q_, true);
     inertia_.noalias() = mass * a_;
     residual_ = inertia_ + (1.0 + alpha) * q_ - load_;
     // Relative to the largest term of the balance: the units of the model do not matter.
@@ -141,6 +143,8 @@ void NewmarkIntegrator::commit_step(double t_next) {
   state_.time = t_next;
   state_.x = x_;
   state_.v = v_;
+  equation_.commit_history(t_next, x_);
+  state_.history = equation_.history();
   acceleration_ = a_;
   internal_ = q_;
   external_ = f_next_;

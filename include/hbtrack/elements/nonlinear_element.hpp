@@ -25,13 +25,43 @@ namespace hbtrack {
 //   history_dforce_dx  sparse (N*k) x (N*k), entry (t + N*i, s + N*j) = d f_i(t) / d x_j(s),
 // a compact form of the time-domain sensitivities (a Jenkins slider: two entries per sample,
 // the sample itself and the last slip event) that the AFT turns into Fourier blocks.
+// Where the memory fades instead of ending at events (friction in two directions, whose force
+// keeps the direction of its past), that matrix would fill up: such an element leaves
+// history_dforce_dx empty and sets history_operator, the same map applied to perturbations.
+class HistorySensitivity {
+ public:
+  virtual ~HistorySensitivity() = default;
+  // d f = S dx and S^T w, for batches of columns in the layout of history_dforce_dx
+  // ((N k) x c, row t + N i).
+  virtual Eigen::MatrixXd apply(const Eigen::MatrixXd& dx) const = 0;
+  virtual Eigen::MatrixXd apply_transpose(const Eigen::MatrixXd& w) const = 0;
+};
+
 struct ElementResponse {
   Eigen::MatrixXd force;
   Eigen::MatrixXd dforce_dx;
   Eigen::SparseMatrix<double> history_dforce_dx;
+  std::shared_ptr<const HistorySensitivity> history_operator;
+  // Elements that read the linear residual (uses_linear_residual()): d f / d r as an operator,
+  // layouts as history_operator's.
+  std::shared_ptr<const HistorySensitivity> residual_operator;
   Eigen::MatrixXd dforce_dv;
   Eigen::MatrixXd dforce_domega;
   Eigen::MatrixXd dforce_dproperty;
+};
+
+// One time step of a history element (time integration, monodromy matrix): its m internal
+// variables (slider positions; all zero at rest, x = 0) before the step and the local
+// displacements at the step's end give the force there and the variables after the step (the
+// return mapping of plasticity). The linearisation holds all its dependencies:
+//   dforce_dx k x k,  dforce_dstate k x m (state before the step),
+//   dstate_dx m x k,  dstate_dstate m x m.
+struct HistoryStep {
+  Eigen::VectorXd force, state;
+  Eigen::MatrixXd dforce_dx, dforce_dstate, dstate_dx, dstate_dstate;
+  // dstate_dstate is diagonal (each variable moves on its own, as parallel sliders do): users
+  // may then skip its off-diagonal entries.
+  bool diagonal_state = false;
 };
 
 class NonlinearElement {
@@ -45,9 +75,19 @@ class NonlinearElement {
   virtual bool depends_on_velocity() const = 0;
   virtual bool depends_on_omega() const { return false; }
   // True when the force depends on the past (see history_dforce_dx): evaluate() must then get
-  // a whole period of N uniform samples, and pointwise users (time integration, monodromy)
-  // refuse the element.
+  // a whole period of N uniform samples. Time integration and the monodromy matrix step such an
+  // element with the three history_* functions below instead.
   virtual bool history_dependent() const { return false; }
+  // Time-stepping form of a history element (zero internal variables for the others).
+  virtual int history_state_size() const { return 0; }
+  // The return mapping over one step of duration dt (dt matters only to a law that moves
+  // on its own, such as a rotating casing): x is 1 x k, state has history_state_size() entries.
+  virtual void history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
+                            const std::vector<double>& property_values, HistoryStep& out) const;
+  // The internal variables after each of the N samples (N x m) of the periodic steady state that
+  // evaluate() finds for the same samples: history_step from row t-1 to sample t gives row t.
+  virtual Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega,
+                                           const std::vector<double>& property_values) const;
   // Why the force is not twice continuously differentiable ("" when it is): limit-point tracking
   // differentiates the Jacobian and cannot follow a fold through such a law.
   virtual std::string smoothness_limit() const { return ""; }
@@ -61,6 +101,20 @@ class NonlinearElement {
   virtual void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                         const std::vector<double>& property_values, ElementResponse& out,
                         bool want_property_derivatives) const = 0;
+  // The dynamic Lagrangian frequency/time method (DLFT, Nacivet et al. 2003: frictional_contact
+  // with law = "dlft") computes contact forces from what the rest of the structure asks of the
+  // contact: the linear part of the harmonic-balance residual at the element's dofs,
+  //   r_lin = Zr(omega) x - amplitude Fr(omega)   (rows of the element's dofs, all harmonics),
+  // as well as from the displacements. An element that does returns true here; the harmonic
+  // balance then calls evaluate_with_residual with the samples of r_lin (N x k), the element
+  // fills history_operator (d f / d x) and residual_operator (d f / d r_lin), and the harmonic
+  // balance chains the latter with d r_lin / d(x, omega, amplitude). Its dofs may carry no other
+  // element (r_lin would then not be what the contact balances), and it has no time-domain form
+  // (time integration, stability) and no Lanczos filter.
+  virtual bool uses_linear_residual() const { return false; }
+  virtual void evaluate_with_residual(const Eigen::MatrixXd& x, const Eigen::MatrixXd& r, double omega,
+                                      const std::vector<double>& property_values, ElementResponse& out,
+                                      bool want_property_derivatives) const;
 
   int local_dofs() const { return static_cast<int>(dofs.size()); }
   std::vector<double> property_values(const ParameterSet& parameters) const;
@@ -72,5 +126,9 @@ class NonlinearElement {
 };
 
 using ElementList = std::vector<std::shared_ptr<NonlinearElement>>;
+
+// A history element's sensitivities d f_i(t) / d x_j(s) as a dense (N k) x (N k) matrix, from
+// whichever form it returned (for tests and small checks).
+Eigen::MatrixXd history_sensitivity_matrix(const ElementResponse& response, Eigen::Index samples, int dofs);
 
 }  // namespace hbtrack

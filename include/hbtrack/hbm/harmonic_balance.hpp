@@ -39,6 +39,10 @@ class HarmonicBalance {
   const FourierBasis& basis() const { return basis_; }
   const StructuralModel& model() const { return model_; }
   const ElementList& elements() const { return elements_; }
+  // Throws std::invalid_argument naming the analysis when an element reads the linear residual
+  // (law = "dlft"): analyses that add terms to the residual (EPMC) or need a time-domain law
+  // (limit-point tracking's adjoint, Hill) have no meaning with it.
+  void refuse_residual_elements(const std::string& analysis) const;
   const HarmonicBalanceOptions& options() const { return options_; }
   std::string condensation_method() const { return condenser_->method(); }
   ParameterSet& parameters() { return parameters_; }
@@ -80,6 +84,7 @@ class HarmonicBalance {
     std::vector<int> columns;  // positions of the element's dofs among the retained dofs
     Eigen::VectorXd sigma;     // Lanczos factors per coefficient
     Eigen::MatrixXd x, v;      // N x k local samples
+    Eigen::MatrixXd r;         // N x k samples of the linear residual (uses_linear_residual)
     ElementResponse response;
   };
   void sample(const Eigen::VectorXd& x, double omega);
@@ -92,6 +97,19 @@ class HarmonicBalance {
   Eigen::VectorXcd harmonic(const Eigen::VectorXd& x, int j, int dofs) const;
   // d f/d(omega) samples (N x k) of an evaluated element: velocity and explicit dependence.
   void omega_derivative_samples(const ElementSlot& slot, Eigen::MatrixXd& df) const;
+
+  // Elements that read the linear residual (DLFT; harmonic_balance_dlft.cpp).
+  // Evaluates element e into its slot, with the samples of r_lin (unknown layout) when it reads it.
+  void evaluate_element(size_t e, double omega, const Eigen::VectorXd& r_lin, bool want_property_derivatives);
+  // The condensed linear part of the residual alone, Zr x - amplitude Fr.
+  Eigen::VectorXd linear_residual(const Eigen::VectorXd& x, double omega);
+  // out += diag(sigma) Gamma^-1 (d f / d r_lin) Gamma v at the element's rows, v in unknown layout
+  // (d r_lin / d omega, d r_lin / d amplitude).
+  void add_residual_response(const ElementSlot& slot, const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
+  // jacobian += diag(sigma) Gamma^-1 (d f / d r_lin) Gamma L at the element's rows, L the
+  // linear Jacobian's rows of its dofs (linear_jacobian: the linear part alone).
+  void add_residual_coupling(const ElementSlot& slot, const Eigen::MatrixXd& linear_jacobian, Eigen::MatrixXd& jacobian) const;
+  bool residual_elements_ = false;
 
   StructuralModel model_;
   ElementList elements_;

@@ -6,6 +6,11 @@
 // instant at a time (N = 1 sample of their local dofs); Lanczos filtering acts on harmonics and
 // has no meaning here. Elements see omega only through tip_contact's rotation speed
 // W = engine_order * omega + rotation_speed, so they get the forcing frequency.
+// History elements (friction sliders) carry internal variables from step to step: the equation
+// holds their committed values, every force evaluation return-maps from them to the trial
+// displacement (NonlinearElement::history_step), and an integrator commits the displacement it
+// accepts at the end of each step. Within a step the variables are thus frozen at the step's
+// start, exact for a rate-independent law when d moves monotonically over the step.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -32,14 +37,26 @@ class EquationOfMotion {
 
   // f = f_ext(t).
   void external_force(double t, Eigen::VectorXd& f) const;
-  // f = f_nl(x, v); when given, also the n x n tangents df/dx and df/dv (overwritten).
+  // f = f_nl(x, v) at `time` (history elements step from their committed state to x); when
+  // given, also the n x n tangents df/dx and df/dv (overwritten).
   // Not const: reuses per-element buffers (one instance per thread).
-  void nonlinear_force(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& f,
+  void nonlinear_force(double time, const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& f,
                        Eigen::MatrixXd* df_dx = nullptr, Eigen::MatrixXd* df_dv = nullptr);
   // The elements' switching surfaces (NonlinearElement::switching_values): where the tangents
   // jump, so that a stepper can stop on them. `out` gets switching_count() values.
   int switching_count() const { return switching_count_; }
   void switching_values(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& out);
+
+  // The history elements' internal variables, concatenated in element order.
+  int history_size() const { return static_cast<int>(history_.size()); }
+  const Eigen::VectorXd& history() const { return history_; }
+  // Sets them at `time` (empty: rest, all zero).
+  void start_history(double time, const Eigen::VectorXd& history);
+  // Accepts x at `time` as the end of a step: the history elements step to it and keep the result.
+  void commit_history(double time, const Eigen::VectorXd& x);
+  // The internal variables at the first sample of a periodic motion given by N samples of one
+  // period (N x dofs): the elements' periodic steady state, as the harmonic balance sees it.
+  Eigen::VectorXd periodic_history(const Eigen::MatrixXd& period_samples) const;
 
  private:
   struct ElementSlot {
@@ -47,9 +64,11 @@ class EquationOfMotion {
     std::vector<double> property_values;
     Eigen::MatrixXd x, v;  // 1 x k: one time sample of the local dofs
     ElementResponse response;
+    int history_offset = 0, history_count = 0;  // its internal variables within history_
+    HistoryStep step;
     int switching = 0;  // the element's switching surfaces
   };
-  void gather(ElementSlot& s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) const;
+  void gather(ElementSlot& slot, const Eigen::VectorXd& x, const Eigen::VectorXd& v) const;
   struct ScaledForce {
     int order = 1;
     Eigen::VectorXd cos_part, sin_part;  // already multiplied by amplitude
@@ -59,6 +78,8 @@ class EquationOfMotion {
   std::vector<ScaledForce> forcing_;
   std::vector<ElementSlot> elements_;
   double omega_;
+  Eigen::VectorXd history_;  // committed internal variables of the history elements
+  double history_time_ = 0;  // when they were committed
   int switching_count_ = 0;
 };
 

@@ -15,4 +15,8 @@ MotionState rest_state(int dofs, double time = 0);
 // harmonic-major [a0, a1, b1, ..., aH, bH] per block of `dofs` (HarmonicBalance::expand).
 MotionState state_from_harmonics(const Eigen::VectorXd& full, int dofs, int harmonics, double omega, double time = 0);
 
+// N equally spaced samples (N x dofs) of one period of that motion, from t = 0: what the
+// history elements' periodic steady state is computed from (EquationOfMotion::periodic_history).
+Eigen::MatrixXd period_samples(const Eigen::VectorXd& full, int dofs, int harmonics, int samples);
+
 }  // namespace hbtrack

@@ -61,7 +61,7 @@ class NewmarkIntegrator final : public TimeIntegrator {
   bool needs_refinement(double h);
   double element_rate(const Eigen::MatrixXd& df_dx, const Eigen::MatrixXd& df_dv) const;
   // q = C v + K x + f_nl(x, v), with the tangents when asked.
-  void internal_force(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& q, bool with_tangents);
+  void internal_force(double time, const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& q, bool with_tangents);
 
   EquationOfMotion& equation_;
   NewmarkOptions options_;

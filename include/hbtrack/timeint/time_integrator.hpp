@@ -14,6 +14,8 @@ namespace hbtrack {
 struct MotionState {
   double time = 0;
   Eigen::VectorXd x, v;  // displacements and velocities of every dof
+  // Internal variables of the history elements (EquationOfMotion::history); empty: at rest.
+  Eigen::VectorXd history{};
 };
 
 // Work counters, for comparing methods.

@@ -1,0 +1,28 @@
+// The element library's example cases (docs/elements.md) run with `hbtrack frc` as the README
+// says: each NFRC reaches the end of its range (three_oscillators_jenkins: test_jenkins.cpp).
+#include <gtest/gtest.h>
+
+#include "hbtrack/analysis/nfrc.hpp"
+#include "hbtrack/io/case_file.hpp"
+#include "test_support.hpp"
+
+using namespace hbtrack;
+
+class ElementExample : public testing::TestWithParam<const char*> {};
+
+TEST_P(ElementExample, NfrcReachesTheEndOfItsRange) {
+  CaseDefinition c = load_case(test::source_path(std::string("examples/") + GetParam()));
+  HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+  const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs);
+  EXPECT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_FALSE(r.recorded.empty());
+  EXPECT_NEAR(r.recorded.back().omega, c.nfrc.omega_end, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, ElementExample,
+                         testing::Values("polynomial_and_power_damper.toml", "frictional_contact.toml", "iwan_joint.toml",
+                                         "tip_stick_slip.toml"),
+                         [](const testing::TestParamInfo<const char*>& param) {
+                           std::string name = param.param;
+                           return name.substr(0, name.find('.'));
+                         });
