@@ -167,6 +167,13 @@ VectorXcd HarmonicBalance::harmonic(const VectorXd& x, int slot, int dofs) const
   return x.segment(c * dofs, dofs).cast<cd>() - cd(0, 1) * x.segment((c + 1) * dofs, dofs).cast<cd>();
 }
 
+// The frequency an element is handed: the forcing's when it depends on it explicitly (the tip
+// contact's rotation speed), else the basis' fundamental omega / nu, whose period the N samples
+// span (a law averaged over each sample's interval, ScalarElement, reads the interval from it).
+static double element_frequency(const NonlinearElement& element, double omega, int subharmonic) {
+  return element.depends_on_omega() ? omega : omega / subharmonic;
+}
+
 void HarmonicBalance::omega_derivative_samples(const ElementSlot& s, MatrixXd& df) const {
   // d f/d omega = (df/dv) v/omega + explicit dependence; v/omega = the unit-frequency velocity
   // over nu (v = (omega / nu) dx/dtau).
@@ -178,7 +185,11 @@ void HarmonicBalance::omega_derivative_samples(const ElementSlot& s, MatrixXd& d
       for (int jd = 0; jd < k; ++jd)
         df.col(i).array() += resp.dforce_dv.col(i + k * jd).array() * v_unit_samples_.col(s.columns[static_cast<size_t>(jd)]).array() /
                              options_.subharmonic;
-  if (resp.dforce_domega.size() > 0) df += resp.dforce_domega;
+  if (resp.dforce_domega.size() > 0) {
+    // d/d(the frequency the element was handed): omega, or omega / nu (element_frequency).
+    const NonlinearElement& element = *elements_[static_cast<size_t>(&s - slots_.data())];
+    df += resp.dforce_domega * (element.depends_on_omega() ? 1.0 : 1.0 / options_.subharmonic);
+  }
 }
 
 void HarmonicBalance::add_condensed_linear_part(const VectorXd& x, VectorXd& r, MatrixXd* jacobian, VectorXd* r_omega) {
@@ -288,7 +299,7 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
     const ElementResponse& resp = s.response;
     // The AFT: forces in time, their harmonics, and those of d f / d omega.
     std::optional<ScopedPhase> aft_timing(std::in_place, Phase::aft);
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), element.property_values(parameters_), s.response, false);
 
     multiply(basis_.analysis(), resp.force, coeffs_);  // nc x k
     for (int i = 0; i < k; ++i)
@@ -337,7 +348,7 @@ VectorXd HarmonicBalance::parameter_derivative(const VectorXd& x, double omega, 
     sampled = true;
     ElementSlot& s = slots_[e];
     const int k = element.local_dofs();
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, true);
+    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), element.property_values(parameters_), s.response, true);
     MatrixXd df = MatrixXd::Zero(s.x.rows(), k);
     for (size_t p = 0; p < element.properties.size(); ++p) {
       const double scale = element.properties[p].derivative(parameter);
@@ -399,7 +410,7 @@ VectorXd HarmonicBalance::nonlinear_forces(const VectorXd& x, double omega) {
   for (size_t e = 0; e < elements_.size(); ++e) {
     const NonlinearElement& element = *elements_[e];
     ElementSlot& s = slots_[e];
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), element.property_values(parameters_), s.response, false);
     const MatrixXd coeffs = basis_.analysis() * s.response.force;
     for (int i = 0; i < element.local_dofs(); ++i)
       for (int c = 0; c < basis_.coefficients(); ++c) r(c * q + s.columns[static_cast<size_t>(i)]) += s.sigma(c) * coeffs(c, i);
@@ -427,7 +438,7 @@ double HarmonicBalance::nonlinear_adjoint_products(const VectorXd& x, double ome
     const NonlinearElement& element = *elements_[e];
     ElementSlot& s = slots_[e];
     const int k = element.local_dofs();
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), element.property_values(parameters_), s.response, false);
     const ElementResponse& resp = s.response;
     coeffs_.resize(nc, k);
     for (int i = 0; i < k; ++i)
@@ -511,7 +522,7 @@ void HarmonicBalance::hill_matrices(const VectorXd& x, double omega, MatrixXd& j
   for (size_t e = 0; e < elements_.size(); ++e) {
     const NonlinearElement& element = *elements_[e];
     ElementSlot& s = slots_[e];
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), element.property_values(parameters_), s.response, false);
     // The velocity part enters the Jacobian as omega (F_v nabla) and D1 as F_v.
     add_element_blocks(s, omega, n, element.dofs, &jacobian, nullptr);
     add_element_blocks(s, omega, n, element.dofs, nullptr, &damping);

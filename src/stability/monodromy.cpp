@@ -47,7 +47,8 @@ FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, 
       vl.col(i) = vel.col(element->dofs[static_cast<size_t>(i)]);
     }
     ElementResponse resp;
-    element->evaluate(xl, vl, forcing_omega, element->property_values(hbm.parameters()), resp, false);
+    // As the harmonic balance hands it (the samples span the period of omega / nu).
+    element->evaluate(xl, vl, element->depends_on_omega() ? forcing_omega : omega, element->property_values(hbm.parameters()), resp, false);
     for (int s = 0; s < samples; ++s)
       for (int i = 0; i < k; ++i)
         for (int j = 0; j < k; ++j) {
