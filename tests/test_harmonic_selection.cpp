@@ -119,7 +119,17 @@ TEST_P(SelectedBasisDerivatives, MatchFiniteDifferences) {
 
 INSTANTIATE_TEST_SUITE_P(Bases, SelectedBasisDerivatives,
                          ::testing::Values(Selection{{1, 2, 4}, 1, "schur"}, Selection{{0, 1, 2, 5}, 1, "modal"},
-                                           Selection{{0, 1, 2, 3, 4, 5, 6}, 2, "schur"}, Selection{{1, 2, 3, 4, 6}, 2, "none"}));
+                                           Selection{{0, 1, 2, 3, 4, 5, 6}, 2, "schur"}, Selection{{1, 2, 3, 4, 6}, 2, "none"}),
+                         [](const ::testing::TestParamInfo<Selection>& param_info) {
+                           std::string name = param_info.param.condensation;
+                           name += "_nu";
+                           name += std::to_string(param_info.param.subharmonic);
+                           for (int k : param_info.param.harmonics) {
+                             name += '_';  // appended one by one: GCC 12's false -Wstringop-overflow on "_" + ...
+                             name += std::to_string(k);
+                           }
+                           return name;
+                         });
 
 namespace {
 
