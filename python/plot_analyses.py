@@ -6,6 +6,9 @@
     /usr/bin/python3 python/plot_analyses.py backbone DIR [--frc FRC_DIR ...] [-o FIG.png]
         omega against the modal amplitude (with the h1 of NFRCs overlaid) and the modal damping
         ratio against the amplitude
+    /usr/bin/python3 python/plot_analyses.py period-doubled DIR --frc FRC_DIR [-o FIG.png]
+        a period-doubled branch (switch at a PD) over its NFRC near the band: the output with the
+        largest omega/2 harmonic, its max against omega, and that harmonic against omega
 """
 import argparse
 import csv
@@ -86,14 +89,50 @@ def backbone_figure(folder, frc_folders):
     return fig
 
 
+def period_doubled_figure(folder, frc_folders):
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    branch = read_columns(os.path.join(folder, "branch.csv"))
+    names = [o["name"] for o in summary["outputs"]]
+    name = max(names, key=lambda n: branch["h0.5_" + n].max())  # the most period-doubled output
+    lo, hi = branch["omega"].min(), branch["omega"].max()
+    margin = 0.6 * (hi - lo)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for other in frc_folders:
+        frc = read_columns(os.path.join(other, "branch.csv"))
+        near = (frc["omega"] > lo - margin) & (frc["omega"] < hi + margin) & (np.abs(frc["max_" + name] - branch["max_" + name].mean()) < 0.2)
+        plot_segments(left, frc["omega"][near], frc["max_" + name][near], frc.get("stable")[near] if "stable" in frc else None,
+                      color="C0", lw=1)
+        right.plot(frc["omega"][near], 0 * frc["omega"][near], "C0-", lw=1, label="period T (NFRC)")
+    plot_segments(left, branch["omega"], branch["max_" + name], branch.get("stable"), color="C3", lw=2)
+    plot_segments(right, branch["omega"], branch["h0.5_" + name], branch.get("stable"), color="C3", lw=2)
+    right.plot([], [], "C3-", lw=2, label="period 2T (switch at the PD)")
+    left.set_xlabel("omega (rad/s)")
+    left.set_ylabel(f"max {name} over the period")
+    left.set_title("NFRC (blue, dashed: unstable) and period-doubled branch (red)", fontsize=10)
+    right.set_xlabel("omega (rad/s)")
+    right.set_ylabel(f"|harmonic omega/2| of {name}")
+    right.set_title("the period-2T part of the motion", fontsize=10)
+    right.legend(loc="upper right", fontsize=8)
+    for ax in (left, right):
+        ax.set_xlim(lo - margin, hi + margin)
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    return fig
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("kind", choices=["continue", "backbone"])
+    parser.add_argument("kind", choices=["continue", "backbone", "period-doubled"])
     parser.add_argument("result_dir")
-    parser.add_argument("--frc", action="append", default=[], help="an NFRC folder to overlay on a backbone")
+    parser.add_argument("--frc", action="append", default=[], help="an NFRC folder to overlay (backbone, period-doubled)")
     parser.add_argument("-o", "--output", help="figure file (default RESULT_DIR/KIND.png)")
     args = parser.parse_args()
-    figure = continue_figure(args.result_dir) if args.kind == "continue" else backbone_figure(args.result_dir, args.frc)
+    if args.kind == "continue":
+        figure = continue_figure(args.result_dir)
+    elif args.kind == "backbone":
+        figure = backbone_figure(args.result_dir, args.frc)
+    else:
+        figure = period_doubled_figure(args.result_dir, args.frc)
     out = args.output or os.path.join(args.result_dir, args.kind + ".png")
     figure.savefig(out, dpi=130)
     print(out)

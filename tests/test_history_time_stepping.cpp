@@ -178,7 +178,7 @@ HarmonicBalance jenkins_oscillator() {
   m.forcing.push_back({1, VectorXd::Constant(1, 0.1), VectorXd::Zero(1)});
   auto e = std::make_shared<ElasticDryFriction>();
   e->weights = VectorXd::Ones(1);
-  return HarmonicBalance(m, {with_properties(e, {0}, {1.0, 0.1})}, ParameterSet(), HarmonicBalanceOptions{21, 4096, "none"});
+  return HarmonicBalance(m, {with_properties(e, {0}, {1.0, 0.1})}, ParameterSet(), HarmonicBalanceOptions{21, 4096, "none", {}, 1});
 }
 
 // Multipliers of the time integrator's own map over one period, by central differences of

@@ -66,7 +66,10 @@ TEST(TimeIntegrationEquation, BothMethodsMatchTheHbmOnEveryElementType) {
   const test::ContactFixture f = test::contact_fixture(false, 0.0);
   const double omega = 1.0;
   const int harmonics = 20;  // friction and contact make the response rich in harmonics
-  HarmonicBalance hbm(f.model, f.elements, f.parameters, HarmonicBalanceOptions{harmonics, 1024, "auto"});
+  HarmonicBalanceOptions hb_options;
+  hb_options.harmonics = harmonics;
+  hb_options.samples = 1024;
+  HarmonicBalance hbm(f.model, f.elements, f.parameters, hb_options);
   const std::vector<OutputDof> outputs{{"tip_radial", 0}, {"tip_tangential", 1}, {"cubic", 3}, {"friction", 5}, {"linear", 6}};
   const FixedFrequencySolution s = solve_at_frequency(hbm, omega, outputs, 1e-10, 100);
   ASSERT_TRUE(s.converged);

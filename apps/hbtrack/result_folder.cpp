@@ -100,7 +100,8 @@ std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinit
   }
   const nlohmann::json& hb = (*options)["harmonic_balance"];
   try {
-    overrides.push_back("harmonic_balance.harmonics=" + std::to_string(hb.at("harmonics").get<int>()));
+    overrides.push_back("harmonic_balance.harmonics=" + hb.at("harmonics").dump());  // H, or a list [1, 3, 5]
+    if (hb.contains("subharmonic")) overrides.push_back("harmonic_balance.subharmonic=" + std::to_string(hb.at("subharmonic").get<int>()));
     overrides.push_back("harmonic_balance.samples=" + std::to_string(hb.at("samples").get<int>()));
     overrides.push_back("harmonic_balance.condensation=" + hb.at("condensation").get<std::string>());
   } catch (const std::exception&) {

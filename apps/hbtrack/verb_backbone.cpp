@@ -44,7 +44,7 @@ int run_backbone(const BackboneCliOptions& o) {
   json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
   summary["options"]["backbone"] = backbone_options_json(options);
   ensure_directory(dir);
-  CsvAppender branch(dir + "/branch.csv", backbone_header(c, hbm.basis().harmonics()));
+  CsvAppender branch(dir + "/branch.csv", backbone_header(c, hbm.basis().harmonic_numbers()));
   CsvAppender states(dir + "/states.csv", backbone_state_header(hbm.unknowns()));
   write_json_atomically(dir + "/summary.json", summary);
 

@@ -83,7 +83,7 @@ int run_simulate(const SimulateOptions& o) {
     if (!omega_flag) omega = s.omega;
     const Eigen::VectorXd full = hbm.expand(s.x, s.omega);
     orbit = full;
-    initial = state_from_harmonics(full, n, harmonics, s.omega);
+    initial = state_from_harmonics(full, n, harmonics, hbm.fundamental(s.omega));  // harmonics of omega / nu
     for (const OutputDof& out : c.outputs) start_harmonics.push_back(dof_harmonics(full, n, harmonics, out.dof));
     start_point = record_point(hbm, s.x, s.omega, c.outputs);
   }

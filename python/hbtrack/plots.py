@@ -490,11 +490,16 @@ def state_harmonics(result, point, largest=4):
     --------
     >>> series = state_harmonics(nfrc, 20)
     """
-    harmonics = result["summary"]["options"]["harmonic_balance"]["harmonics"]
+    listed = result["summary"]["options"]["harmonic_balance"]["harmonics"]  # H, or the list balanced
+    if isinstance(listed, int):
+        listed = list(range(listed + 1))
+    harmonics = listed[-1]
     row = np.asarray(result["states"][point])
     x = row[3:] if "leg" in result.get("branch", {}) else row[1:]  # after leg, omega, parameter or omega
-    coefficients = 2 * harmonics + 1
-    blocks = x.reshape(coefficients, len(x) // coefficients)  # harmonic-major: entry k * q + dof
+    selected = x.reshape(sum(1 if k == 0 else 2 for k in listed), -1)  # harmonic-major: entry c * q + dof
+    blocks = np.zeros((2 * harmonics + 1, selected.shape[1]))  # the dense layout 0..H, zeros where not balanced
+    rows = [r for k in listed for r in ([0] if k == 0 else [2 * k - 1, 2 * k])]
+    blocks[rows] = selected
     first = np.hypot(blocks[1], blocks[2]) if harmonics >= 1 else np.abs(blocks[0])
     keep = sorted(np.argsort(first)[::-1][:largest])
     return {f"retained dof {k + 1}": blocks[:, k] for k in keep}

@@ -83,7 +83,7 @@ py::dict backbone(CaseDefinition c, int mode, double start, double end) {
     r = compute_backbone(hbm, options, c.outputs, [&](const BranchPoint&, const BackbonePoint&, int) { return !(interrupted = python_interrupted()); });
   }
   if (interrupted) throw py::error_already_set();
-  Table branch{backbone_header(c, hbm.basis().harmonics()), {}}, states{backbone_state_header(hbm.unknowns()), {}};
+  Table branch{backbone_header(c, hbm.basis().harmonic_numbers()), {}}, states{backbone_state_header(hbm.unknowns()), {}};
   for (size_t i = 0; i < r.points.size(); ++i) {
     branch.rows.push_back(backbone_row(r.points[i]));
     states.rows.push_back(backbone_state_row(r.points[i], r.continuation.points[i].u, hbm.unknowns()));

@@ -95,8 +95,28 @@ void bind_options(py::module_& m) {
       .def_readwrite("hill_solver", &StabilityOptions::hill_solver)
       .def_readwrite("cross_check", &StabilityOptions::cross_check);
   bind_options_class<HarmonicBalanceOptions>(m, "HarmonicBalanceOptions", "Harmonic balance settings (case file [harmonic_balance]).",
-                                             {"harmonics", "samples", "condensation"})
-      .def_readwrite("harmonics", &HarmonicBalanceOptions::harmonics)
+                                             {"harmonics", "subharmonic", "samples", "condensation"})
+      // H, or the list of harmonics balanced ([1, 3, 5]: harmonic_balance.harmonics as a list).
+      .def_property(
+          "harmonics",
+          [](const HarmonicBalanceOptions& o) -> py::object {
+            if (o.harmonic_list.empty()) return py::int_(o.harmonics);
+            return py::cast(o.harmonic_list);
+          },
+          [](HarmonicBalanceOptions& o, const py::object& value) {
+            if (py::isinstance<py::int_>(value)) {
+              o.harmonic_list.clear();
+              o.harmonics = value.cast<int>();
+            } else {
+              const auto list = value.cast<std::vector<int>>();
+              if (list.empty()) throw py::value_error("harmonic_balance.harmonics: an empty list (give H, or the harmonics to balance, e.g. [1, 3, 5])");
+              o.harmonic_list = list;
+              o.harmonics = list.back();
+              o.validate();  // a bad list is refused here, naming the rule
+              o.select(list);
+            }
+          })
+      .def_readwrite("subharmonic", &HarmonicBalanceOptions::subharmonic)
       .def_readwrite("samples", &HarmonicBalanceOptions::samples)
       .def_readwrite("condensation", &HarmonicBalanceOptions::condensation);
   bind_options_class<NfrcOptions>(m, "NfrcOptions",

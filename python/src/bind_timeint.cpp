@@ -47,7 +47,7 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
     const Eigen::VectorXd x = start->tail(hbm.unknowns());
     if (!(omega > 0)) omega = start_omega;
     const Eigen::VectorXd full = hbm.expand(x, start_omega);
-    initial = state_from_harmonics(full, n, steady.harmonics, start_omega);
+    initial = state_from_harmonics(full, n, steady.harmonics, hbm.fundamental(start_omega));  // harmonics of omega / nu
     json j = {{"omega", start_omega}};
     add_outputs(j, c, record_point(hbm, x, start_omega, c.outputs));
     for (const OutputDof& out : c.outputs) {

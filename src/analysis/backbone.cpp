@@ -25,16 +25,22 @@ EpmcProblem::EpmcProblem(HarmonicBalance& hbm, const VectorXd& mode, double psi_
       log_amplitude_scale_(log_amplitude_scale), residual_scale_(residual_scale) {
   if (hbm.retained_dofs() != hbm.model().dofs())
     throw std::invalid_argument("backbone: needs every dof as unknown (harmonic_balance.condensation = \"none\")");
+  first_cosine_ = hbm.basis().cosine_index(1);
+  if (first_cosine_ < 0 || hbm.subharmonic() != 1)
+    throw std::invalid_argument("backbone: needs harmonic 1 among harmonic_balance.harmonics (the mode's amplitude and phase are its), and subharmonic = 1");
 }
 
 void EpmcProblem::mass_derivative(const VectorXd& psi, VectorXd& out) const {
   const int n = hbm_.retained_dofs();
   const MatrixXd& m = hbm_.model().mass;
   out.setZero(psi.size());
-  for (int j = 1; j <= hbm_.basis().harmonics(); ++j) {
+  const FourierBasis& basis = hbm_.basis();
+  for (int c = 0; c < basis.coefficients(); ++c) {
+    const int j = basis.harmonic_of(c);
+    if (j == 0 || basis.is_sine(c)) continue;
     // x = a cos + b sin  ->  x' (unit frequency) = j b cos - j a sin
-    out.segment((2 * j - 1) * n, n).noalias() = j * (m * psi.segment(2 * j * n, n));
-    out.segment(2 * j * n, n).noalias() = -j * (m * psi.segment((2 * j - 1) * n, n));
+    out.segment(c * n, n).noalias() = j * (m * psi.segment((c + 1) * n, n));
+    out.segment((c + 1) * n, n).noalias() = -j * (m * psi.segment(c * n, n));
   }
 }
 
@@ -46,7 +52,8 @@ void EpmcProblem::evaluate(const VectorXd& u, double lambda, VectorXd& r, Matrix
   hbm_.evaluate(a * psi, omega, r_hb_, need_j ? &j_hb_ : nullptr, jacobian ? &r_omega_ : nullptr);
   mass_derivative(psi, dpsi_);
   const double s = residual_scale_;  // the two normalisation rows weigh as the residual
-  const auto a1 = psi.segment(n, n), b1 = psi.segment(2 * n, n);
+  const int ia = first_cosine_ * n, ib = ia + n;
+  const auto a1 = psi.segment(ia, n), b1 = psi.segment(ib, n);
   const MatrixXd& m = hbm_.model().mass;
   r.resize(N + 2);
   r.head(N) = r_hb_ / a - xi * omega * dpsi_;
@@ -56,15 +63,18 @@ void EpmcProblem::evaluate(const VectorXd& u, double lambda, VectorXd& r, Matrix
     MatrixXd& J = *jacobian;
     J.setZero(N + 2, N + 2);
     J.topLeftCorner(N, N) = j_hb_;  // d(R(a psi)/a)/d psi
-    for (int j = 1; j <= hbm_.basis().harmonics(); ++j) {
-      J.block((2 * j - 1) * n, 2 * j * n, n, n) -= xi * omega * j * m;
-      J.block(2 * j * n, (2 * j - 1) * n, n, n) += xi * omega * j * m;
+    const FourierBasis& basis = hbm_.basis();
+    for (int c = 0; c < basis.coefficients(); ++c) {
+      const int j = basis.harmonic_of(c);
+      if (j == 0 || basis.is_sine(c)) continue;
+      J.block(c * n, (c + 1) * n, n, n) -= xi * omega * j * m;
+      J.block((c + 1) * n, c * n, n, n) += xi * omega * j * m;
     }
     J.col(N).head(N) = r_omega_ / a - xi * dpsi_;
     J.col(N + 1).head(N) = -omega * dpsi_;
-    J.row(N).segment(n, n) = 2 * s * (m * a1).transpose();
-    J.row(N).segment(2 * n, n) = 2 * s * (m * b1).transpose();
-    J.row(N + 1).segment(2 * n, n) = s * mode_m_.transpose();
+    J.row(N).segment(ia, n) = 2 * s * (m * a1).transpose();
+    J.row(N).segment(ib, n) = 2 * s * (m * b1).transpose();
+    J.row(N + 1).segment(ib, n) = s * mode_m_.transpose();
   }
   if (r_lambda) {
     // d/d(log10 a) of R(a psi)/a = ln 10 (J psi - R / a).
@@ -91,10 +101,11 @@ BackbonePoint backbone_point(HarmonicBalance& hbm, const VectorXd& u, double lam
   p.recorded = record_point(hbm, x, p.omega, outputs);
   const VectorXd full = hbm.expand(x, p.omega);
   const int h = hbm.basis().harmonics();
+  const std::vector<int>& listed = hbm.basis().harmonic_numbers();
   for (const OutputDof& o : outputs) {
     const VectorXd c = dof_harmonics(full, hbm.model().dofs(), h, o.dof);
-    VectorXd magnitudes(h + 1);  // as branch.csv of frc: h0 the (signed) mean
-    for (int j = 0; j <= h; ++j) magnitudes(j) = harmonic_magnitude(c, j);
+    VectorXd magnitudes(static_cast<Eigen::Index>(listed.size()));  // as branch.csv of frc: h0 the (signed) mean
+    for (size_t i = 0; i < listed.size(); ++i) magnitudes(static_cast<Eigen::Index>(i)) = harmonic_magnitude(c, listed[i]);
     p.harmonics.push_back(magnitudes);
   }
   return p;
@@ -123,7 +134,7 @@ BackboneResult compute_backbone(HarmonicBalance& hbm, const BackboneOptions& opt
 
   const int N = hbm.unknowns(), n = model.dofs();
   VectorXd u0 = VectorXd::Zero(N + 2);
-  u0.segment(n, n) = phi;  // cosine part of harmonic 1: psi_1^T M psi_1 = 1
+  u0.segment(hbm.basis().cosine_index(1) * n, n) = phi;  // cosine part of harmonic 1: psi_1^T M psi_1 = 1
   u0(N) = result.linear_omega;
   u0(N + 1) = result.linear_xi;
   const double residual = (model.stiffness * phi).cwiseAbs().maxCoeff();

@@ -9,7 +9,8 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 SwitchedBranch switch_at_branch_point(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
-                                      const VectorXd& x_bp, double omega_bp, const VectorXd& known) {
+                                      const VectorXd& x_bp, double omega_bp, const VectorXd& known, bool both_ways, bool local_steps,
+                                      const RecordedObserver& leg_observer) {
   options.validate();
   const int n = hbm.unknowns();
   if (x_bp.size() != n || known.size() != n + 1) throw std::invalid_argument("switch: state sizes do not match the system");
@@ -40,27 +41,31 @@ SwitchedBranch switch_at_branch_point(HarmonicBalance& hbm, const NfrcOptions& o
   out.tangent.normalize();
 
   // Predictor a few steps along it; corrector on the hyperplane normal to it (scaled Newton).
-  const double h = 2 * options.continuation.step;
   VectorXd y0(n + 1);
   y0.head(n) = x_bp.cwiseQuotient(s);
   y0(n) = omega_bp / sl;
-  const VectorXd target = y0 + h * out.tangent;
-  VectorXd y = target;
+  VectorXd target, y;
   MatrixXd bordered(n + 1, n + 1);
   VectorXd f(n + 1);
   bool converged = false;
-  for (int it = 0; it < 4 * options.continuation.max_iterations && !converged; ++it) {
-    const VectorXd x = y.head(n).cwiseProduct(s);
-    problem.evaluate(x, y(n) * sl, r, &jac, &r_omega);
-    f.head(n) = r / rs;
-    f(n) = out.tangent.dot(y - target);
-    if (!f.allFinite()) break;
-    converged = f.head(n).cwiseAbs().maxCoeff() <= options.continuation.tolerance && std::abs(f(n)) <= 1e-12;
-    if (converged) break;
-    bordered.topLeftCorner(n, n) = jac * s.asDiagonal() / rs;
-    bordered.topRightCorner(n, 1) = r_omega * sl / rs;
-    bordered.row(n) = out.tangent.transpose();
-    y -= bordered.partialPivLu().solve(f);
+  double distance = 2 * options.continuation.step;
+  for (double h = distance; !converged && h >= options.continuation.step / 32; h /= 2) {
+    distance = h;
+    target = y0 + h * out.tangent;
+    y = target;
+    for (int it = 0; it < 4 * options.continuation.max_iterations && !converged; ++it) {
+      const VectorXd x = y.head(n).cwiseProduct(s);
+      problem.evaluate(x, y(n) * sl, r, &jac, &r_omega);
+      f.head(n) = r / rs;
+      f(n) = out.tangent.dot(y - target);
+      if (!f.allFinite()) break;
+      converged = f.head(n).cwiseAbs().maxCoeff() <= options.continuation.tolerance && std::abs(f(n)) <= 1e-12;
+      if (converged) break;
+      bordered.topLeftCorner(n, n) = jac * s.asDiagonal() / rs;
+      bordered.topRightCorner(n, 1) = r_omega * sl / rs;
+      bordered.row(n) = out.tangent.transpose();
+      y -= bordered.partialPivLu().solve(f);
+    }
   }
   if (!converged) throw std::runtime_error("switch: Newton did not converge on the new branch next to the branch point");
   out.x1 = y.head(n).cwiseProduct(s);
@@ -71,8 +76,13 @@ SwitchedBranch switch_at_branch_point(HarmonicBalance& hbm, const NfrcOptions& o
   // when that is zero (a pitchfork in omega) either way is tried.
   const double lo = std::min(options.omega_start, options.omega_end), hi = std::max(options.omega_start, options.omega_end);
   const int away = out.omega1 >= omega_bp ? 1 : -1;
-  out.away = compute_branch(hbm, options, outputs, out.x1, out.omega1, ParameterWindow{lo, hi, away, true});
-  out.through = compute_branch(hbm, options, outputs, out.x1, out.omega1, ParameterWindow{lo, hi, -away, true});
+  NfrcOptions legs = options;
+  if (local_steps) {
+    legs.continuation.step_max = std::max(distance, legs.continuation.step_min);
+    legs.continuation.step = std::max(distance / 2, legs.continuation.step_min);
+  }
+  out.away = compute_branch(hbm, legs, outputs, out.x1, out.omega1, ParameterWindow{lo, hi, away, true}, leg_observer);
+  if (both_ways) out.through = compute_branch(hbm, legs, outputs, out.x1, out.omega1, ParameterWindow{lo, hi, -away, true}, leg_observer);
   return out;
 }
 

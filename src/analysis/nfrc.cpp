@@ -20,11 +20,16 @@ RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
                            const std::vector<OutputDof>& outputs) {
   RecordedPoint p;
   p.omega = omega;
+  p.harmonic_numbers = hbm.basis().harmonic_numbers();
+  p.subharmonic = hbm.subharmonic();
   if (outputs.empty()) return p;
   const Eigen::VectorXd full = hbm.expand(x, omega);
   const int samples = std::max(hbm.basis().samples(), 256);
-  for (const OutputDof& o : outputs)
+  for (const OutputDof& o : outputs) {
     p.outputs.push_back(output_values(full, hbm.model().dofs(), hbm.basis().harmonics(), o.dof, samples));
+    // h1 is the harmonic at omega: basis harmonic nu (the extremes are over the whole period).
+    p.outputs.back().h1 = hbm.subharmonic() <= hbm.basis().harmonics() ? harmonic_magnitude(p.outputs.back().harmonics, hbm.subharmonic()) : 0.0;
+  }
   return p;
 }
 

@@ -1,6 +1,7 @@
 #include "hbtrack/hbm/harmonic_balance.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <complex>
 #include <optional>
 #include <set>
@@ -17,7 +18,49 @@ using Eigen::MatrixXd;
 using Eigen::VectorXcd;
 using Eigen::VectorXd;
 
+namespace {
+std::string list_text(const std::vector<int>& list) {
+  std::string text = "[";
+  for (size_t i = 0; i < list.size(); ++i) text += (i ? ", " : "") + std::to_string(list[i]);
+  return text + "]";
+}
+}  // namespace
+
+std::vector<int> HarmonicBalanceOptions::selected_harmonics() const {
+  if (!harmonic_list.empty()) return harmonic_list;
+  std::vector<int> all;
+  for (int k = 0; k <= harmonics; ++k) all.push_back(k);
+  return all;
+}
+
+void HarmonicBalanceOptions::select(const std::vector<int>& list) {
+  bool full = !list.empty() && list.front() == 0;
+  for (size_t i = 0; full && i < list.size(); ++i) full = list[i] == static_cast<int>(i);
+  harmonic_list = full ? std::vector<int>{} : list;
+  if (!list.empty()) harmonics = list.back();
+}
+
+std::string harmonic_label(int k, int subharmonic) {
+  if (subharmonic <= 1 || k % subharmonic == 0) return std::to_string(subharmonic <= 1 ? k : k / subharmonic);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", static_cast<double>(k) / subharmonic);
+  return text;
+}
+
 void HarmonicBalanceOptions::validate() const {
+  if (!harmonic_list.empty()) {
+    const std::string got = ", got " + list_text(harmonic_list);
+    for (size_t i = 0; i < harmonic_list.size(); ++i) {
+      if (harmonic_list[i] < 0) throw std::invalid_argument("harmonic_balance.harmonics: a list of harmonics must hold integers >= 0" + got);
+      if (i > 0 && harmonic_list[i] <= harmonic_list[i - 1])
+        throw std::invalid_argument("harmonic_balance.harmonics: a list of harmonics must be sorted and unique (increasing)" + got);
+    }
+    if (harmonic_list.back() < 1) throw std::invalid_argument("harmonic_balance.harmonics: a list of harmonics needs one >= 1" + got);
+    if (harmonics != harmonic_list.back())
+      throw std::invalid_argument("harmonic_balance.harmonics: H = " + std::to_string(harmonics) + " is not the list's largest" + got);
+  }
+  if (subharmonic < 1 || subharmonic > 16)
+    throw std::invalid_argument("harmonic_balance.subharmonic: must be in [1, 16], got " + std::to_string(subharmonic));
   if (harmonics < 1) throw std::invalid_argument("harmonic_balance.harmonics: must be >= 1, got " + std::to_string(harmonics));
   if (harmonics > 500) throw std::invalid_argument("harmonic_balance.harmonics: must be <= 500, got " + std::to_string(harmonics));
   if (samples != 0 && samples < 2 * harmonics + 1)
@@ -41,12 +84,19 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
       elements_(std::move(elements)),
       parameters_(std::move(parameters)),
       options_(std::move(options)),
-      basis_((options_.validate(), options_.harmonics), options_.effective_samples()) {
+      basis_((options_.validate(), options_.selected_harmonics()), options_.effective_samples()) {
   model_.validate();
+  const std::vector<int>& listed = basis_.harmonic_numbers();
   for (const HarmonicForce& h : model_.forcing)
-    if (h.order > options_.harmonics)
-      throw std::invalid_argument("forcing harmonic " + std::to_string(h.order) + " exceeds the " + std::to_string(options_.harmonics) +
-                                  " harmonics balanced (it would be dropped)");
+    if (std::find(listed.begin(), listed.end(), h.order * options_.subharmonic) == listed.end())
+      throw std::invalid_argument("forcing harmonic " + std::to_string(h.order) + " is not among the harmonics balanced, " +
+                                  list_text(listed) + (options_.subharmonic > 1 ? " x omega/" + std::to_string(options_.subharmonic) : "") +
+                                  " (it would be dropped)");
+  for (int c = 0; c < basis_.coefficients(); ++c)
+    if (c == 0 || basis_.harmonic_of(c) != basis_.harmonic_of(c - 1)) slot_offset_.push_back(c);
+  // The condensers' harmonic j is at j * fundamental: the forcing's order h is harmonic h nu.
+  StructuralModel linear_model = model_;
+  for (HarmonicForce& h : linear_model.forcing) h.order *= options_.subharmonic;
   amplitude_index_ = parameters_.find("amplitude");
   if (amplitude_index_ < 0) amplitude_index_ = parameters_.set("amplitude", 1.0);
 
@@ -77,9 +127,9 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
   if (method == "modal") {
     if (!modes_diagonalise_damping(model_))
       throw std::invalid_argument("harmonic_balance.condensation: 'modal' needs damping diagonalised by the normal modes and K > 0; use 'schur'");
-    condenser_ = make_modal_condenser(model_, retained_, options_.harmonics);
+    condenser_ = make_modal_condenser(linear_model, retained_, options_.harmonics);
   } else {
-    condenser_ = make_schur_condenser(model_, retained_, options_.harmonics);
+    condenser_ = make_schur_condenser(linear_model, retained_, options_.harmonics);
   }
 
   // An element that reads the linear residual at its dofs (DLFT) must be alone on them: another
@@ -101,7 +151,9 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
     ElementSlot& s = slots_[e];
     for (int d : elements_[e]->dofs)
       s.columns.push_back(static_cast<int>(std::lower_bound(retained_.begin(), retained_.end(), d) - retained_.begin()));
-    s.sigma = lanczos_factors(options_.harmonics, elements_[e]->lanczos_exponent);
+    const Eigen::VectorXd dense_sigma = lanczos_factors(options_.harmonics, elements_[e]->lanczos_exponent);
+    s.sigma.resize(basis_.coefficients());
+    for (int c = 0; c < basis_.coefficients(); ++c) s.sigma(c) = dense_sigma(basis_.dense_index(c));
     s.x.resize(n_samples, elements_[e]->local_dofs());
     s.v.resize(n_samples, elements_[e]->local_dofs());
   }
@@ -117,52 +169,67 @@ void HarmonicBalance::sample(const VectorXd& x, double omega) {
     ElementSlot& s = slots_[e];
     for (size_t i = 0; i < s.columns.size(); ++i) {
       s.x.col(static_cast<Eigen::Index>(i)) = x_samples_.col(s.columns[i]);
-      s.v.col(static_cast<Eigen::Index>(i)) = omega * v_unit_samples_.col(s.columns[i]);
+      s.v.col(static_cast<Eigen::Index>(i)) = fundamental(omega) * v_unit_samples_.col(s.columns[i]);
     }
   }
 }
 
-VectorXcd HarmonicBalance::harmonic(const VectorXd& x, int j, int dofs) const {
-  if (j == 0) return x.segment(0, dofs).cast<cd>();
-  return x.segment((2 * j - 1) * dofs, dofs).cast<cd>() - cd(0, 1) * x.segment(2 * j * dofs, dofs).cast<cd>();
+VectorXcd HarmonicBalance::harmonic(const VectorXd& x, int slot, int dofs) const {
+  const int c = slot_offset(slot);
+  if (basis_.harmonic_of(c) == 0) return x.segment(0, dofs).cast<cd>();
+  return x.segment(c * dofs, dofs).cast<cd>() - cd(0, 1) * x.segment((c + 1) * dofs, dofs).cast<cd>();
+}
+
+// The frequency an element is handed: the forcing's when it depends on it explicitly (the tip
+// contact's rotation speed), else the basis' fundamental omega / nu, whose period the N samples
+// span (a law averaged over each sample's interval, ScalarElement, reads the interval from it).
+double element_frequency(const NonlinearElement& element, double omega, int subharmonic) {
+  return element.depends_on_omega() ? omega : omega / subharmonic;
 }
 
 void HarmonicBalance::omega_derivative_samples(const ElementSlot& s, MatrixXd& df) const {
-  // d f/d omega = (df/dv) v/omega + explicit dependence; v/omega = the unit-frequency velocity.
+  // d f/d omega = (df/dv) v/omega + explicit dependence; v/omega = the unit-frequency velocity
+  // over nu (v = (omega / nu) dx/dtau).
   const ElementResponse& resp = s.response;
   const int k = static_cast<int>(s.columns.size());
   df.setZero(resp.force.rows(), k);
   if (resp.dforce_dv.size() > 0)
     for (int i = 0; i < k; ++i)
       for (int jd = 0; jd < k; ++jd)
-        df.col(i).array() += resp.dforce_dv.col(i + k * jd).array() * v_unit_samples_.col(s.columns[static_cast<size_t>(jd)]).array();
-  if (resp.dforce_domega.size() > 0) df += resp.dforce_domega;
+        df.col(i).array() += resp.dforce_dv.col(i + k * jd).array() * v_unit_samples_.col(s.columns[static_cast<size_t>(jd)]).array() /
+                             options_.subharmonic;
+  if (resp.dforce_domega.size() > 0) {
+    // d/d(the frequency the element was handed): omega, or omega / nu (element_frequency).
+    const NonlinearElement& element = *elements_[static_cast<size_t>(&s - slots_.data())];
+    df += resp.dforce_domega * (element.depends_on_omega() ? 1.0 : 1.0 / options_.subharmonic);
+  }
 }
 
 void HarmonicBalance::add_condensed_linear_part(const VectorXd& x, VectorXd& r, MatrixXd* jacobian, VectorXd* r_omega) {
   const int q = retained_dofs();
   const double amplitude = parameters_.value(amplitude_index_);
-  for (int j = 0; j <= options_.harmonics; ++j) {
-    const VectorXcd z = harmonic(x, j, q);
+  for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
+    const int j = basis_.harmonic_numbers()[static_cast<size_t>(slot)];
+    const VectorXcd z = harmonic(x, slot, q);
     const Eigen::MatrixXcd& zr = condenser_->reduced_stiffness(j);
     const VectorXcd rc = zr * z - amplitude * condenser_->reduced_force(j);
     // z = a - i b and R_a - i R_b = rc, so R_a = Re(rc), R_b = -Im(rc).
-    const int ia = j == 0 ? 0 : (2 * j - 1) * q;
+    const int ia = slot_offset(slot) * q;
     r.segment(ia, q) += rc.real();
-    if (j > 0) r.segment(2 * j * q, q) -= rc.imag();
+    if (j > 0) r.segment(ia + q, q) -= rc.imag();
     if (jacobian) {
       jacobian->block(ia, ia, q, q) += zr.real();
       if (j > 0) {
-        const int ib = 2 * j * q;
+        const int ib = ia + q;
         jacobian->block(ia, ib, q, q) += zr.imag();
         jacobian->block(ib, ia, q, q) -= zr.imag();
         jacobian->block(ib, ib, q, q) += zr.real();
       }
     }
-    if (r_omega) {
-      const VectorXcd dc = condenser_->omega_derivative(j, z, amplitude);
+    if (r_omega) {  // the condenser's derivative is in the fundamental, omega / nu
+      const VectorXcd dc = condenser_->omega_derivative(j, z, amplitude) / static_cast<double>(options_.subharmonic);
       r_omega->segment(ia, q) += dc.real();
-      if (j > 0) r_omega->segment(2 * j * q, q) -= dc.imag();
+      if (j > 0) r_omega->segment(ia + q, q) -= dc.imag();
     }
   }
 }
@@ -232,7 +299,7 @@ void HarmonicBalance::add_element_blocks(ElementSlot& s, double omega, int strid
           scatter(*velocity_jacobian, block_v_, ri, cj);
         } else {
           basis_.right_multiply_derivative(block_v_);
-          block_ += omega * block_v_;
+          block_ += fundamental(omega) * block_v_;
         }
       }
       if (jacobian) scatter(*jacobian, block_, ri, cj);
@@ -295,7 +362,7 @@ void HarmonicBalance::evaluate(const VectorXd& x, double omega, VectorXd& r, Mat
   if (residual_elements_) return;
   // The condensed linear part (Schur complements per harmonic when omega changed).
   const ScopedPhase timing(Phase::jacobian);
-  condenser_->update(omega);
+  condenser_->update(fundamental(omega));
   add_condensed_linear_part(x, r, jacobian, r_omega);
 }
 
@@ -305,12 +372,13 @@ VectorXd HarmonicBalance::parameter_derivative(const VectorXd& x, double omega, 
   VectorXd out = VectorXd::Zero(unknowns());
   if (parameter < 0 || parameter >= parameters_.size()) throw std::out_of_range("parameter index out of range");
   if (parameter == amplitude_index_) {
-    condenser_->update(omega);
-    for (int j = 0; j <= options_.harmonics; ++j) {
+    condenser_->update(fundamental(omega));
+    for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
+      const int j = basis_.harmonic_numbers()[static_cast<size_t>(slot)];
       const VectorXcd& f = condenser_->reduced_force(j);
-      const int ia = j == 0 ? 0 : (2 * j - 1) * q;
+      const int ia = slot_offset(slot) * q;
       out.segment(ia, q) -= f.real();
-      if (j > 0) out.segment(2 * j * q, q) += f.imag();
+      if (j > 0) out.segment(ia + q, q) += f.imag();
     }
   }
   bool sampled = false;
@@ -354,10 +422,11 @@ VectorXd HarmonicBalance::expand(const VectorXd& x, double omega) {
   const int q = retained_dofs();
   const int n = model_.dofs();
   const double amplitude = parameters_.value(amplitude_index_);
-  condenser_->update(omega);
-  VectorXd full(n * basis_.coefficients());
-  for (int j = 0; j <= options_.harmonics; ++j) {
-    const VectorXcd xf = condenser_->recover(j, harmonic(x, j, q), amplitude);
+  condenser_->update(fundamental(omega));
+  VectorXd full = VectorXd::Zero(n * (2 * options_.harmonics + 1));
+  for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
+    const int j = basis_.harmonic_numbers()[static_cast<size_t>(slot)];
+    const VectorXcd xf = condenser_->recover(j, harmonic(x, slot, q), amplitude);
     if (j == 0) {
       full.segment(0, n) = xf.real();
     } else {
@@ -371,16 +440,14 @@ VectorXd HarmonicBalance::expand(const VectorXd& x, double omega) {
 VectorXd HarmonicBalance::linear_solution(double omega) {
   const int q = retained_dofs();
   const double amplitude = parameters_.value(amplitude_index_);
-  condenser_->update(omega);
+  condenser_->update(fundamental(omega));
   VectorXd x(unknowns());
-  for (int j = 0; j <= options_.harmonics; ++j) {
+  for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
+    const int j = basis_.harmonic_numbers()[static_cast<size_t>(slot)];
     const VectorXcd z = condenser_->reduced_stiffness(j).partialPivLu().solve(amplitude * condenser_->reduced_force(j));
-    if (j == 0) {
-      x.segment(0, q) = z.real();
-    } else {
-      x.segment((2 * j - 1) * q, q) = z.real();
-      x.segment(2 * j * q, q) = -z.imag();
-    }
+    const int ia = slot_offset(slot) * q;
+    x.segment(ia, q) = z.real();
+    if (j > 0) x.segment(ia + q, q) = -z.imag();
   }
   return x;
 }
@@ -430,7 +497,7 @@ double HarmonicBalance::nonlinear_adjoint_products(const VectorXd& x, double ome
     const NonlinearElement& element = *elements_[e];
     ElementSlot& s = slots_[e];
     const int k = element.local_dofs();
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), element.property_values(parameters_), s.response, false);
     const ElementResponse& resp = s.response;
     coeffs_.resize(nc, k);
     for (int i = 0; i < k; ++i)
@@ -459,7 +526,7 @@ double HarmonicBalance::nonlinear_adjoint_products(const VectorXd& x, double ome
   jacobian_transpose_w.resize(unknowns());
   Eigen::Map<MatrixXd> out_coeffs(jacobian_transpose_w.data(), q, nc);
   out_coeffs.noalias() = adjoint_x_.transpose() * basis_.synthesis();
-  out_coeffs.noalias() += omega * (adjoint_v_.transpose() * basis_.derivative_synthesis());
+  out_coeffs.noalias() += fundamental(omega) * (adjoint_v_.transpose() * basis_.derivative_synthesis());
   return w_dot_omega_derivative;
 }
 
@@ -467,13 +534,15 @@ VectorXd HarmonicBalance::linear_omega_derivative(const VectorXd& d, double omeg
   const int q = retained_dofs();
   if (d.size() != unknowns()) throw std::invalid_argument("HarmonicBalance::linear_omega_derivative: d has the wrong size");
   const ScopedPhase timing(Phase::jacobian);
-  condenser_->update(omega);
+  condenser_->update(fundamental(omega));
   VectorXd out = VectorXd::Zero(unknowns());
-  for (int j = 0; j <= options_.harmonics; ++j) {
+  for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
+    const int j = basis_.harmonic_numbers()[static_cast<size_t>(slot)];
     // Amplitude 0: without the forcing term, omega_derivative is linear in z.
-    const VectorXcd dc = condenser_->omega_derivative(j, harmonic(d, j, q), 0.0);
-    out.segment(j == 0 ? 0 : (2 * j - 1) * q, q) += dc.real();
-    if (j > 0) out.segment(2 * j * q, q) -= dc.imag();
+    const VectorXcd dc = condenser_->omega_derivative(j, harmonic(d, slot, q), 0.0) / static_cast<double>(options_.subharmonic);
+    const int ia = slot_offset(slot) * q;
+    out.segment(ia, q) += dc.real();
+    if (j > 0) out.segment(ia + q, q) -= dc.imag();
   }
   return out;
 }
@@ -491,28 +560,30 @@ void HarmonicBalance::hill_matrices(const VectorXd& x, double omega, MatrixXd& j
   damping.setZero(size, size);
   // Linear part per harmonic: [[K - (jw)^2 M, jw C], [-jw C, K - (jw)^2 M]] in the full
   // Jacobian; 2w (nabla x M) + I x C in the velocity matrix.
-  for (int j = 0; j <= options_.harmonics; ++j) {
-    const MatrixXd kd = model_.stiffness - (j * omega) * (j * omega) * model_.mass;
+  const double w = fundamental(omega);
+  for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
+    const int j = basis_.harmonic_numbers()[static_cast<size_t>(slot)];
+    const MatrixXd kd = model_.stiffness - (j * w) * (j * w) * model_.mass;
+    const int a = slot_offset(slot) * n, b = a + n;
     if (j == 0) {
-      jacobian.block(0, 0, n, n) = kd;
-      damping.block(0, 0, n, n) = model_.damping;
+      jacobian.block(a, a, n, n) = kd;
+      damping.block(a, a, n, n) = model_.damping;
       continue;
     }
-    const int a = (2 * j - 1) * n, b = 2 * j * n;
     jacobian.block(a, a, n, n) = kd;
     jacobian.block(b, b, n, n) = kd;
-    jacobian.block(a, b, n, n) = j * omega * model_.damping;
-    jacobian.block(b, a, n, n) = -j * omega * model_.damping;
+    jacobian.block(a, b, n, n) = j * w * model_.damping;
+    jacobian.block(b, a, n, n) = -j * w * model_.damping;
     damping.block(a, a, n, n) = model_.damping;
     damping.block(b, b, n, n) = model_.damping;
-    damping.block(a, b, n, n) = 2.0 * omega * j * model_.mass;
-    damping.block(b, a, n, n) = -2.0 * omega * j * model_.mass;
+    damping.block(a, b, n, n) = 2.0 * w * j * model_.mass;
+    damping.block(b, a, n, n) = -2.0 * w * j * model_.mass;
   }
   sample(x, omega);
   for (size_t e = 0; e < elements_.size(); ++e) {
     const NonlinearElement& element = *elements_[e];
     ElementSlot& s = slots_[e];
-    element.evaluate(s.x, s.v, omega, element.property_values(parameters_), s.response, false);
+    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), element.property_values(parameters_), s.response, false);
     // The velocity part enters the Jacobian as omega (F_v nabla) and D1 as F_v.
     add_element_blocks(s, omega, n, element.dofs, &jacobian, nullptr);
     add_element_blocks(s, omega, n, element.dofs, nullptr, &damping);

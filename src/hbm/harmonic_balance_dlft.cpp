@@ -31,7 +31,7 @@ void HarmonicBalance::evaluate_element(size_t e, double omega, const VectorXd& r
   ElementSlot& s = slots_[e];
   const std::vector<double> props = element.property_values(parameters_);
   if (!element.uses_linear_residual()) {
-    element.evaluate(s.x, s.v, omega, props, s.response, want_property_derivatives);
+    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), props, s.response, want_property_derivatives);
     return;
   }
   const int q = retained_dofs();
@@ -40,7 +40,8 @@ void HarmonicBalance::evaluate_element(size_t e, double omega, const VectorXd& r
   for (int i = 0; i < k; ++i)
     for (int c = 0; c < basis_.coefficients(); ++c) coefficients(c, i) = r_lin(c * q + s.columns[static_cast<size_t>(i)]);
   s.r.noalias() = basis_.synthesis() * coefficients;
-  element.evaluate_with_residual(s.x, s.r, omega, props, s.response, want_property_derivatives);
+  element.evaluate_with_residual(s.x, s.r, element_frequency(element, omega, options_.subharmonic), props, s.response,
+                                 want_property_derivatives);
 }
 
 void HarmonicBalance::add_residual_response(const ElementSlot& s, const VectorXd& v, VectorXd& out) const {

@@ -8,7 +8,7 @@ namespace hbtrack {
 
 using nlohmann::json;
 
-std::vector<std::string> backbone_header(const CaseDefinition& c, int harmonics) {
+std::vector<std::string> backbone_header(const CaseDefinition& c, const std::vector<int>& harmonics) {
   std::vector<std::string> h{"amplitude", "omega", "damping_ratio", "xi"};
   for (const auto& o : c.outputs) {
     for (const char* kind : {"max_", "min_"}) {
@@ -16,9 +16,9 @@ std::vector<std::string> backbone_header(const CaseDefinition& c, int harmonics)
       column += o.name;
       h.push_back(column);
     }
-    for (int j = 0; j <= harmonics; ++j) {
+    for (int j : harmonics) {
       std::string column = "h";
-      column += std::to_string(j);
+      column += harmonic_label(j, c.harmonic_balance.subharmonic);
       column += '_';
       column += o.name;
       h.push_back(column);

@@ -164,8 +164,27 @@ void read_parameters(const CaseReader& in, const toml::value& root, CaseDefiniti
 void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   if (const toml::value* h = in.find(root, "harmonic_balance")) {
     in.table(*h, "harmonic_balance");
-    in.check_keys(*h, "harmonic_balance", {"harmonics", "samples", "condensation"});
-    c.harmonic_balance.harmonics = in.integer_or(*h, "harmonics", "harmonic_balance.harmonics", c.harmonic_balance.harmonics);
+    in.check_keys(*h, "harmonic_balance", {"harmonics", "samples", "condensation", "subharmonic"});
+    const toml::value* list = in.find(*h, "harmonics");
+    if (list && list->is_array()) {
+      // A list of harmonics: sorted, unique integers >= 0 (0 only if listed); H is its largest.
+      std::vector<int> harmonics;
+      for (size_t i = 0; i < list->as_array().size(); ++i)
+        harmonics.push_back(in.integer(list->as_array()[i], "harmonic_balance.harmonics[" + std::to_string(i) + "]"));
+      if (harmonics.empty()) in.fail(list, "harmonic_balance.harmonics", "an empty list (give H, or the harmonics to balance, e.g. [1, 3, 5])");
+      c.harmonic_balance.harmonic_list = harmonics;
+      c.harmonic_balance.harmonics = harmonics.back();
+      try {
+        c.harmonic_balance.validate();
+      } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        if (what.rfind("harmonic_balance.harmonics:", 0) == 0) in.fail(list, "harmonic_balance.harmonics", what.substr(what.find(':') + 2));
+      }
+      c.harmonic_balance.select(harmonics);
+    } else {
+      c.harmonic_balance.harmonics = in.integer_or(*h, "harmonics", "harmonic_balance.harmonics", c.harmonic_balance.harmonics);
+    }
+    c.harmonic_balance.subharmonic = in.integer_or(*h, "subharmonic", "harmonic_balance.subharmonic", 1);
     c.harmonic_balance.samples = in.integer_or(*h, "samples", "harmonic_balance.samples", 0);
     c.harmonic_balance.condensation = in.string_or(*h, "condensation", "harmonic_balance.condensation", "auto");
     try {
@@ -241,8 +260,15 @@ void check_forcing_within_harmonics(const CaseReader& in, const toml::value& roo
   for (size_t i = 0; forcing && i < forcing->as_array().size(); ++i) {
     const toml::value& f = forcing->as_array()[i];
     const std::string field = "forcing[" + std::to_string(i) + "].harmonic";
-    if (in.integer_or(f, "harmonic", field, 1) > harmonics)
-      in.fail(&f.at("harmonic"), field, "must be <= harmonic_balance.harmonics = " + std::to_string(harmonics) + " (a higher harmonic is not represented)");
+    const int order = in.integer_or(f, "harmonic", field, 1);
+    const toml::value* where = in.find(f, "harmonic") ? in.find(f, "harmonic") : &f;
+    if (order * c.harmonic_balance.subharmonic > harmonics)
+      in.fail(where, field, "must be <= harmonic_balance.harmonics = " + std::to_string(harmonics) + " (a higher harmonic is not represented)");
+    const std::vector<int> listed = c.harmonic_balance.selected_harmonics();
+    const int basis_order = order * c.harmonic_balance.subharmonic;
+    if (std::find(listed.begin(), listed.end(), basis_order) == listed.end())
+      in.fail(where, field,
+              "harmonic " + std::to_string(order) + " is not in the list harmonic_balance.harmonics (it would be dropped)");
   }
 }
 

@@ -11,16 +11,20 @@ namespace hbtrack {
 using nlohmann::json;
 
 json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
+  json harmonic_balance = {{"harmonics", c.harmonic_balance.harmonics},
+                           {"samples", hbm.basis().samples()},
+                           {"condensation", hbm.condensation_method()},
+                           {"unknowns", hbm.unknowns()}};
+  // A selection or a subharmonic basis: the list as given, and nu (states.csv holds, per listed
+  // harmonic k, a_k then b_k over the retained dofs; k is a multiple of omega / nu).
+  if (!c.harmonic_balance.harmonic_list.empty()) harmonic_balance["harmonics"] = c.harmonic_balance.harmonic_list;
+  if (c.harmonic_balance.subharmonic != 1) harmonic_balance["subharmonic"] = c.harmonic_balance.subharmonic;
   json params = json::object();
   for (int i = 0; i < hbm.parameters().size(); ++i) params[hbm.parameters().names()[static_cast<size_t>(i)]] = hbm.parameters().value(i);
   const auto& co = c.nfrc.continuation;
   return {{"case", c.path},
           {"parameters", params},
-          {"harmonic_balance",
-           {{"harmonics", c.harmonic_balance.harmonics},
-            {"samples", hbm.basis().samples()},
-            {"condensation", hbm.condensation_method()},
-            {"unknowns", hbm.unknowns()}}},
+          {"harmonic_balance", harmonic_balance},
           {"continuation",
            {{"omega_start", c.nfrc.omega_start},
             {"omega_end", c.nfrc.omega_end},
@@ -57,9 +61,9 @@ void add_outputs(json& j, const CaseDefinition& c, const RecordedPoint& p) {
 }
 
 namespace {
-std::string column_name(const std::string& prefix, int k, const std::string& output) {
+std::string column_name(const std::string& prefix, const std::string& k, const std::string& output) {
   std::string column = prefix;  // appended, not operator+: GCC 12's false -Wrestrict at -O3
-  if (k >= 0) column += std::to_string(k);
+  column += k;
   column += "_";
   column += output;
   return column;
@@ -69,12 +73,15 @@ std::string column_name(const std::string& prefix, int k, const std::string& out
 // position; the other harmonics' magnitudes and all phases come after them.
 void add_output_columns(std::vector<std::string>& header, const CaseDefinition& c) {
   for (const auto& o : c.outputs)
-    for (const char* kind : {"max", "min", "h1"}) header.push_back(column_name(kind, -1, o.name));
-  const int harmonics = c.harmonic_balance.harmonics;
+    for (const char* kind : {"max", "min", "h1"}) header.push_back(column_name(kind, "", o.name));
+  // The harmonics balanced, named by their multiple of omega (k / nu: "3", "0.5"); h1 is above.
+  const std::vector<int> listed = c.harmonic_balance.selected_harmonics();
+  const int nu = c.harmonic_balance.subharmonic;
   for (const auto& o : c.outputs) {
-    for (int k = 0; k <= harmonics; ++k)
-      if (k != 1) header.push_back(column_name("h", k, o.name));
-    for (int k = 1; k <= harmonics; ++k) header.push_back(column_name("phase", k, o.name));
+    for (int k : listed)
+      if (k != nu) header.push_back(column_name("h", harmonic_label(k, nu), o.name));
+    for (int k : listed)
+      if (k > 0) header.push_back(column_name("phase", harmonic_label(k, nu), o.name));
   }
 }
 
@@ -82,10 +89,10 @@ void add_output_values(std::vector<double>& row, const RecordedPoint& p) {
   for (const auto& v : p.outputs) row.insert(row.end(), {v.max, v.min, v.h1});
   for (const auto& v : p.outputs) {
     if (v.harmonics.size() == 0) continue;  // not recorded: the row comes out short, CsvAppender refuses it
-    const int harmonics = static_cast<int>(v.harmonics.size() - 1) / 2;
-    for (int k = 0; k <= harmonics; ++k)
-      if (k != 1) row.push_back(harmonic_magnitude(v.harmonics, k));
-    for (int k = 1; k <= harmonics; ++k) row.push_back(harmonic_phase(v.harmonics, k));
+    for (int k : p.harmonic_numbers)
+      if (k != p.subharmonic) row.push_back(harmonic_magnitude(v.harmonics, k));
+    for (int k : p.harmonic_numbers)
+      if (k > 0) row.push_back(harmonic_phase(v.harmonics, k));
   }
 }
 }  // namespace

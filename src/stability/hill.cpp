@@ -100,11 +100,12 @@ Eigen::VectorXcd all_eigenvalues(const Eigen::MatrixXd& jacobian, const Eigen::M
 // the complex exponentials e^{i k w t} (|k| <= H) of p(t). Members l + i m w of one exponent family
 // have centroids shifted by m; the member whose centroid is nearest 0 is the one the truncation
 // resolves best (Lazarus & Thomas 2010, Guillot et al. 2020), a spurious one sits near +-H.
-double energy_centroid(const Eigen::VectorXcd& p, int n, int blocks) {
+double energy_centroid(const Eigen::VectorXcd& p, int n, const FourierBasis& basis) {
   using C = std::complex<double>;
-  double weighted = 0, total = 0.25 * p.head(n).squaredNorm();
-  for (int j = 1; 2 * j <= blocks - 1; ++j) {
-    const auto c = p.segment((2 * j - 1) * n, n), sn = p.segment(2 * j * n, n);
+  double weighted = 0, total = basis.has_mean() ? 0.25 * p.head(n).squaredNorm() : 0.0;
+  for (int first = basis.has_mean() ? 1 : 0; first < basis.coefficients(); first += 2) {
+    const int j = basis.harmonic_of(first);
+    const auto c = p.segment(first * n, n), sn = p.segment((first + 1) * n, n);
     const double plus = 0.25 * (c - C(0, 1) * sn).squaredNorm(), minus = 0.25 * (c + C(0, 1) * sn).squaredNorm();
     weighted += j * (plus - minus);
     total += plus + minus;
@@ -114,12 +115,15 @@ double energy_centroid(const Eigen::VectorXcd& p, int n, int blocks) {
 
 }  // namespace
 
-FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const std::string& solver) {
+FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double forcing_omega, const std::string& solver) {
   const int n = hbm.model().dofs();
+  // The exponent families are l + i k w with w the basis' fundamental (omega / nu), and the
+  // multipliers are over its period.
+  const double omega = hbm.fundamental(forcing_omega);
   // Reused from call to call: two dense n(2H+1) squares (11 MB on the blade) would otherwise be
   // mapped and faulted in afresh at every point.
   thread_local Eigen::MatrixXd jacobian, damping;
-  hbm.hill_matrices(x, omega, jacobian, damping);
+  hbm.hill_matrices(x, forcing_omega, jacobian, damping);
   const Eigen::Index size = jacobian.rows();
   const int blocks = hbm.basis().coefficients();
   // Dense QR on the whole spectrum while it is cheap; beyond, the 2n eigenvalues nearest the
@@ -138,7 +142,7 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   }
   if (all.size() == 0) all = all_eigenvalues(jacobian, damping, hbm.model().mass, blocks, vectors);
   std::vector<double> centroid(static_cast<size_t>(all.size()));  // signed, in harmonics
-  for (Eigen::Index i = 0; i < all.size(); ++i) centroid[static_cast<size_t>(i)] = energy_centroid(vectors.col(i), n, blocks);
+  for (Eigen::Index i = 0; i < all.size(); ++i) centroid[static_cast<size_t>(i)] = energy_centroid(vectors.col(i), n, hbm.basis());
   std::vector<Eigen::Index> order(static_cast<size_t>(all.size()));
   std::iota(order.begin(), order.end(), 0);
   // Most central eigenvectors first (not smallest |Im l|: on a law that is not smooth, spurious

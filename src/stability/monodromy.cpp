@@ -75,15 +75,17 @@ bool keeps(const HistoryStep& s, int j) {
 
 }  // namespace
 
-FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int steps) {
+FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double forcing_omega, int steps) {
   const StructuralModel& model = hbm.model();
   const int n = model.dofs();
-  const int h = hbm.basis().harmonics();
+  const int h = hbm.basis().harmonics();  // the expanded solution's dense layout 0..H
+  // The solution's period is that of the basis' fundamental (omega / nu); the elements see omega.
+  const double omega = hbm.fundamental(forcing_omega);
   const double period = 2.0 * std::numbers::pi / omega;
   const double dt = period / steps;
   // Displacement and velocity of every dof at the 2*steps+1 stage times (steps and midpoints).
   const int samples = 2 * steps + 1;
-  const Eigen::VectorXd full = hbm.expand(x, omega);
+  const Eigen::VectorXd full = hbm.expand(x, forcing_omega);
   const Eigen::Map<const MatrixXd> coeffs(full.data(), n, 2 * h + 1);
   MatrixXd basis(samples, 2 * h + 1), dbasis(samples, 2 * h + 1);
   for (int s = 0; s < samples; ++s) {
@@ -120,7 +122,8 @@ FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, 
       vl.col(i) = vel.col(element->dofs[static_cast<size_t>(i)]);
     }
     ElementResponse resp;
-    element->evaluate(xl, vl, omega, props, resp, false);
+    // As the harmonic balance hands it (the samples span the period of omega / nu).
+    element->evaluate(xl, vl, element->depends_on_omega() ? forcing_omega : omega, props, resp, false);
     for (int s = 0; s < samples; ++s)
       for (int i = 0; i < k; ++i)
         for (int j = 0; j < k; ++j) {

@@ -26,12 +26,13 @@ using Eigen::VectorXd;
 // sampled on one side of every jump. The state itself is C1 across a C0 law's corner.
 class PeriodFlow {
  public:
-  explicit PeriodFlow(EquationOfMotion& equation) : eq_(equation), n_(equation.dofs()) {
+  // `periods` forcing periods: nu for a solution of period nu 2 pi / omega (a subharmonic basis).
+  PeriodFlow(EquationOfMotion& equation, int periods) : eq_(equation), n_(equation.dofs()), periods_(periods) {
     mass_inverse_ = equation.mass().llt().solve(MatrixXd::Identity(n_, n_));
   }
 
   void run(const VectorXd& z0, int steps, VectorXd& z, MatrixXd& phi) {
-    const double period = eq_.period(), dt = period / steps;
+    const double period = periods_ * eq_.period(), dt = period / steps;
     z = z0;
     phi = MatrixXd::Identity(2 * n_, 2 * n_);
     double t = 0;
@@ -134,6 +135,7 @@ class PeriodFlow {
 
   EquationOfMotion& eq_;
   int n_;
+  int periods_;
   MatrixXd mass_inverse_, dfdx_, dfdv_;
   VectorXd force_, nonlinear_;
 };
@@ -146,7 +148,8 @@ FloquetResult shooting_floquet(HarmonicBalance& hbm, const VectorXd& x, double o
   // it, and their periodicity be solved for. The monodromy matrix carries them instead.
   if (equation.history_size() > 0) throw std::invalid_argument("shooting: history elements (friction sliders) are not supported");
   const int n = equation.dofs();
-  const MotionState start = state_from_harmonics(hbm.expand(x, omega), n, hbm.basis().harmonics(), omega);
+  // The basis' harmonics are multiples of the fundamental omega / nu, the orbit's period nu T.
+  const MotionState start = state_from_harmonics(hbm.expand(x, omega), n, hbm.basis().harmonics(), hbm.fundamental(omega));
   VectorXd z0(2 * n);
   z0 << start.x, start.v;
   // Velocities weigh as omega * displacement, so that the test is a relative one on both.
@@ -158,7 +161,7 @@ FloquetResult shooting_floquet(HarmonicBalance& hbm, const VectorXd& x, double o
   constexpr int kMaxIterations = 12;
   constexpr double kTolerance = 1e-9;
 
-  PeriodFlow flow(equation);
+  PeriodFlow flow(equation, hbm.subharmonic());
   ShootingOutcome result;
   VectorXd z;
   MatrixXd phi;
@@ -181,11 +184,11 @@ FloquetResult shooting_floquet(HarmonicBalance& hbm, const VectorXd& x, double o
 
   FloquetResult r;
   r.method = "shooting";
-  const double period = equation.period();
+  const double period = hbm.subharmonic() * equation.period();
   const Eigen::VectorXcd mu = phi.allFinite() ? Eigen::VectorXcd(Eigen::EigenSolver<MatrixXd>(phi, false).eigenvalues())
                                               : Eigen::VectorXcd::Constant(2 * n, std::complex<double>(INFINITY, 0));
   r.exponents = mu.array().log() / period;
-  finish_floquet(r, omega, 1e-9 * omega);
+  finish_floquet(r, hbm.fundamental(omega), 1e-9 * omega);
   r.multipliers = mu;
   return r;
 }

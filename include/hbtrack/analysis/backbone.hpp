@@ -42,6 +42,7 @@ class EpmcProblem final : public ContinuationProblem {
 
   HarmonicBalance& hbm_;
   Eigen::VectorXd mode_m_;  // M * mode
+  int first_cosine_ = 1;    // coefficient index of harmonic 1's cosine
   double psi_scale_, omega_scale_, xi_scale_, log_amplitude_scale_, residual_scale_;
   Eigen::VectorXd r_hb_, r_omega_, dpsi_;
   Eigen::MatrixXd j_hb_;

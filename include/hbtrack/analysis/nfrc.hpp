@@ -62,6 +62,9 @@ struct RecordedPoint {
   // The Floquet exponents (1/s) and multipliers that decided `stable` (empty when not computed).
   Eigen::VectorXcd floquet_exponents, floquet_multipliers;
   std::string stability_method;       // what decided `stable`: hill | monodromy ("" not computed)
+  // The harmonics balanced (multiples of omega / subharmonic): the hK_/phaseK_ columns written.
+  std::vector<int> harmonic_numbers;
+  int subharmonic = 1;
 };
 
 RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,

@@ -20,13 +20,30 @@
 namespace hbtrack {
 
 struct HarmonicBalanceOptions {
-  int harmonics = 5;             // H
+  int harmonics = 5;             // H, the largest harmonic balanced
   int samples = 0;               // N time samples per period; 0 picks a power of two >= 8(H+1)
   std::string condensation = "auto";  // auto | schur | modal | none (solve the full system)
+  // When not empty, the harmonics balanced (sorted, unique, >= 0, last = H; 0 only if listed),
+  // e.g. {1, 3, 5, 7}; empty: 0..H. (After the first three: {H, N, condensation} still works.)
+  std::vector<int> harmonic_list;
+  // nu: the harmonics are multiples of omega / nu (1: of omega; 2: a period-doubled solution,
+  // period 2 (2 pi / omega)). The forcing's harmonic h is harmonic h nu of the basis.
+  int subharmonic = 1;
   // Throws std::invalid_argument naming the field and the rule broken.
   void validate() const;
   int effective_samples() const;
+  // The harmonics balanced: harmonic_list, or 0..H.
+  std::vector<int> selected_harmonics() const;
+  // Sets harmonic_list and H from a list (an empty list or 0..H is stored as H alone).
+  void select(const std::vector<int>& list);
 };
+
+// The name of basis harmonic k in result columns: its multiple of omega, k / nu ("3", "0.5").
+std::string harmonic_label(int k, int subharmonic);
+
+// The frequency an element is handed: omega itself when its law depends on it explicitly (a
+// casing's rotation speed), else the basis' fundamental omega / nu, whose period the samples span.
+double element_frequency(const NonlinearElement& element, double omega, int subharmonic);
 
 class HarmonicBalance {
  public:
@@ -48,13 +65,18 @@ class HarmonicBalance {
   ParameterSet& parameters() { return parameters_; }
   const ParameterSet& parameters() const { return parameters_; }
   int amplitude_parameter() const { return amplitude_index_; }
+  // The basis' fundamental frequency omega / nu (harmonic k of the basis is at k omega / nu); the
+  // solution's period is 2 pi / fundamental(omega).
+  double fundamental(double omega) const { return omega / options_.subharmonic; }
+  int subharmonic() const { return options_.subharmonic; }
 
   // r = R(x, omega); optionally the Jacobian dR/dx and dR/d(omega).
   void evaluate(const Eigen::VectorXd& x, double omega, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian = nullptr,
                 Eigen::VectorXd* r_omega = nullptr);
   // dR/d(parameter) at fixed x and omega, analytic.
   Eigen::VectorXd parameter_derivative(const Eigen::VectorXd& x, double omega, int parameter);
-  // Harmonic coefficients of every dof, n(2H+1) harmonic-major, recovered from a solution x.
+  // Harmonic coefficients of every dof, n(2H+1) harmonic-major in the dense layout 0..H (zeros
+  // for the harmonics not balanced), recovered from a solution x.
   Eigen::VectorXd expand(const Eigen::VectorXd& x, double omega);
   // Solution of the linear system (nonlinear forces switched off) at omega, in unknown layout.
   Eigen::VectorXd linear_solution(double omega);
@@ -74,7 +96,8 @@ class HarmonicBalance {
   // R_omega that depends on x, without the forcing's.
   Eigen::VectorXd linear_omega_derivative(const Eigen::VectorXd& d, double omega);
   // Matrices of Hill's quadratic eigenproblem (l^2 D2 + l D1 + J) p = 0 on the full,
-  // uncondensed system (every dof, n(2H+1), harmonic-major), at the solution x (unknown layout):
+  // uncondensed system (every dof, n x the basis' coefficients, harmonic-major: the Hill matrix
+  // over the harmonics balanced), at the solution x (unknown layout), w the fundamental:
   //   jacobian = dR_full/dx_full,  damping = D1 = 2 w (nabla x M) + I x C + Gamma^-1 (df/dv) Gamma.
   // D2 = I x M is not formed.
   void hill_matrices(const Eigen::VectorXd& x, double omega, Eigen::MatrixXd& jacobian, Eigen::MatrixXd& damping);
@@ -94,7 +117,9 @@ class HarmonicBalance {
                           Eigen::MatrixXd* jacobian, Eigen::MatrixXd* velocity_jacobian);
   void add_condensed_linear_part(const Eigen::VectorXd& x, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
                                  Eigen::VectorXd* r_omega);
-  Eigen::VectorXcd harmonic(const Eigen::VectorXd& x, int j, int dofs) const;
+  // Complex amplitude a - i b of the basis' harmonic number `slot` (its position in the list).
+  Eigen::VectorXcd harmonic(const Eigen::VectorXd& x, int slot, int dofs) const;
+  int slot_offset(int slot) const { return slot_offset_[static_cast<size_t>(slot)]; }
   // d f/d(omega) samples (N x k) of an evaluated element: velocity and explicit dependence.
   void omega_derivative_samples(const ElementSlot& slot, Eigen::MatrixXd& df) const;
 
@@ -117,6 +142,7 @@ class HarmonicBalance {
   HarmonicBalanceOptions options_;
   FourierBasis basis_;
   std::vector<int> retained_;
+  std::vector<int> slot_offset_;  // first coefficient of each listed harmonic
   std::unique_ptr<LinearCondenser> condenser_;
   int amplitude_index_ = -1;
   std::vector<ElementSlot> slots_;

@@ -11,7 +11,7 @@ namespace hbtrack {
 
 // branch.csv: amplitude, omega, damping_ratio, xi, then per output max_NAME, min_NAME and the
 // harmonic magnitudes h0_NAME .. hH_NAME.
-std::vector<std::string> backbone_header(const CaseDefinition& c, int harmonics);
+std::vector<std::string> backbone_header(const CaseDefinition& c, const std::vector<int>& harmonics);
 std::vector<double> backbone_row(const BackbonePoint& p);
 // states.csv: omega, then the harmonics x = a psi of every dof (the layout of frc's states).
 std::vector<std::string> backbone_state_header(int unknowns);
