@@ -48,9 +48,11 @@ std::map<std::string, json> steps_to_resume(const std::string& dir, const json& 
   if (s.value("verb", "") != "study") throw CaseError("--resume: " + where + ": not a study's summary (verb '" + s.value("verb", "") + "')");
   const std::string reason = s.value("stop_reason", "");
   if (reason == "completed" || reason == "checks_failed") throw CaseError("--resume: " + dir + " finished (" + reason + "), nothing to resume");
-  if (!s.contains("settings") || s["settings"] != settings)
-    throw CaseError("--resume: " + dir + " was computed with other settings (case file, --set or --only differ)" +
-                    (s.contains("settings") ? ": " + json::diff(s["settings"], settings).dump() : std::string()));
+  if (!s.contains("settings"))
+    throw CaseError("--resume: " + where + ": no settings (a study of an older hbtrack, which cannot resume); run it again with -o");
+  if (s["settings"] != settings)
+    throw CaseError("--resume: " + dir + " was computed with other settings (case file, --set or --only differ): " +
+                    json::diff(s["settings"], settings).dump());
   refuse_live_steps(dir);
   std::map<std::string, json> steps;
   if (s.contains("steps") && s["steps"].is_array())
