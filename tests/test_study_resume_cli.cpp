@@ -120,7 +120,8 @@ TEST(StudyResume, AStudyKilledAfterItsFirstStepResumesToTheSamePageKeepingThatSt
                                                  "--set", "continuation.max_points=100000", "-o", (part / "nfrc").string()});
   ASSERT_GT(orphan, 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (hbtrack::test::count_lines(part / "nfrc" / "branch.csv") < 5 && std::chrono::steady_clock::now() < deadline)
+  // Until it holds the folder's lock (its pid in the lock file; branch.csv is already there).
+  while (hbtrack::test::file_bytes(part / "nfrc" / ".hbtrack.lock") != std::to_string(orphan) + "\n" && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   const CliRun live = run_cli("study " + study + " --resume " + part.string());
   ::kill(orphan, SIGKILL);
