@@ -160,6 +160,8 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"output_dof", variant("dof = \"b\"\n", "dof = \"q\"\n"), "outputs[0].dof: unknown dof 'q'"},
       {"duplicate_dof", variant("dofs = [\"a\", \"b\"]", "dofs = [\"a\", \"a\"]"), "dof name 'a' appears twice"},
       {"negative_lanczos", variant("lanczos = 1", "lanczos = -1"), "elements[0].lanczos: must be >= 0"},
+      // Issue 24: 1e9 was accepted (and removed every harmonic of the force but the mean).
+      {"huge_lanczos", variant("lanczos = 1", "lanczos = 1e9"), "elements[0].lanczos: must be <= 10"},
       {"forcing_above_truncation", variant("cos = 0.5", "cos = 0.5\nharmonic = 4"), "forcing[0].harmonic: must be <= harmonic_balance.harmonics = 3"},
       // Continuation settings: positive, finite, ordered.
       {"zero_tolerance", variant("omega_end = 2.0", "omega_end = 2.0\ntolerance = 0.0"), "continuation.tolerance: must be > 0 and finite"},

@@ -105,11 +105,25 @@ TEST(InputLimits, OverrideIsOneValue) {
   EXPECT_NE(case_error([&] { load_case(kDuffing, {"amplitude=0.5\ncontinuation.step=9"}); }).find("--set amplitude: the value must be on one line"),
             std::string::npos);
   EXPECT_NE(case_error([&] { load_case(kDuffing, {"amplitude=0.5 0.7"}); }).find("expected a number, got '0.5 0.7'"), std::string::npos);
+  // A '#' comment after the value: 'amplitude=0.5 #0.7' set 0.5 and exit 0.
+  for (const std::string set : {"amplitude=0.5 #0.7", "amplitude=0.5 #", "harmonic_balance.harmonics=5 # 7", "elements[0].stiffness=1 #x"}) {
+    const std::string error = case_error([&] { load_case(kDuffing, {set}); });
+    EXPECT_NE(error.find("is one value followed by a '#' comment"), std::string::npos) << set << ": " << error;
+  }
+  // A '#' inside a string is text, not a comment.
+  EXPECT_NO_THROW(load_case(kDuffing, {"outputs[0].name=\"x#1\""}));
   // An unknown name lists each known parameter once.
   const std::string unknown = case_error([&] { load_case(kDuffing, {"zzzzzzzzzzzz=1"}); });
   EXPECT_NE(unknown.find("(known: amplitude)"), std::string::npos) << unknown;
   EXPECT_EQ(unknown.find("amplitude, amplitude"), std::string::npos) << unknown;
   EXPECT_NO_THROW(load_case(kDuffing, {"amplitude=0.5"}));
+}
+
+// Issue 24: engine_order = 0 was accepted (no rotation: the tip's sliding speed loses its sense).
+TEST(InputLimits, EngineOrderMustBeNonzero) {
+  const std::string blade = hbtrack::test::source_path("examples/blade/nominal.toml");
+  const std::string error = case_error([&] { load_case(blade, {"elements[0].engine_order=0"}); });
+  EXPECT_NE(error.find("elements[0].engine_order: must be nonzero"), std::string::npos) << error;
 }
 
 // A v4 sparse matrix gives its size in its last data row; libmatio allocated the column

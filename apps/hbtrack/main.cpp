@@ -29,6 +29,9 @@ int main(int argc, char** argv) {
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  // A file-size limit (ulimit -f) kills with SIGXFSZ by default (exit 153, a temporary file left
+  // behind); ignored, the write fails with EFBIG and the checked writes report it: exit 3.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     for (const Verb& v : verbs)
       if (v.command->parsed()) return v.run();

@@ -24,6 +24,7 @@
 #include "study_curves.hpp"
 #include "study_checks.hpp"
 #include "study_report.hpp"
+#include "study_resume.hpp"
 #include "task_runner.hpp"
 
 namespace hbtrack::cli {
@@ -37,6 +38,7 @@ struct StudyOptions {
   std::vector<std::string> only;  // restrict the tracked parameters
   int jobs = 0;                   // steps side by side; 0: one per core
   std::string units;              // the model's length unit, for the figures' labels
+  std::string resume;             // a stopped study's folder to go on in (study_resume.hpp)
 };
 
 // A limit point of a validation NFRC lies on a tracking curve when the located crossing agrees
@@ -72,13 +74,22 @@ class Study {
 
   int run() {
     const auto t0 = Clock::now();
+    const bool resuming = !o_.resume.empty();
+    if (resuming && !std::filesystem::is_directory(dir_)) throw CaseError("--resume: " + dir_ + ": no such folder");
     ensure_directory(dir_);
     lock_result_folder(dir_);
+    const json settings = study_settings(o_.common.case_path, o_.common.sets, o_.only);
+    if (resuming) previous_ = steps_to_resume(dir_, settings);
     summary_ = {{"verb", "study"},         {"case", o_.common.case_path}, {"jobs", runner_.slots()},
-                {"runner", runner_.description()}, {"stop_reason", "running"},    {"steps", json::array()}};
+                {"runner", runner_.description()}, {"settings", settings},        {"stop_reason", "running"},
+                {"steps", json::array()}};
+    if (resuming) summary_["resumed_steps"] = 0;
     save();
     const bool ok = nominal() && tracking() && validation_and_simulation() && isolas() && isola_simulation() && convergence();
-    for (const StudyTrack& t : tracked_) summary_["tracking"].push_back(entries_[t.parameter]);
+    // Only the parameters tracking reached: a study stopped at its nominal NFRC has none (a
+    // null entry here made the checks and the page fail on "cannot use value() with null").
+    for (const StudyTrack& t : tracked_)
+      if (const auto e = entries_.find(t.parameter); e != entries_.end()) summary_["tracking"].push_back(e->second);
     save();  // the figures script reads it
     figures();
     const json failed = failed_checks(summary_);
@@ -87,7 +98,9 @@ class Study {
     summary_["timings"] = {{"wall_s", seconds_since(t0)}};
     save();
     write_study_report(dir_, summary_);
-    if (!ok) throw RunFailed{"study stopped: " + stop_reason_ + " (results so far in " + dir_ + ")"};
+    if (!ok)
+      throw RunFailed{"study stopped: " + stop_reason_ + " (results so far in " + dir_ + "; go on with `hbtrack study " + o_.common.case_path +
+                      " --resume " + dir_ + "`, same --set and --only)"};
     if (!failed.empty())
       throw RunFailed{"study: " + std::to_string(failed.size()) + " check(s) failed, first: " + failed[0].get<std::string>() + " (see " + dir_ +
                       "/index.md)"};
@@ -101,23 +114,42 @@ class Study {
     if (steps.empty()) return true;
     if (interrupted()) return stop("interrupted");
     std::vector<ChildTask> tasks;
-    for (const Step& s : steps) {
+    std::vector<size_t> todo;  // steps[todo[k]] is tasks[k]
+    std::vector<int> codes(steps.size(), 0);
+    for (size_t i = 0; i < steps.size(); ++i) {
+      const Step& s = steps[i];
+      const std::string folder = dir_ + "/" + s.folder;
+      // Resuming: a step the stopped study saw end, with its finished result, is kept as it is.
+      if (const auto done = previous_.find(s.folder); done != previous_.end() && step_done(dir_, s.folder, done->second, s.must_succeed)) {
+        codes[i] = done->second["exit_code"].get<int>();
+        summary_["steps"].push_back(done->second);
+        summary_["resumed_steps"] = summary_["resumed_steps"].get<int>() + 1;
+        if (!o_.common.quiet) std::fprintf(stderr, "study:   %-26s done before, kept\n", s.folder.c_str());
+        continue;
+      }
+      // Anything a stopped run left in an unfinished step's folder goes (no live process owns
+      // it: steps_to_resume checked), so that the step starts as in a fresh study.
+      if (!o_.resume.empty()) std::filesystem::remove_all(folder);
       std::vector<std::string> args = s.args;
       for (const std::string& set : o_.common.sets) args.insert(args.end(), {"--set", set});
-      args.insert(args.end(), {"-q", "-o", dir_ + "/" + s.folder});
-      ensure_directory(dir_ + "/" + s.folder);
-      tasks.push_back(hbtrack_task(args, dir_ + "/" + s.folder + "/log.txt"));
+      args.insert(args.end(), {"-q", "-o", folder});
+      ensure_directory(folder);
+      tasks.push_back(hbtrack_task(args, folder + "/log.txt"));
+      todo.push_back(i);
     }
-    if (!o_.common.quiet) {
+    if (!o_.common.quiet && !todo.empty()) {
       std::string names;
-      for (const Step& s : steps) names += (names.empty() ? "" : ", ") + s.folder;
+      for (const size_t i : todo) names += (names.empty() ? "" : ", ") + steps[i].folder;
       std::fprintf(stderr, "study: running %s\n", names.c_str());
     }
-    const std::vector<int> codes = runner_.run(tasks, [&](size_t i, int code, double seconds) {
-      if (!o_.common.quiet) std::fprintf(stderr, "study:   %-26s exit %d, %.1f s\n", steps[i].folder.c_str(), code, seconds);
-      summary_["steps"].push_back({{"folder", steps[i].folder}, {"exit_code", code}, {"wall_s", seconds}});
+    if (!o_.resume.empty()) save();
+    const std::vector<int> ran = runner_.run(tasks, [&](size_t k, int code, double seconds) {
+      const Step& s = steps[todo[k]];
+      if (!o_.common.quiet) std::fprintf(stderr, "study:   %-26s exit %d, %.1f s\n", s.folder.c_str(), code, seconds);
+      summary_["steps"].push_back({{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}});
       save();
     });
+    for (size_t k = 0; k < todo.size(); ++k) codes[todo[k]] = ran[k];
     for (size_t i = 0; i < steps.size(); ++i) {
       if (interrupted() || codes[i] >= 128 || codes[i] == kTaskNotStarted) return stop("interrupted");
       if (codes[i] == 0 || (codes[i] == 1 && !steps[i].must_succeed)) continue;
@@ -431,10 +463,17 @@ class Study {
   std::map<std::string, std::vector<TrackingCurve>> curves_;
   std::vector<Probe> probes_;
   std::string stop_reason_;
+  std::map<std::string, json> previous_;  // resuming: the stopped study's ended steps, by folder
 };
 
-int run_study(const StudyOptions& o) {
+int run_study(const StudyOptions& options) {
   // Under mpirun the other ranks only run the steps rank 0 hands them.
+  StudyOptions o = options;
+  if (!o.resume.empty()) {
+    if (!o.common.out_dir.empty() && o.common.out_dir != o.resume) throw CaseError("--resume: continues in its own folder, give no other -o");
+    o.common.out_dir = o.resume;
+  }
+  if (o.common.out_dir.empty()) throw CaseError("--output is required (or --resume DIR)");
   const std::unique_ptr<TaskRunner> runner = start_task_runner(o.jobs);
   if (!runner) return 0;
   const CaseDefinition c = load_case(o.common.case_path, o.common.sets);
@@ -454,6 +493,9 @@ void add_study_verb(CLI::App& app, VerbList& verbs) {
   s->add_option("--only", options.only, "track only this parameter of [study] (repeatable)")->type_name("NAME");
   s->add_option("--units", options.units, "the model's length unit, for the figures' labels (e.g. m)")->type_name("UNIT");
   add_jobs_option(s, options.jobs, "independent steps");
+  s->get_option("--output")->required(false);  // --resume DIR names the folder instead
+  s->add_option("--resume", options.resume, "go on with the stopped study in this folder, keeping its finished steps (same case, --set, --only)")
+      ->type_name("DIR");
   verbs.push_back({s, [] { return run_study(options); }});
 }
 

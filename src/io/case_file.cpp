@@ -363,6 +363,12 @@ void apply_overrides(const CaseReader& in, toml::value& root, const std::vector<
       if (table.as_table().size() == 1) value = table.at("v"), parsed = true;
     } catch (const std::exception&) {
     }
+    // A '#' outside a string starts a comment: `amplitude=1 #2` set 1 and dropped the rest.
+    if (parsed) {
+      std::istringstream ss("v = " + text);
+      if (!toml::parse<toml::preserve_comments>(ss, "--set").at("v").comments().empty())
+        throw CaseError("--set " + name + ": '" + text + "' is one value followed by a '#' comment (quote a string: " + name + "='\"...\"')");
+    }
     if (!parsed) {
       if (text.find_first_of("[]{}#\"'=,") != std::string::npos)
         throw CaseError("--set " + name + ": '" + text + "' is not one TOML value (quote a string: " + name + "='\"...\"')");

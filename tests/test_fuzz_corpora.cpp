@@ -1,0 +1,79 @@
+// The fuzzers' corpora (fuzz/corpus/TARGET, minimized from clean 10-minute runs) and seeds
+// (fuzz/seeds/TARGET, with every past finding as regression-*) replayed through the readers the
+// fuzz targets call (fuzz/fuzz_*.cpp): each input loads or is refused with a one-line
+// std::runtime_error, and the sanitizer pass of the suite runs them under ASan + UBSan. A change
+// to a reader that breaks an input the fuzzers once explored shows here, not only when someone
+// fuzzes again.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hbtrack/io/calculix_reader.hpp"
+#include "hbtrack/io/case_file.hpp"
+#include "hbtrack/io/matrix_readers.hpp"
+#include "test_support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Reader = std::function<void(const std::string& path)>;
+
+// Every file of fuzz/corpus/TARGET and fuzz/seeds/TARGET, copied to a file with the suffix the
+// fuzz target gives its input, and read by each reader. Returns the number of inputs.
+int replay(const std::string& target, const std::string& suffix, const std::vector<Reader>& readers) {
+  const fs::path copy = fs::temp_directory_path() / ("hbtrack_corpus_" + std::to_string(::getpid()) + "_" + target + suffix);
+  int inputs = 0;
+  for (const std::string folder : {"fuzz/corpus/", "fuzz/seeds/"}) {
+    const fs::path dir = hbtrack::test::source_path(folder + target);
+    if (!fs::is_directory(dir)) continue;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (!entry.is_regular_file()) continue;
+      fs::copy_file(entry.path(), copy, fs::copy_options::overwrite_existing);
+      ++inputs;
+      for (const Reader& read : readers) {
+        try {
+          read(copy.string());
+        } catch (const std::runtime_error& e) {
+          const std::string message = e.what();
+          EXPECT_EQ(message.find('\n'), std::string::npos) << entry.path() << ": " << message;
+          EXPECT_FALSE(message.empty()) << entry.path();
+        }
+        // Any other exception escapes: the test fails naming it (gtest catches it).
+      }
+    }
+  }
+  fs::remove(copy);
+  return inputs;
+}
+
+}  // namespace
+
+TEST(FuzzCorpora, CaseFileInputsLoadOrGiveOneLineErrors) {
+  const int n = replay("case_file", ".toml", {[](const std::string& p) { hbtrack::load_case(p); }});
+  EXPECT_GT(n, 100);
+}
+
+TEST(FuzzCorpora, MatrixMarketInputsLoadOrGiveOneLineErrors) {
+  const int n = replay("matrix_market", ".mtx",
+                       {[](const std::string& p) { hbtrack::read_matrix_market_sparse(p); }, [](const std::string& p) { hbtrack::read_matrix_market(p); }});
+  EXPECT_GE(n, 5);
+}
+
+TEST(FuzzCorpora, MatFileInputsLoadOrGiveOneLineErrors) {
+  const int n = replay("mat_file", ".mat",
+                       {[](const std::string& p) { hbtrack::read_mat_variable_sparse(p, "K"); }, [](const std::string& p) { hbtrack::read_mat_variable(p, "K"); }});
+  EXPECT_GE(n, 8);
+}
+
+TEST(FuzzCorpora, CalculixInputsLoadOrGiveOneLineErrors) {
+  const int n = replay("calculix", ".sti",
+                       {[](const std::string& p) { hbtrack::read_calculix_matrix(p); }, [](const std::string& p) { hbtrack::read_calculix_dof_map(p); }});
+  EXPECT_GE(n, 3);
+}
