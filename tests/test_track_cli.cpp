@@ -279,4 +279,29 @@ TEST(TrackCli, ATinyClosedCurveClosesOnceAndACappedLegIsNotCompleted) {
   fs::remove_all(base);
 }
 
+TEST(TrackCli, IsolasAtTheTrackedValueItselfFindsTheLimitPointTheCurveStartsFrom) {
+  // Duffing's two limit points at A = 1 lie on one tracking curve, which starts at LP1. The
+  // crossings of A = 1 are LP1 (the curve's first point, which the search used to skip: the
+  // rotor 67 study's validations at the case's own mu and clearance found no crossing) and LP2.
+  const fs::path base = fs::temp_directory_path() / ("hbtrack_isolas_at_start_" + std::to_string(getpid()));
+  fs::remove_all(base);
+  ASSERT_EQ(run_cli("frc " + kDuffing + " -q -o " + (base / "frc").string()).exit_code, 0);
+  ASSERT_EQ(run_cli("track " + kDuffing + " --from " + (base / "frc").string() + " --lp 1 --param amplitude --range 0.1:2 -q -o " +
+                    (base / "track").string())
+                .exit_code,
+            0);
+  ASSERT_EQ(run_cli("isolas " + kDuffing + " --from " + (base / "track").string() + " --at 1 -q -o " + (base / "isolas").string()).exit_code,
+            0);
+  const nlohmann::json nfrc = read_json((base / "frc" / "summary.json").string());
+  const nlohmann::json isolas = read_json((base / "isolas" / "summary.json").string());
+  ASSERT_EQ(nfrc["special_points"].size(), 2u);
+  ASSERT_EQ(isolas["crossings"].size(), 2u);
+  for (const auto& lp : nfrc["special_points"]) {
+    double nearest = INFINITY;
+    for (const auto& c : isolas["crossings"]) nearest = std::min(nearest, std::abs(c["omega"].get<double>() - lp["omega"].get<double>()));
+    EXPECT_LT(nearest, 1e-8) << "no crossing at the NFRC's limit point " << lp["omega"];  // both located to the Newton tolerance
+  }
+  fs::remove_all(base);
+}
+
 }  // namespace

@@ -177,9 +177,11 @@ std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, 
   for (const auto& curve : curves) {
     for (size_t i = 0; i + 1 < curve.size(); ++i) {
       const FoldCurvePoint &a = curve[i], &b = curve[i + 1];
-      // A crossing of gamma = value inside the segment, or at its end (counted once).
+      // A crossing of gamma = value inside the segment, or at its end (counted once), or at the
+      // first point of a curve (the tracked limit point itself, when value is its parameter's).
       if (a.leg != b.leg || a.parameter == b.parameter) continue;
-      if (!((a.parameter - value) * (b.parameter - value) < 0 || b.parameter == value)) continue;
+      const bool at_first_point = i == 0 && a.parameter == value;
+      if (!((a.parameter - value) * (b.parameter - value) < 0 || b.parameter == value || at_first_point)) continue;
       const double f = (value - a.parameter) / (b.parameter - a.parameter);
       IsolaCandidate cand;
       cand.start =
