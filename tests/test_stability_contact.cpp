@@ -122,6 +122,10 @@ void expect_same_flags(const ContactRun& run, const Reference& ref, int output, 
 // contact starts), LP 0.755627, PD 0.755586 and 0.738783, NS 0.618607 and 0.581901. hbtrack
 // lands within 1e-5 of each (measured); 1e-4 bounds the truncation error of H = 21 on this law.
 TEST(StabilityContact, NlvibTwoDofMatchesExactShooting) {
+  // Minutes under the sanitizers (the whole default NFRC with its shooting cross-checks): the
+  // Release pass checks the numbers; TwoDofContactPeriodDoublesByDefault and the two-mass chain
+  // run the same paths (Hill, shooting, corners) under the sanitizers.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   const ContactRun run = default_nfrc("examples/nlvib_two_dof_contact.toml");
   ASSERT_EQ(run.r.continuation.summary.stop_reason, "reached_end");
   EXPECT_NEAR(run.r.recorded.back().omega, 0.5, 1e-12);
@@ -171,6 +175,10 @@ TEST(StabilityContact, TwoMassChainFoldsMatchExactShooting) {
 // H = 5 (the example's) does not resolve it, H = 20 puts all four folds within 2.1e-5 relative
 // (4.5e-6, measured); 5e-5 allows for that truncation and still tells the two folds apart.
 TEST(StabilityContact, EightMassChainResolvesItsNarrowFoldPairAtTwentyHarmonics) {
+  // Minutes under the sanitizers (the whole default NFRC with its shooting cross-checks): the
+  // Release pass checks the numbers; TwoDofContactPeriodDoublesByDefault and the two-mass chain
+  // run the same paths (Hill, shooting, corners) under the sanitizers.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   const Reference ref = load_reference("chain_8");
   const ContactRun run = default_nfrc("examples/chain_contact.toml", {"harmonic_balance.harmonics=20", "harmonic_balance.samples=320",
                                                                "continuation.omega_start=0.11072203135596238",
@@ -191,6 +199,10 @@ TEST(StabilityContact, CrossCheckOffLeavesHillAlone) {
 // the law's sample mean). Hill alone decides stability at this size; its NS points on the C0
 // law, which vanish at H = 10 on the 32-mass chain, are listed as warnings with the advice.
 TEST(StabilityContact, SixtyFourMassChainReachesItsEndWithDefaultsAndWarnsOfHillOnlyBifurcations) {
+  // Minutes under the sanitizers (the whole default NFRC with its shooting cross-checks): the
+  // Release pass checks the numbers; TwoDofContactPeriodDoublesByDefault and the two-mass chain
+  // run the same paths (Hill, shooting, corners) under the sanitizers.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   namespace fs = std::filesystem;
   const fs::path out = fs::temp_directory_path() / ("hbtrack_chain64_" + std::to_string(getpid()));
   fs::remove_all(out);
@@ -216,6 +228,10 @@ TEST(StabilityContact, SixtyFourMassChainReachesItsEndWithDefaultsAndWarnsOfHill
 // own truncation moves them by up to 8.2e-4 relative (NLvib's lower PD at H = 21, measured),
 // 1.5e-3 is allowed.
 TEST(StabilityContact, HillAloneFindsEveryReferencePointWithItsType) {
+  // Minutes under the sanitizers (the whole default NFRC with its shooting cross-checks): the
+  // Release pass checks the numbers; TwoDofContactPeriodDoublesByDefault and the two-mass chain
+  // run the same paths (Hill, shooting, corners) under the sanitizers.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   for (const auto& [example, reference] : {std::pair{"examples/nlvib_two_dof_contact.toml", "nlvib_two_dof"},
                                            std::pair{"examples/two_dof_contact.toml", "two_dof_contact"}}) {
     SCOPED_TRACE(example);
