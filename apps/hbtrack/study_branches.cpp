@@ -61,19 +61,20 @@ BranchStep switch_step(const std::string& case_path, const std::string& nfrc_dir
 }
 
 std::string switched_branch_through(const std::string& study_dir, const std::vector<std::string>& switched_folders, const json& special_point,
-                                    const std::vector<OutputDof>& outputs, double relative) {
-  // Coordinates scaled so that `relative` applies to each: omega by the point's, every output's
+                                    const std::vector<OutputDof>& outputs, double omega_relative, double output_relative) {
+  // Coordinates scaled so that the tolerance is 1 in each: omega by the point's, every output's
   // max by its largest along the nominal NFRC (a max near zero is no scale).
   const CsvTable nfrc = read_csv_table(study_dir + "/nfrc/branch.csv");
   const double omega = special_point.value("omega", 0.0);
-  std::vector<double> scale{std::abs(omega)}, p{1.0};
+  std::vector<double> scale{omega_relative * std::abs(omega)};
   for (const OutputDof& o : outputs) {
     const auto c = static_cast<size_t>(nfrc.column("max_" + o.name));
     double largest = std::numeric_limits<double>::min();
     for (const auto& row : nfrc.rows) largest = std::max(largest, std::abs(row[c]));
-    scale.push_back(largest);
-    p.push_back(special_point.value("max_" + o.name, 0.0) / largest);
+    scale.push_back(output_relative * largest);
   }
+  std::vector<double> p{omega / scale[0]};
+  for (size_t i = 0; i < outputs.size(); ++i) p.push_back(special_point.value("max_" + outputs[i].name, 0.0) / scale[i + 1]);
   for (const std::string& folder : switched_folders) {
     const std::string dir = study_dir + "/" + folder;
     if (!std::filesystem::exists(dir + "/branch.csv")) continue;
@@ -84,7 +85,7 @@ std::string switched_branch_through(const std::string& study_dir, const std::vec
     for (const auto& row : t.rows) {
       std::vector<double> q;
       for (size_t i = 0; i < columns.size(); ++i) q.push_back(row[columns[i]] / scale[i]);
-      if (segment_distance(p, previous.empty() ? q : previous, q) <= relative) return folder;
+      if (segment_distance(p, previous.empty() ? q : previous, q) <= 1.0) return folder;
       previous = q;
     }
   }

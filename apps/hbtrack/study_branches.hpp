@@ -27,10 +27,12 @@ BranchStep switch_step(const std::string& case_path, const std::string& nfrc_dir
 // The earlier switched branch (its folder under study_dir) that already passes through this
 // special point of the nominal NFRC, or "": the two BPs of one pitchfork branch, the two PDs
 // of one period-doubling band give one branch, followed once. A branch passes through the point
-// when a segment between two of its rows lies within `relative` of it in omega (relative to it)
-// and in the max of every output (relative to the output's largest max along the NFRC).
+// when a segment between two of its rows comes within `omega_relative` of it in omega (relative
+// to it) and `output_relative` in the max of every output (relative to the output's largest
+// max along the NFRC), the two scaled distances combined as one Euclidean distance <= 1.
 std::string switched_branch_through(const std::string& study_dir, const std::vector<std::string>& switched_folders,
-                                    const nlohmann::json& special_point, const std::vector<OutputDof>& outputs, double relative);
+                                    const nlohmann::json& special_point, const std::vector<OutputDof>& outputs, double omega_relative,
+                                    double output_relative);
 
 // The study summary's entries: what each step found (its folder's summary.json), for the page.
 nlohmann::json backbone_entry(const std::string& study_dir, const BranchStep& step, const StudyBackbone& backbone);
