@@ -219,19 +219,28 @@ def overlay_figure(results, outputs=None, length_unit=None, title=None, window=N
     names = outputs or [n for n in output_names(results[0]) if all(n in output_names(b) for r in results for b in _branches(r))]
     if not names:
         raise ValueError("overlay_figure: the results record no common output (results of different cases?)")
-    fig, axes = plt.subplots(len(names), 1, figsize=(7.5, 3.4 * len(names) + 0.8), squeeze=False)
+    fig, axes = plt.subplots(len(names), 1, figsize=(7.5, 3.4 * len(names) + 0.5), squeeze=False)
     for ax, name in zip(axes[:, 0], names):
         draw_overlay(ax, results, name, length_unit, window or _window(results), legend=False)
     axes[0, 0].set_title(title or "solid: stable, dashed: unstable", fontsize=10)
     # One legend for all panels, below them: inside an axes it hides curves (a switched
-    # branch's fold sits where "best" puts it), and every panel has the same entries.
-    labels = {}
+    # branch's fold sits where "best" puts it), and every panel has the same entries. The
+    # results (long names) in one column on the left, the marker types on the right; the
+    # figure grows by the legend's height.
+    entries = {}
     for ax in axes[:, 0]:
         for handle, label in zip(*ax.get_legend_handles_labels()):
-            if label not in labels:
-                labels[label] = handle
-    rows = (len(labels) + 1) // 2
-    height = fig.get_size_inches()[1]
-    fig.legend(list(labels.values()), list(labels), loc="lower center", ncol=2, fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, (0.2 * rows + 0.1) / height, 1, 1))
+            entries.setdefault(label, handle)
+    marker_labels = {text for _, text in SPECIAL_MARKERS.values()}
+    curves = [(h, l) for l, h in entries.items() if l not in marker_labels]
+    markers = [(h, l) for l, h in entries.items() if l in marker_labels]
+    rows = max(len(curves), len(markers))
+    width, height = fig.get_size_inches()
+    legend_height = 0.19 * rows + 0.2
+    fig.set_size_inches(width, height + legend_height)
+    top = legend_height / (height + legend_height)
+    for group, corner, x in ((curves, "upper left", 0.01), (markers, "upper right", 0.99)):
+        if group:
+            fig.legend(*zip(*group), loc=corner, bbox_to_anchor=(x, top), fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, top, 1, 1))
     return fig

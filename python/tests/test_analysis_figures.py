@@ -47,8 +47,8 @@ def continue_cli(tmp_path_factory):
 
 def legend_texts(where):
     """The legend's texts of an axes, or of a figure (whose legend is below its panels)."""
-    legend = where.legends[0] if hasattr(where, "legends") and where.legends else where.get_legend()
-    return [t.get_text() for t in legend.get_texts()]
+    legends = where.legends if hasattr(where, "legends") and where.legends else [where.get_legend()]
+    return [t.get_text() for legend in legends for t in legend.get_texts()]
 
 
 def line_labelled(ax, label):
