@@ -17,6 +17,8 @@ from .results import output_names, tracking_curve
 SPECIAL_MARKERS = {"LP": ("o", "LP (fold)"), "BP": ("s", "BP (branch point)"), "PD": ("D", "PD (period doubling)"),
                    "NS": ("P", "NS (Neimark-Sacker)"), "min": ("v", "min of the tracked parameter"),
                    "max": ("^", "max of the tracked parameter")}
+# Results whose parameter values the legend does not give (they vary one, or have no forcing).
+NO_PARAMETER_VALUE = ("continue", "track", "backbone")
 # Results that live in the (omega, output) plane.
 FREQUENCY_PLANE_KINDS = ("frc", "solve", "isola_branch", "isolas", "switch", "backbone", "continue", "track")
 
@@ -55,6 +57,8 @@ def describe(result):
         what = f"limit point {options['tracking'].get('lp', '')} tracked in {options['tracking']['parameter']}".replace("  ", " ")
     elif kind == "isola_branch":
         what = "isolated branch"
+    elif kind == "isolas":
+        what = "branches found by isolas"
     elif kind == "solve":
         what = "solve"
     else:
@@ -94,11 +98,11 @@ def _draw(ax, x, y, stable, unstable, colour, label, style):
 
 def _varying_parameters(results):
     """The named parameters whose values differ between the results (NFRCs at several forcing
-    levels): the legend gives each result's value. A continuation varies its own parameter; a
-    backbone has no forcing."""
+    levels): the legend gives each result's value. A continuation and a limit-point curve vary
+    their own parameter; a backbone has no forcing."""
     values = {}
     for result in results:
-        if result["kind"] in ("continue", "backbone"):
+        if result["kind"] in NO_PARAMETER_VALUE:
             continue
         for name, value in result["summary"].get("options", {}).get("parameters", {}).items():
             values.setdefault(name, set()).add(value)
@@ -158,7 +162,7 @@ def draw_overlay(ax, results, name, length_unit=None, window=None, legend=True):
     varying = _varying_parameters(results)
     for number, result in enumerate(results):
         colour = f"C{number}"
-        values = {} if result["kind"] == "backbone" else result["summary"].get("options", {}).get("parameters", {})
+        values = {} if result["kind"] in NO_PARAMETER_VALUE else result["summary"].get("options", {}).get("parameters", {})
         label = ", ".join([describe(result)] + [f"{p} = {values[p]:g}" for p in varying if p in values])
         for k, branch in enumerate(_branches(result)):
             omega, high, low, stable, unstable, style = _curves(branch, name)
