@@ -125,7 +125,8 @@ TEST(StudyBranchesCli, ADuffingStudyRunsItsBackboneAndFindsNoPointToSwitch) {
   // has two folds and no BP or PD.
   const fs::path dir = fresh_dir("hbtrack_study_duffing_backbone");
   const std::string duffing = hbtrack::test::file_bytes(hbtrack::test::source_path("examples/duffing.toml"));
-  std::ofstream(dir / "case.toml") << duffing << "\n[study]\nbackbone = { mode = 1, range = [0.01, 3.0] }\nswitch = true\nsimulate_periods = 0\n";
+  std::ofstream(dir / "case.toml") << duffing
+                                   << "\n[study]\nbackbone = { mode = 1, range = [0.01, 3.0] }\nswitch = true\nsimulate_periods = 0\n";
   const fs::path out = dir / "out";
   const CliRun r = run_cli("study " + (dir / "case.toml").string() + " -q -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -151,13 +152,15 @@ TEST(StudyBranchesCli, BadBackboneOrSwitchKeysGiveOneLineErrorsNamingFileFieldAn
   const struct {
     std::string study, expected;
   } cases[] = {
-      {"backbone = { mode = 0, range = [0.01, 2.0] }\n", "case.toml:52: study.backbone.mode: must be a linear mode of the model, from 1 to 2, got 0"},
+      {"backbone = { mode = 0, range = [0.01, 2.0] }\n",
+       "case.toml:52: study.backbone.mode: must be a linear mode of the model, from 1 to 2, got 0"},
       {"backbone = { mode = 3, range = [0.01, 2.0] }\n", "study.backbone.mode: must be a linear mode of the model, from 1 to 2, got 3"},
       {"backbone = { mode = 1, range = [2.0, 0.01] }\n", "study.backbone.range: expected [lo, hi] modal amplitudes with 0 < lo < hi"},
       {"backbone = { mode = 1, range = [0.0, 1.0] }\n", "study.backbone.range: expected [lo, hi] modal amplitudes with 0 < lo < hi"},
       {"backbone = { mode = 1 }\n", "study.backbone.range: missing (required)"},
       {"backbone = { mode = 1, range = [0.01, 1.0], modes = 2 }\n", "study.backbone.modes: unknown key (did you mean 'mode'?)"},
-      {"backbone = [{ mode = 1, range = [0.01, 1.0] }, { mode = 1, range = [0.1, 1.0] }]\n", "study.backbone[1].mode: mode 1 appears twice"},
+      {"backbone = [{ mode = 1, range = [0.01, 1.0] }, { mode = 1, range = [0.1, 1.0] }]\n",
+       "study.backbone[1].mode: mode 1 appears twice"},
       {"backbone = 1\n", "study.backbone: expected a table {mode = K, range = [lo, hi]} (or an array of them)"},
       {"switch = \"yes\"\n", "study.switch: expected true or false"},
       {"switched = true\n", "study.switched: unknown key (did you mean 'switch'?)"},

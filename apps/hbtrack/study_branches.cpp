@@ -60,8 +60,9 @@ BranchStep switch_step(const std::string& case_path, const std::string& nfrc_dir
   return {"switch_" + type + std::to_string(point), {"switch", case_path, "--from", nfrc_dir, "--point", std::to_string(point)}};
 }
 
-std::string switched_branch_through(const std::string& study_dir, const std::vector<std::string>& switched_folders, const json& special_point,
-                                    const std::vector<OutputDof>& outputs, double omega_relative, double output_relative) {
+std::string switched_branch_through(const std::string& study_dir, const std::vector<std::string>& switched_folders,
+                                    const json& special_point, const std::vector<OutputDof>& outputs, double omega_relative,
+                                    double output_relative) {
   // Coordinates scaled so that the tolerance is 1 in each: omega by the point's, every output's
   // max by its largest along the nominal NFRC (a max near zero is no scale).
   const CsvTable nfrc = read_csv_table(study_dir + "/nfrc/branch.csv");

@@ -49,9 +49,11 @@ void branches_section(std::ostream& out, const json& s) {
     out << "| backbone | modal amplitude | points | stop | omega (rad/s) | damping ratio | time (s) |\n|---|---|---|---|---|---|---|\n";
     for (const auto& b : s["backbones"]) {
       const json& z = b["damping_ratio_range"];
-      out << "| [" << b.value("folder", "") << "](" << b.value("folder", "") << "/) mode " << b.value("mode", 0) << " | " << range(b["range"], "%.4g")
-          << " | " << b.value("points", 0) << " | " << b.value("stop_reason", "") << " | " << range(b["omega_range"], "%.5g") << " | "
-          << (z.is_array() && z.size() == 2 ? num(100 * z[0].get<double>(), "%.3g") + " to " + num(100 * z[1].get<double>(), "%.3g") + " %" : "")
+      out << "| [" << b.value("folder", "") << "](" << b.value("folder", "") << "/) mode " << b.value("mode", 0) << " | "
+          << range(b["range"], "%.4g") << " | " << b.value("points", 0) << " | " << b.value("stop_reason", "") << " | "
+          << range(b["omega_range"], "%.5g") << " | "
+          << (z.is_array() && z.size() == 2 ? num(100 * z[0].get<double>(), "%.3g") + " to " + num(100 * z[1].get<double>(), "%.3g") + " %"
+                                            : "")
           << " | " << num(b.value("wall_s", 0.0), "%.1f") << " |\n";
     }
     out << "\n";
@@ -65,8 +67,9 @@ void branches_section(std::ostream& out, const json& s) {
         out << "on the branch of " << w["on_the_branch_of"].get<std::string>() << " | | | | | |\n";
         continue;
       }
-      out << "[" << w.value("folder", "") << "](" << w.value("folder", "") << "/) | " << w.value("points", 0) << " | " << w.value("special_points", 0)
-          << " | " << w.value("stop_reason", "") << " | " << range(w["omega_range"], "%.6g") << " | " << num(w.value("wall_s", 0.0), "%.1f") << " |\n";
+      out << "[" << w.value("folder", "") << "](" << w.value("folder", "") << "/) | " << w.value("points", 0) << " | "
+          << w.value("special_points", 0) << " | " << w.value("stop_reason", "") << " | " << range(w["omega_range"], "%.6g") << " | "
+          << num(w.value("wall_s", 0.0), "%.1f") << " |\n";
     }
     if (s["switched"].empty()) out << "| (the nominal NFRC has no BP or PD) | | | | | | | |\n";
     out << "\n";

@@ -50,7 +50,8 @@ int run_plot(const PlotOptions& o) {
 
 void add_plot_verb(CLI::App& app, VerbList& verbs) {
   static PlotOptions options;
-  CLI::App* plot = app.add_subcommand("plot", "figures (PNG and PDF) of a result folder of any verb, by the Python package");
+  CLI::App* plot = app.add_subcommand(
+      "plot", "figures (PNG and PDF) of a result folder of any verb, or of several drawn over each other, by the Python package");
   plot->add_option("dirs", options.dirs,
                    "result folder (frc, solve, track, isolas, simulate, sweep, backbone, continue, switch); several: drawn over each other")
       ->required();

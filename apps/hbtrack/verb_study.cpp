@@ -190,7 +190,8 @@ class Study {
     std::vector<Step> steps;
     for (const BranchStep& b : backbones) steps.push_back({b.folder, b.args, false});
     if (!run_steps(steps)) return false;
-    for (size_t i = 0; i < backbones.size(); ++i) summary_["backbones"].push_back(backbone_entry(dir_, backbones[i], c_.study.backbones[i]));
+    for (size_t i = 0; i < backbones.size(); ++i)
+      summary_["backbones"].push_back(backbone_entry(dir_, backbones[i], c_.study.backbones[i]));
     if (!c_.study.switch_branches) return true;
     summary_["switched"] = json::array();
     std::vector<std::string> folders;
@@ -198,8 +199,10 @@ class Study {
     for (size_t k = 0; k < points.size(); ++k) {
       const int point = static_cast<int>(k + 1);
       if (!switchable(points[k])) continue;
-      if (const std::string on = switched_branch_through(dir_, folders, points[k], c_.outputs, kSameBranchOmega, kSameBranchOutput); !on.empty()) {
-        summary_["switched"].push_back({{"point", point}, {"type", points[k]["type"]}, {"omega", points[k]["omega"]}, {"on_the_branch_of", on}});
+      if (const std::string on = switched_branch_through(dir_, folders, points[k], c_.outputs, kSameBranchOmega, kSameBranchOutput);
+          !on.empty()) {
+        summary_["switched"].push_back(
+            {{"point", point}, {"type", points[k]["type"]}, {"omega", points[k]["omega"]}, {"on_the_branch_of", on}});
         continue;
       }
       const BranchStep s = switch_step(o_.common.case_path, dir_ + "/nfrc", points[k], point);
@@ -513,8 +516,9 @@ int run_study(const StudyOptions& options) {
   if (!runner) return 0;
   const CaseDefinition c = load_case(o.common.case_path, o.common.sets);
   if (c.study.track.empty() && c.study.backbones.empty() && !c.study.switch_branches)
-    throw CaseError(o.common.case_path +
-                    ": study.track: missing (the parameters to track, or a backbone or switch = true: nothing to study; see docs/study.md)");
+    throw CaseError(
+        o.common.case_path +
+        ": study.track: missing (the parameters to track, or a backbone or switch = true: nothing to study; see docs/study.md)");
   for (const std::string& name : o.only) {
     const bool known = std::any_of(c.study.track.begin(), c.study.track.end(), [&](const StudyTrack& t) { return t.parameter == name; });
     if (!known) throw CaseError("--only: '" + name + "' is not tracked in the case's [study] section");

@@ -66,7 +66,10 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
   json points = json::array();
   for (const auto* leg : {&s.through, &s.away})
     for (const auto& p : leg->continuation.special_points) {
-      json j = {{"type", p.type}, {"index", leg == &s.through ? through - 1 - p.index : shift + p.index}, {"omega", p.lambda}, {"located", p.located}};
+      json j = {{"type", p.type},
+                {"index", leg == &s.through ? through - 1 - p.index : shift + p.index},
+                {"omega", p.lambda},
+                {"located", p.located}};
       j["parameters"] = summary["options"]["parameters"];
       add_outputs(j, c, record_point(system, p.u, p.lambda, c.outputs));
       points.push_back(j);
@@ -96,8 +99,8 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
 }  // namespace
 
 void bind_switch(py::module_& m) {
-  m.def("switch", &switch_branch, py::arg("case"), py::arg("type"), py::arg("point"), py::arg("omega"), py::arg("x"), py::arg("omega_before"),
-        py::arg("x_before"), py::arg("omega_after"), py::arg("x_after"),
+  m.def("switch", &switch_branch, py::arg("case"), py::arg("type"), py::arg("point"), py::arg("omega"), py::arg("x"),
+        py::arg("omega_before"), py::arg("x_before"), py::arg("omega_after"), py::arg("x_after"),
         "the branch through a BP, or the period-doubled branch of a PD: {branch, states, special_points, special_states, summary}");
 }
 

@@ -310,10 +310,12 @@ void read_study_branches(const CaseReader& in, const toml::value& st, CaseDefini
     const toml::value& mode = in.require(b, "mode", field + ".mode");
     s.mode = in.integer(mode, field + ".mode");
     if (s.mode < 1 || s.mode > c.model.dofs())
-      in.fail(&mode, field + ".mode", "must be a linear mode of the model, from 1 to " + std::to_string(c.model.dofs()) + ", got " + std::to_string(s.mode));
+      in.fail(&mode, field + ".mode",
+              "must be a linear mode of the model, from 1 to " + std::to_string(c.model.dofs()) + ", got " + std::to_string(s.mode));
     const toml::value& range = in.require(b, "range", field + ".range");
     const VectorXd r = in.vector(range, field + ".range");
-    if (r.size() != 2 || !(0 < r(0) && r(0) < r(1))) in.fail(&range, field + ".range", "expected [lo, hi] modal amplitudes with 0 < lo < hi");
+    if (r.size() != 2 || !(0 < r(0) && r(0) < r(1)))
+      in.fail(&range, field + ".range", "expected [lo, hi] modal amplitudes with 0 < lo < hi");
     s.min = r(0);
     s.max = r(1);
     for (const StudyBackbone& other : c.study.backbones)
