@@ -26,8 +26,8 @@ if _core is not None:
     from ._hbtrack import (Case, ContinuationOptions, FoldTrackingOptions, HarmonicBalanceOptions, NfrcOptions,
                            StabilityOptions, SteadyStateOptions)
 
-__all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "switch", "track", "isolas", "limit_point", "simulate", "reduce",
-           "normal_modes", "output_harmonics", "add_python_element", "read_result", "plots", "Case", "ContinuationOptions",
+__all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "switch", "track", "isolas", "limit_point", "simulate",
+           "reduce", "normal_modes", "output_harmonics", "add_python_element", "read_result", "plots", "Case", "ContinuationOptions",
            "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
 
 

@@ -44,7 +44,8 @@ def backbone_figure(result, length_unit=None):
         left.plot([], [], SPECIAL_MARKERS[t][0], color="w", mec="k", ms=5, label=SPECIAL_MARKERS[t][1])
     linear = summary.get("linear_mode", {})
     if "omega" in linear:  # of M and K alone: a stuck friction joint stiffens the start above it
-        left.axhline(linear["omega"], color="0.5", lw=0.8, ls=":", label=f"linear mode {mode} of M, K (no elements): ω = {linear['omega']:.5g}")
+        left.axhline(linear["omega"], color="0.5", lw=0.8, ls=":",
+                     label=f"linear mode {mode} of M, K (no elements): ω = {linear['omega']:.5g}")
     left.set_xlabel(f"modal amplitude a [{unit}]")
     left.set_ylabel(OMEGA_LABEL)
     left.set_title(f"mode {mode}: frequency against amplitude", fontsize=10)

@@ -112,7 +112,8 @@ def _varying_parameters(results):
 def _window(results):
     """The omega range of the results that are responses (not backbones): the figure's x range."""
     spans = [(np.min(r["branch"]["omega"]), np.max(r["branch"]["omega"]))
-             for result in results for r in _branches(result) if r["kind"] not in ("backbone", "track", "continue") and len(r["branch"]["omega"])]
+             for result in results for r in _branches(result)
+             if r["kind"] not in ("backbone", "track", "continue") and len(r["branch"]["omega"])]
     if not spans:
         return None
     return min(s[0] for s in spans), max(s[1] for s in spans)

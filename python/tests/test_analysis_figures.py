@@ -140,7 +140,8 @@ def test_plot_of_several_folders_overlays_nfrc_backbone_and_switched_branch(coup
 
 
 def test_plot_refuses_to_overlay_a_result_without_branch(coupled_study, tmp_path):
-    done = subprocess.run([cli_path(), "plot", coupled_study["nfrc"], coupled_study["dir"], "-o", str(tmp_path)], capture_output=True, text=True)
+    done = subprocess.run([cli_path(), "plot", coupled_study["nfrc"], coupled_study["dir"], "-o", str(tmp_path)],
+                          capture_output=True, text=True)
     assert done.returncode == 2
     assert "a 'study' result has no branch in the (omega, output) plane" in done.stderr
     assert done.stderr.count("\n") == 1
