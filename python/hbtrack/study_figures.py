@@ -4,10 +4,11 @@
 
 nfrc: the nominal NFRC, with the backbones and switched branches the study computed drawn over
 it; period_doubled_K: each branch switched at a PD K, zoomed on its band; per tracked parameter
-P: tracking_P (the curves on (omega, P) with the limit points of the validation NFRCs, which they must pass through), tracking_3d_P (omega, P,
-max of the first output, validation NFRCs at their own value), validation_P (the curves and the
-validation NFRCs and isolas on (omega, max of the first output)); simulation: time signals and
-harmonic amplitudes, time integration against the HBM orbit it started from.
+P: tracking_P (the curves on (omega, P) with the limit points of the validation NFRCs, which
+they must pass through), tracking_3d_P (omega, P, max of the first output, validation NFRCs at
+their own value), validation_P (the curves and the validation NFRCs and isolas on (omega, max of
+the first output)); simulation: time signals and harmonic amplitudes, time integration against
+the HBM orbit it started from.
 """
 import argparse
 import json
