@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 jobs=${JOBS:-$(nproc)}
 
 # /usr/bin/python3: the first python3 on PATH may lack numpy (the Python module and its tests).
-# CI (CI=true) runs no benchmark and skips building them: it has 30 minutes on 2 cores.
+# CI (CI=true) runs no benchmark and skips building them: its target is 45 minutes on 2 cores.
 bench=ON
 [ -n "${CI:-}" ] && bench=OFF
 # ccache when installed: a second build of unchanged sources takes seconds.
