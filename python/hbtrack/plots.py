@@ -120,17 +120,9 @@ def _plot_split(ax, x, y, stable, unstable, colour, label):
         ax.plot(x, dashed, "--", color=colour, lw=1.3)
 
 
-def _mark_special_points(ax, special_points, key):
-    for sp in special_points:
-        if key in sp:
-            ax.plot(sp["omega"], sp[key], "o", color="k", ms=4, zorder=5)
-            ax.annotate(sp["type"], (sp["omega"], sp[key]), textcoords="offset points", xytext=(4, 4), fontsize=8)
-
-
-def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
-    """The NFRC: max and min over a period against omega.
-
-    Stable parts solid, unstable dashed, special points (LP, BP, PD, NS) marked.
+def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, zoom=0.1, norm=False, descriptions=None):
+    """The NFRC: max and min over a period against omega, or ||r(t)||_inf (branch_figures.nfrc_figure,
+    where it is drawn; kept here, where the API has always had it).
 
     Parameters
     ----------
@@ -141,9 +133,15 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
     others : sequence of dict, optional
         More branch results of the same case overlaid (e.g. isolas).
     length_unit : str, optional
-        The model's length unit for the labels.
+        The unit of the result's lengths, for the labels (units.scale_lengths converts).
     title : str, optional
-        The figure's title.
+        The figure's title (default none).
+    zoom : float or None, optional
+        Zoom on where the response exceeds this fraction of its peak; None: the whole branch.
+    norm : bool, optional
+        One axes of max(|max|, |min|) of every output (the paper's Fig. 3).
+    descriptions : dict, optional
+        {output: text} naming the outputs.
 
     Returns
     -------
@@ -153,26 +151,8 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
     --------
     >>> fig = nfrc_figure(hbtrack.frc(case), length_unit="m")
     """
-    names = outputs or output_names(result)
-    if not names:
-        raise ValueError("nfrc_figure: the result records no outputs")
-    fig, axes = plt.subplots(len(names), 1, figsize=(6.5, 3.2 * len(names)), squeeze=False)
-    for ax, name in zip(axes[:, 0], names):
-        for number, branch_result in enumerate([result, *others]):
-            branch = branch_result["branch"]
-            stable, unstable = _stable_masks(branch)
-            label = branch_result.get("label", "" if number == 0 else f"branch {number + 1}")
-            tag = f" ({label})" if label else ""
-            for side, key in enumerate((f"max_{name}", f"min_{name}")):
-                _plot_split(ax, branch["omega"], branch[key], stable, unstable, f"C{2 * number + side}", key + tag)
-                _mark_special_points(ax, branch_result.get("special_points", []), key)
-        ax.set_xlabel(OMEGA_LABEL)
-        ax.set_ylabel(length_label(name, length_unit))  # the legend tells max_ and min_ apart
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-    axes[0, 0].set_title(title or "NFRC (solid: stable, dashed: unstable)", fontsize=10)
-    fig.tight_layout()
-    return fig
+    from .branch_figures import nfrc_figure as figure  # branch_figures imports this module
+    return figure(result, outputs, others, length_unit, title, zoom, norm, descriptions)
 
 
 def _tracking_parameter(track):
