@@ -132,8 +132,12 @@ def _stability_legend(ax, branches):
 
 
 def _legend(ax, extra):
+    """Above the axes, outside them: inside, 'best' still covers a peak or a labelled point."""
     handles, labels = ax.get_legend_handles_labels()
-    ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=8)
+    labels += [h.get_label() for h in extra]
+    columns = len(labels) if sum(len(t) for t in labels) <= 60 else min(len(labels), 2)
+    ax.legend(handles + extra, labels, fontsize=8, loc="lower left", bbox_to_anchor=(0, 1.01, 1, 0.1), ncol=columns,
+              mode="expand" if columns > 1 else None, borderaxespad=0, frameon=False, handlelength=2.4)
 
 
 def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, zoom=ZOOM_FRACTION, norm=False,
@@ -205,7 +209,7 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, z
         if window:
             _fit_y_to_window(ax, window)
     if title:
-        axes[0, 0].set_title(title, fontsize=10)
+        fig.suptitle(title, fontsize=10)  # the axes' top holds the legend
     fig.tight_layout()
     for ax, items in labels.items():
         place_labels(ax, items)

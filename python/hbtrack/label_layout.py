@@ -86,6 +86,7 @@ def place_labels(ax, items, fontsize=8, avoid=()):
     --------
     >>> place_labels(ax, [(1.08, 2.3, "LP1"), (1.3, 0.4, "LP2")])
     """
+    ax.figure.draw_without_rendering()  # places the legend, whose box the labels avoid
     renderer = ax.figure.canvas.get_renderer()
     frame = ax.get_window_extent(renderer)
     vertices = _line_vertices(ax)
