@@ -163,7 +163,7 @@ def _extrema(track):
     return [sp for sp in track.get("special_points", []) if sp["type"] in ("min", "max")]
 
 
-def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
+def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, isolas=()):
     """Limit-point curves in (omega, parameter, max of an output).
 
     Extrema of the parameter marked (v: min, a pair of limit points is born; ^: max, a pair
@@ -179,6 +179,8 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
         NFRC results overlaid at their own parameter value.
     length_unit : str, optional
         The model's length unit for the labels.
+    isolas : sequence of dict, optional
+        Isolated branches, drawn in their own colour at their parameter value (the paper's Fig. 6).
 
     Returns
     -------
@@ -195,14 +197,20 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
     ax = fig.add_subplot(projection="3d")
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
-        ax.plot(curve["omega"], curve[param], curve[f"max_{name}"], color=f"C{i}", lw=1.4, label=f"limit points ({i + 1})")
+        lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
+        ax.plot(curve["omega"], curve[param], curve[f"max_{name}"], color=f"C{i}", lw=1.4, label=f"limit point {lp} tracked")
         for sp in _extrema(track):
             ax.scatter([sp["omega"]], [sp[param]], [sp[f"max_{name}"]], marker="v" if sp["type"] == "min" else "^", color="k", s=30)
     for j, nfrc in enumerate(validations):
         value = nfrc["summary"]["options"]["parameters"][param]
         branch = nfrc["branch"]
         ax.plot(branch["omega"], np.full(len(branch["omega"]), value), branch[f"max_{name}"], color="0.4", lw=0.9,
-                ls=":", label="NFRC" if j == 0 else None)
+                ls=":", label="NFRCs at fixed values" if j == 0 else None)
+    for j, isola in enumerate(isolas):
+        value = isola["summary"]["options"]["parameters"][param]
+        branch = isola["branch"]
+        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), branch[f"max_{name}"], color="C3", lw=1.1,
+                label="isolated branches" if j == 0 else None)
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
     ax.set_zlabel(length_label(f"max {name}", length_unit))
@@ -239,6 +247,8 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
     tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
     param = _tracking_parameter(tracks[0])
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    coordinates = []  # texts at the extrema, placed once the layout is final
+    kinds = set()
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
         lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
@@ -247,9 +257,9 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
         if start:
             ax.plot([start["omega"]], [start[param]], "o", color=f"C{i}", ms=5)
         for sp in _extrema(track):
-            ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == "min" else "^", color="k", ms=7)
-            ax.annotate(f"{sp['type']} ({sp['omega']:.6g}, {sp[param]:.4g})", (sp["omega"], sp[param]),
-                        textcoords="offset points", xytext=(6, 4), fontsize=8)
+            ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == "min" else "^", color="k", ms=7, zorder=5)
+            coordinates.append((sp["omega"], sp[param], f"({sp['omega']:.6g}, {sp[param]:.4g})"))
+            kinds.add(sp["type"])
     for j, nfrc in enumerate(validations):
         value = nfrc["summary"]["options"]["parameters"][param]
         lps = [sp["omega"] for sp in nfrc.get("special_points", []) if sp["type"] == "LP"]
@@ -258,10 +268,19 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
         ax.axhline(at, color="0.5", lw=0.8, ls=":", label=f"{param} = {at:g}")
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
-    ax.set_title("limit-point tracking (o: start, v: min, ^: max)", fontsize=10)
+    ax.set_title("limit-point tracking (o: start)", fontsize=10)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    # The paper's Fig. 7: a minimum of the parameter along a curve is where a pair of limit points
+    # is born (an isola appears, or a fold on the main branch), a maximum where a pair vanishes
+    # (an isola merges).
+    from matplotlib.lines import Line2D
+    meaning = {"min": ("v", f"min of {param}: a pair of limit points born"), "max": ("^", f"max of {param}: a pair merges")}
+    extra = [Line2D([], [], marker=meaning[k][0], color="k", ls="none", ms=7, label=meaning[k][1]) for k in ("min", "max") if k in kinds]
+    handles, labels = ax.get_legend_handles_labels()
+    ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=8)
     fig.tight_layout()
+    from .label_layout import place_labels
+    place_labels(ax, coordinates)
     return fig
 
 
@@ -299,7 +318,8 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None):
     for j, nfrc in enumerate(nfrcs):
         value = nfrc["summary"]["options"]["parameters"][param]
         stable, unstable = _stable_masks(nfrc["branch"])
-        _plot_split(ax, nfrc["branch"]["omega"], nfrc["branch"][f"max_{name}"], stable, unstable, f"C{j}", f"NFRC, {param} = {value:g}")
+        what = "isolated branch" if nfrc.get("kind") == "isola_branch" else "NFRC"
+        _plot_split(ax, nfrc["branch"]["omega"], nfrc["branch"][f"max_{name}"], stable, unstable, f"C{j}", f"{what}, {param} = {value:g}")
     # The folds are what is checked: show the frequencies the tracking curves span, not the
     # NFRCs' whole range where the resonance would be a spike.
     omegas = np.concatenate([np.asarray(tracking_curve(t)["omega"]) for t in tracks])

@@ -7,8 +7,10 @@ it; period_doubled_K: each branch switched at a PD K, zoomed on its band; per tr
 P: tracking_P (the curves on (omega, P) with the limit points of the validation NFRCs, which
 they must pass through), tracking_3d_P (omega, P, max of the first output, validation NFRCs at
 their own value), validation_P (the curves and the validation NFRCs and isolas on (omega, max of
-the first output)); simulation: time signals and harmonic amplitudes, time integration against
-the HBM orbit it started from.
+the first output)); nfrc_isolas_simulation (the paper's Fig. 12: the nominal NFRC, the isolated
+branches at the nominal values and the time integrations as dots, ||r(t)||_inf of every output;
+study_paper_figures.py); simulation: time signals and harmonic amplitudes, time integration
+against the HBM orbit it started from.
 """
 import argparse
 import json
@@ -20,6 +22,7 @@ from .analysis_figures import period_doubled_figure
 from .overlay_figures import overlay_figure
 from .plot import figures_for
 from .results import read_result
+from .study_paper_figures import nfrc_isolas_simulation_figure
 from .units import length_factor, scale_lengths
 
 
@@ -87,9 +90,11 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
                 result["summary"].setdefault("options", {}).setdefault("parameters", {})[param] = v["value"]
                 isolas.append(result)
         figures[f"tracking_{param}"] = plots.tracking_plane_figure(tracks, validations=nfrcs, length_unit=length_unit)
-        figures[f"tracking_3d_{param}"] = plots.tracking_3d_figure(tracks, validations=nfrcs + isolas, length_unit=length_unit)
+        figures[f"tracking_3d_{param}"] = plots.tracking_3d_figure(tracks, validations=nfrcs, length_unit=length_unit, isolas=isolas)
         if nfrcs or isolas:
             figures[f"validation_{param}"] = plots.validation_figure(tracks, nfrcs + isolas, length_unit=length_unit)
+    if summary.get("tracking") and os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
+        figures["nfrc_isolas_simulation"] = nfrc_isolas_simulation_figure(study_dir, length_unit=length_unit, read=read)
     if os.path.exists(os.path.join(study_dir, "simulate", "summary.json")):
         for stem, figure in figures_for(read(os.path.join(study_dir, "simulate")), length_unit).items():
             figures[f"simulation_{stem}"] = figure

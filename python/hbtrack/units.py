@@ -78,10 +78,14 @@ def _scale_columns(columns, factor, extra=()):
 def _scale_summary(summary, factor, outputs):
     summary = copy.deepcopy(summary)
     harmonics = [f"harmonics_{name}" for name in outputs]
+    output_column = re.compile(r"^(max|min|h\d+(\.\d+)?)_(" + "|".join(re.escape(n) for n in outputs) + r")$")
     for part in (summary, summary.get("start") or {}):
         for key in harmonics:
             if key in part:
                 part[key] = list(np.asarray(part[key]) * factor)
+        for key, value in part.items():  # simulate: the extremes and harmonics of the last period
+            if outputs and output_column.match(key) and isinstance(value, (int, float)):
+                part[key] = value * factor
         for name in LENGTH_PARAMETERS:  # the tracked parameter's start value
             if isinstance(part.get(name), (int, float)):
                 part[name] *= factor
