@@ -3,8 +3,8 @@ at one of its points (the paper's Fig. 5).
 
 NFRC: per output the max and min over a period against omega (one axes per output), or with
 norm=True the paper's form, ||r(t)||_inf = max(|max|, |min|) of every output in one axes. Stable
-solid, unstable dashed; special points numbered per type in omega order (LP1, LP2, ... NS1), each
-labelled once, coincident ones merged ("LP2, NS1"), placed where they overlap no other text
+solid, unstable dashed; special points numbered per type in omega order over all the branches
+drawn (LP1, LP2, ... NS1), each labelled once, coincident ones merged ("LP2, NS1"), placed where they overlap no other text
 (label_layout); zoomed on the resonance unless zoom=None; outputs named by their descriptions
 (output_descriptions). Lengths are drawn as the result holds them: units.scale_lengths converts.
 """
@@ -182,25 +182,28 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, z
     panels = [names] if norm else [[name] for name in names]
     fig, axes = plt.subplots(len(panels), 1, figsize=(6.5, 4.2 if norm else 3.2 * len(panels)), squeeze=False)
     labels = {}  # axes: [(omega, value, text)]
+    # Numbered over all the branches drawn, so that every label is unique without naming its branch.
+    numbered = numbered_special_points([sp for r in results for sp in r.get("special_points", [])])
     for ax, panel in zip(axes[:, 0], panels):
         for number, r in enumerate(results):
             stable, unstable = _stable_masks(r["branch"])
             tag = r.get("label", "" if number == 0 else f"branch {number + 1}")
-            tag = f" ({tag})" if tag else ""
-            curves = [(descriptions[n], norm_of(r["branch"], n), n) for n in panel] if norm else \
-                [("max over a period", r["branch"][f"max_{panel[0]}"], f"max_{panel[0]}"),
-                 ("min over a period", r["branch"][f"min_{panel[0]}"], f"min_{panel[0]}")]
-            for side, (what, values, _) in enumerate(curves):
-                colour = f"C{len(curves) * number + side}"
-                _plot_split(ax, r["branch"]["omega"], values, stable, unstable, colour, what + tag)
-            for text, sp in numbered_special_points(r.get("special_points", [])):
-                values = [float(norm_of(sp, n)) if norm else sp.get(key) for n in panel
-                          for key in ((n,) if norm else (f"max_{n}", f"min_{n}"))]
-                values = [v for v in values if v is not None]
-                if not values:
-                    continue
+            if norm:
+                curves = [(descriptions[n] + (f" ({tag})" if tag else ""), norm_of(r["branch"], n)) for n in panel]
+            elif len(results) == 1:
+                curves = [("max over a period", r["branch"][f"max_{panel[0]}"]), ("min over a period", r["branch"][f"min_{panel[0]}"])]
+            else:  # a colour per branch: its max is the upper curve, its min the lower
+                curves = [(f"{tag} (max and min)", r["branch"][f"max_{panel[0]}"]), (None, r["branch"][f"min_{panel[0]}"])]
+            for side, (what, values) in enumerate(curves):
+                colour = f"C{number}" if not norm and len(results) > 1 else f"C{len(curves) * number + side}"
+                _plot_split(ax, r["branch"]["omega"], values, stable, unstable, colour, what)
+        for text, sp in numbered:
+            values = [float(norm_of(sp, n)) if norm else sp.get(key) for n in panel
+                      for key in ((n,) if norm else (f"max_{n}", f"min_{n}"))]
+            values = [v for v in values if v is not None]
+            if values:
                 ax.plot([sp["omega"]] * len(values), values, "o", color="k", ms=4, zorder=5)
-                labels.setdefault(ax, []).append((sp["omega"], max(values), text + ("" if number == 0 else tag)))
+                labels.setdefault(ax, []).append((sp["omega"], max(values), text))
         ax.set_xlabel(OMEGA_LABEL)
         ax.set_ylabel(length_label(NORM_LABEL if norm else descriptions[panel[0]], length_unit))
         ax.grid(alpha=0.3)

@@ -117,7 +117,7 @@ def place_labels(ax, items, fontsize=8, avoid=()):
         if best is not None:
             label = best[1]
             dx, dy = label.xyann
-            if np.hypot(dx, dy) > 12:  # far from its dot: a thin leader says which dot (drawn after measuring the text alone)
+            if np.hypot(dx, dy) > 15:  # far from its dot: a thin leader says which dot (drawn after measuring the text alone)
                 label.remove()
                 label = ax.annotate(text, (x, y), textcoords="offset points", xytext=(dx, dy), fontsize=fontsize, annotation_clip=False,
                                     arrowprops={"arrowstyle": "-", "lw": 0.5, "color": "0.4", "shrinkA": 1, "shrinkB": 3})
