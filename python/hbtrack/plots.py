@@ -155,6 +155,17 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, z
     return figure(result, outputs, others, length_unit, title, zoom, norm, descriptions)
 
 
+def _response(columns, name, norm):
+    """max_NAME, or with norm ||x(t)||_inf = max(|max_NAME|, |min_NAME|) (the paper's Figs 6 and 11)."""
+    if not norm:
+        return np.asarray(columns[f"max_{name}"], float)
+    return np.maximum(np.abs(np.asarray(columns[f"max_{name}"], float)), np.abs(np.asarray(columns[f"min_{name}"], float)))
+
+
+def _response_label(name, norm):
+    return rf"$\Vert {name}(t) \Vert_\infty$" if norm else f"max {name}"
+
+
 def _tracking_parameter(track):
     return track["summary"]["options"]["tracking"]["parameter"]
 
@@ -163,7 +174,7 @@ def _extrema(track):
     return [sp for sp in track.get("special_points", []) if sp["type"] in ("min", "max")]
 
 
-def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, isolas=()):
+def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, isolas=(), norm=False):
     """Limit-point curves in (omega, parameter, max of an output).
 
     Extrema of the parameter marked (v: min, a pair of limit points is born; ^: max, a pair
@@ -181,6 +192,8 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
         The model's length unit for the labels.
     isolas : sequence of dict, optional
         Isolated branches, drawn in their own colour at their parameter value (the paper's Fig. 6).
+    norm : bool, optional
+        The vertical axis ||x(t)||_inf = max(|max|, |min|) rather than max.
 
     Returns
     -------
@@ -198,22 +211,22 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
         lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
-        ax.plot(curve["omega"], curve[param], curve[f"max_{name}"], color=f"C{i}", lw=1.4, label=f"limit point {lp} tracked")
+        ax.plot(curve["omega"], curve[param], _response(curve, name, norm), color=f"C{i}", lw=1.4, label=f"limit point {lp} tracked")
         for sp in _extrema(track):
-            ax.scatter([sp["omega"]], [sp[param]], [sp[f"max_{name}"]], marker="v" if sp["type"] == "min" else "^", color="k", s=30)
+            ax.scatter([sp["omega"]], [sp[param]], [_response(sp, name, norm)], marker="v" if sp["type"] == "min" else "^", color="k", s=30)
     for j, nfrc in enumerate(validations):
         value = nfrc["summary"]["options"]["parameters"][param]
         branch = nfrc["branch"]
-        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), branch[f"max_{name}"], color="0.4", lw=0.9,
+        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), _response(branch, name, norm), color="0.4", lw=0.9,
                 ls=":", label="NFRCs at fixed values" if j == 0 else None)
     for j, isola in enumerate(isolas):
         value = isola["summary"]["options"]["parameters"][param]
         branch = isola["branch"]
-        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), branch[f"max_{name}"], color="C3", lw=1.1,
+        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), _response(branch, name, norm), color="C3", lw=1.1,
                 label="isolated branches" if j == 0 else None)
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
-    ax.set_zlabel(length_label(f"max {name}", length_unit))
+    ax.set_zlabel(length_label(_response_label(name, norm), length_unit))
     ax.set_title("limit-point tracking (v: min, ^: max of the parameter)", fontsize=10)
     ax.legend(fontsize=8)
     return fig
@@ -284,7 +297,7 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
     return fig
 
 
-def validation_figure(tracks, nfrcs, output=None, length_unit=None):
+def validation_figure(tracks, nfrcs, output=None, length_unit=None, norm=False):
     """Tracking curves in (omega, max of an output) with separately computed NFRCs.
 
     Each NFRC's folds must lie on a tracking curve.
@@ -299,6 +312,8 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None):
         The output drawn (default the first).
     length_unit : str, optional
         The model's length unit for the labels.
+    norm : bool, optional
+        ||x(t)||_inf = max(|max|, |min|) rather than max (the paper's Fig. 11).
 
     Returns
     -------
@@ -314,19 +329,19 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None):
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
-        ax.plot(curve["omega"], curve[f"max_{name}"], color="k", lw=1.6, label="limit points" if i == 0 else None)
+        ax.plot(curve["omega"], _response(curve, name, norm), color="k", lw=1.6, label="limit points" if i == 0 else None)
     for j, nfrc in enumerate(nfrcs):
         value = nfrc["summary"]["options"]["parameters"][param]
         stable, unstable = _stable_masks(nfrc["branch"])
         what = "isolated branch" if nfrc.get("kind") == "isola_branch" else "NFRC"
-        _plot_split(ax, nfrc["branch"]["omega"], nfrc["branch"][f"max_{name}"], stable, unstable, f"C{j}", f"{what}, {param} = {value:g}")
+        _plot_split(ax, nfrc["branch"]["omega"], _response(nfrc["branch"], name, norm), stable, unstable, f"C{j}", f"{what}, {param} = {value:g}")
     # The folds are what is checked: show the frequencies the tracking curves span, not the
     # NFRCs' whole range where the resonance would be a spike.
     omegas = np.concatenate([np.asarray(tracking_curve(t)["omega"]) for t in tracks])
     span = max(omegas.max() - omegas.min(), 1e-3 * abs(omegas.max()))
     ax.set_xlim(omegas.min() - 0.25 * span, omegas.max() + 0.25 * span)
     ax.set_xlabel(OMEGA_LABEL)
-    ax.set_ylabel(length_label(f"max {name} over a period", length_unit))
+    ax.set_ylabel(length_label(_response_label(name, norm) + ("" if norm else " over a period"), length_unit))
     ax.set_title("tracking curves and NFRCs (folds on the curves)", fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)

@@ -5,8 +5,8 @@
 nfrc: the nominal NFRC, with the backbones and switched branches the study computed drawn over
 it; period_doubled_K: each branch switched at a PD K, zoomed on its band; per tracked parameter
 P: tracking_P (the curves on (omega, P) with the limit points of the validation NFRCs, which
-they must pass through), tracking_3d_P (omega, P, max of the first output, validation NFRCs at
-their own value), validation_P (the curves and the validation NFRCs and isolas on (omega, max of
+they must pass through), tracking_3d_P (omega, P, ||r(t)||_inf of the first output, validation NFRCs at
+their own value, isolas in colour), validation_P (the curves and the validation NFRCs and isolas on (omega, ||r||_inf of
 the first output)); nfrc_isolas_simulation (the paper's Fig. 12: the nominal NFRC, the isolated
 branches at the nominal values and the time integrations as dots, ||r(t)||_inf of every output;
 study_paper_figures.py); simulation: time signals and harmonic amplitudes, time integration
@@ -90,9 +90,10 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
                 result["summary"].setdefault("options", {}).setdefault("parameters", {})[param] = v["value"]
                 isolas.append(result)
         figures[f"tracking_{param}"] = plots.tracking_plane_figure(tracks, validations=nfrcs, length_unit=length_unit)
-        figures[f"tracking_3d_{param}"] = plots.tracking_3d_figure(tracks, validations=nfrcs, length_unit=length_unit, isolas=isolas)
+        # The paper's Figs 6 and 11: ||r(t)||_inf, which an inward (negative) extreme dominates on a blade
+        figures[f"tracking_3d_{param}"] = plots.tracking_3d_figure(tracks, validations=nfrcs, length_unit=length_unit, isolas=isolas, norm=True)
         if nfrcs or isolas:
-            figures[f"validation_{param}"] = plots.validation_figure(tracks, nfrcs + isolas, length_unit=length_unit)
+            figures[f"validation_{param}"] = plots.validation_figure(tracks, nfrcs + isolas, length_unit=length_unit, norm=True)
     if summary.get("tracking") and os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
         figures["nfrc_isolas_simulation"] = nfrc_isolas_simulation_figure(study_dir, length_unit=length_unit, read=read)
     if os.path.exists(os.path.join(study_dir, "simulate", "summary.json")):
