@@ -130,7 +130,8 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     files = []
     nfrc = read_result(os.path.join(study_dir, "nfrc"))
     # Fig. 3: the signed inward extremes of leading and trailing edge (solid: stable, dashed:
-    # unstable), limit points numbered, their labels offset four ways so that neighbours do not overlap.
+    # unstable), limit points numbered as the tables number them (summary.json's order), their
+    # labels placed once the layout is final where they overlap no other text (label_layout).
     from .plots import _plot_split, _stable_masks
     fig, ax = plt.subplots(figsize=(6.5, 4))
     b = nfrc["branch"]
@@ -141,11 +142,11 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     stable, unstable = _stable_masks(b)
     _plot_split(ax, b["omega"] / w1b, 1e3 * b["min_le"], stable, unstable, "C0", "leading edge (n1)")
     _plot_split(ax, b["omega"] / w1b, 1e3 * b["min_te"], stable, unstable, "C1", "trailing edge (n9)")
+    lp_labels = []
     for k, p in enumerate(_limit_points(nfrc["summary"]), start=1):
         for key in ("min_le", "min_te"):
             ax.plot(p["omega"] / w1b, 1e3 * p[key], "o", color="k", ms=4, zorder=5)
-        ax.annotate(f"LP{k}", (p["omega"] / w1b, 1e3 * p["min_le"]), textcoords="offset points",
-                    xytext=[(6, 6), (-30, -12), (6, -14), (-30, 8)][(k - 1) % 4], fontsize=8)
+        lp_labels.append((p["omega"] / w1b, 1e3 * min(p["min_le"], p["min_te"]), f"LP{k}"))
     f3 = paper["fig3"]
     for value, style, label in ((f3["min_le_m"], ":", "paper, le at LP3"), (f3["min_te_m"], "-.", "paper, te at LP3")):
         ax.axhline(1e3 * value, color="C3", ls=style, lw=1, label=label)
@@ -154,6 +155,8 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower left")
     fig.tight_layout()
+    from .label_layout import place_labels
+    place_labels(ax, lp_labels)
     files += save_figure(fig, os.path.join(study_dir, "figures", "paper_fig3"))
 
     # Fig. 7: the amplitude tracking curves in (omega / omega_1B, A), births and merges marked.

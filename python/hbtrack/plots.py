@@ -120,17 +120,9 @@ def _plot_split(ax, x, y, stable, unstable, colour, label):
         ax.plot(x, dashed, "--", color=colour, lw=1.3)
 
 
-def _mark_special_points(ax, special_points, key):
-    for sp in special_points:
-        if key in sp:
-            ax.plot(sp["omega"], sp[key], "o", color="k", ms=4, zorder=5)
-            ax.annotate(sp["type"], (sp["omega"], sp[key]), textcoords="offset points", xytext=(4, 4), fontsize=8)
-
-
-def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
-    """The NFRC: max and min over a period against omega.
-
-    Stable parts solid, unstable dashed, special points (LP, BP, PD, NS) marked.
+def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, zoom=0.1, norm=False, descriptions=None):
+    """The NFRC: max and min over a period against omega, or ||r(t)||_inf (branch_figures.nfrc_figure,
+    where it is drawn; kept here, where the API has always had it).
 
     Parameters
     ----------
@@ -141,9 +133,15 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
     others : sequence of dict, optional
         More branch results of the same case overlaid (e.g. isolas).
     length_unit : str, optional
-        The model's length unit for the labels.
+        The unit of the result's lengths, for the labels (units.scale_lengths converts).
     title : str, optional
-        The figure's title.
+        The figure's title (default none).
+    zoom : float or None, optional
+        Zoom on where the response exceeds this fraction of its peak; None: the whole branch.
+    norm : bool, optional
+        One axes of max(|max|, |min|) of every output (the paper's Fig. 3).
+    descriptions : dict, optional
+        {output: text} naming the outputs.
 
     Returns
     -------
@@ -153,26 +151,19 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None):
     --------
     >>> fig = nfrc_figure(hbtrack.frc(case), length_unit="m")
     """
-    names = outputs or output_names(result)
-    if not names:
-        raise ValueError("nfrc_figure: the result records no outputs")
-    fig, axes = plt.subplots(len(names), 1, figsize=(6.5, 3.2 * len(names)), squeeze=False)
-    for ax, name in zip(axes[:, 0], names):
-        for number, branch_result in enumerate([result, *others]):
-            branch = branch_result["branch"]
-            stable, unstable = _stable_masks(branch)
-            label = branch_result.get("label", "" if number == 0 else f"branch {number + 1}")
-            tag = f" ({label})" if label else ""
-            for side, key in enumerate((f"max_{name}", f"min_{name}")):
-                _plot_split(ax, branch["omega"], branch[key], stable, unstable, f"C{2 * number + side}", key + tag)
-                _mark_special_points(ax, branch_result.get("special_points", []), key)
-        ax.set_xlabel(OMEGA_LABEL)
-        ax.set_ylabel(length_label(name, length_unit))  # the legend tells max_ and min_ apart
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-    axes[0, 0].set_title(title or "NFRC (solid: stable, dashed: unstable)", fontsize=10)
-    fig.tight_layout()
-    return fig
+    from .branch_figures import nfrc_figure as figure  # branch_figures imports this module
+    return figure(result, outputs, others, length_unit, title, zoom, norm, descriptions)
+
+
+def _response(columns, name, norm):
+    """max_NAME, or with norm ||x(t)||_inf = max(|max_NAME|, |min_NAME|) (the paper's Figs 6 and 11)."""
+    if not norm:
+        return np.asarray(columns[f"max_{name}"], float)
+    return np.maximum(np.abs(np.asarray(columns[f"max_{name}"], float)), np.abs(np.asarray(columns[f"min_{name}"], float)))
+
+
+def _response_label(name, norm):
+    return rf"$\Vert {name}(t) \Vert_\infty$" if norm else f"max {name}"
 
 
 def _tracking_parameter(track):
@@ -183,7 +174,7 @@ def _extrema(track):
     return [sp for sp in track.get("special_points", []) if sp["type"] in ("min", "max")]
 
 
-def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
+def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, isolas=(), norm=False):
     """Limit-point curves in (omega, parameter, max of an output).
 
     Extrema of the parameter marked (v: min, a pair of limit points is born; ^: max, a pair
@@ -199,6 +190,10 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
         NFRC results overlaid at their own parameter value.
     length_unit : str, optional
         The model's length unit for the labels.
+    isolas : sequence of dict, optional
+        Isolated branches, drawn in their own colour at their parameter value (the paper's Fig. 6).
+    norm : bool, optional
+        The vertical axis ||x(t)||_inf = max(|max|, |min|) rather than max.
 
     Returns
     -------
@@ -215,17 +210,23 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None):
     ax = fig.add_subplot(projection="3d")
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
-        ax.plot(curve["omega"], curve[param], curve[f"max_{name}"], color=f"C{i}", lw=1.4, label=f"limit points ({i + 1})")
+        lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
+        ax.plot(curve["omega"], curve[param], _response(curve, name, norm), color=f"C{i}", lw=1.4, label=f"limit point {lp} tracked")
         for sp in _extrema(track):
-            ax.scatter([sp["omega"]], [sp[param]], [sp[f"max_{name}"]], marker="v" if sp["type"] == "min" else "^", color="k", s=30)
+            ax.scatter([sp["omega"]], [sp[param]], [_response(sp, name, norm)], marker="v" if sp["type"] == "min" else "^", color="k", s=30)
     for j, nfrc in enumerate(validations):
         value = nfrc["summary"]["options"]["parameters"][param]
         branch = nfrc["branch"]
-        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), branch[f"max_{name}"], color="0.4", lw=0.9,
-                ls=":", label="NFRC" if j == 0 else None)
+        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), _response(branch, name, norm), color="0.4", lw=0.9,
+                ls=":", label="NFRCs at fixed values" if j == 0 else None)
+    for j, isola in enumerate(isolas):
+        value = isola["summary"]["options"]["parameters"][param]
+        branch = isola["branch"]
+        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), _response(branch, name, norm), color="C3", lw=1.1,
+                label="isolated branches" if j == 0 else None)
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
-    ax.set_zlabel(length_label(f"max {name}", length_unit))
+    ax.set_zlabel(length_label(_response_label(name, norm), length_unit))
     ax.set_title("limit-point tracking (v: min, ^: max of the parameter)", fontsize=10)
     ax.legend(fontsize=8)
     return fig
@@ -259,6 +260,8 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
     tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
     param = _tracking_parameter(tracks[0])
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    coordinates = []  # texts at the extrema, placed once the layout is final
+    kinds = set()
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
         lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
@@ -267,9 +270,9 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
         if start:
             ax.plot([start["omega"]], [start[param]], "o", color=f"C{i}", ms=5)
         for sp in _extrema(track):
-            ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == "min" else "^", color="k", ms=7)
-            ax.annotate(f"{sp['type']} ({sp['omega']:.6g}, {sp[param]:.4g})", (sp["omega"], sp[param]),
-                        textcoords="offset points", xytext=(6, 4), fontsize=8)
+            ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == "min" else "^", color="k", ms=7, zorder=5)
+            coordinates.append((sp["omega"], sp[param], f"({sp['omega']:.6g}, {sp[param]:.4g})"))
+            kinds.add(sp["type"])
     for j, nfrc in enumerate(validations):
         value = nfrc["summary"]["options"]["parameters"][param]
         lps = [sp["omega"] for sp in nfrc.get("special_points", []) if sp["type"] == "LP"]
@@ -278,14 +281,23 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
         ax.axhline(at, color="0.5", lw=0.8, ls=":", label=f"{param} = {at:g}")
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
-    ax.set_title("limit-point tracking (o: start, v: min, ^: max)", fontsize=10)
+    ax.set_title("limit-point tracking (o: start)", fontsize=10)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    # The paper's Fig. 7: a minimum of the parameter along a curve is where a pair of limit points
+    # is born (an isola appears, or a fold on the main branch), a maximum where a pair vanishes
+    # (an isola merges).
+    from matplotlib.lines import Line2D
+    meaning = {"min": ("v", f"min of {param}: a pair of limit points born"), "max": ("^", f"max of {param}: a pair merges")}
+    extra = [Line2D([], [], marker=meaning[k][0], color="k", ls="none", ms=7, label=meaning[k][1]) for k in ("min", "max") if k in kinds]
+    handles, labels = ax.get_legend_handles_labels()
+    ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=8)
     fig.tight_layout()
+    from .label_layout import place_labels
+    place_labels(ax, coordinates)
     return fig
 
 
-def validation_figure(tracks, nfrcs, output=None, length_unit=None):
+def validation_figure(tracks, nfrcs, output=None, length_unit=None, norm=False):
     """Tracking curves in (omega, max of an output) with separately computed NFRCs.
 
     Each NFRC's folds must lie on a tracking curve.
@@ -300,6 +312,8 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None):
         The output drawn (default the first).
     length_unit : str, optional
         The model's length unit for the labels.
+    norm : bool, optional
+        ||x(t)||_inf = max(|max|, |min|) rather than max (the paper's Fig. 11).
 
     Returns
     -------
@@ -315,18 +329,19 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None):
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
-        ax.plot(curve["omega"], curve[f"max_{name}"], color="k", lw=1.6, label="limit points" if i == 0 else None)
+        ax.plot(curve["omega"], _response(curve, name, norm), color="k", lw=1.6, label="limit points" if i == 0 else None)
     for j, nfrc in enumerate(nfrcs):
         value = nfrc["summary"]["options"]["parameters"][param]
         stable, unstable = _stable_masks(nfrc["branch"])
-        _plot_split(ax, nfrc["branch"]["omega"], nfrc["branch"][f"max_{name}"], stable, unstable, f"C{j}", f"NFRC, {param} = {value:g}")
+        what = "isolated branch" if nfrc.get("kind") == "isola_branch" else "NFRC"
+        _plot_split(ax, nfrc["branch"]["omega"], _response(nfrc["branch"], name, norm), stable, unstable, f"C{j}", f"{what}, {param} = {value:g}")
     # The folds are what is checked: show the frequencies the tracking curves span, not the
     # NFRCs' whole range where the resonance would be a spike.
     omegas = np.concatenate([np.asarray(tracking_curve(t)["omega"]) for t in tracks])
     span = max(omegas.max() - omegas.min(), 1e-3 * abs(omegas.max()))
     ax.set_xlim(omegas.min() - 0.25 * span, omegas.max() + 0.25 * span)
     ax.set_xlabel(OMEGA_LABEL)
-    ax.set_ylabel(length_label(f"max {name} over a period", length_unit))
+    ax.set_ylabel(length_label(_response_label(name, norm) + ("" if norm else " over a period"), length_unit))
     ax.set_title("tracking curves and NFRCs (folds on the curves)", fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)

@@ -5,10 +5,12 @@
 nfrc: the nominal NFRC, with the backbones and switched branches the study computed drawn over
 it; period_doubled_K: each branch switched at a PD K, zoomed on its band; per tracked parameter
 P: tracking_P (the curves on (omega, P) with the limit points of the validation NFRCs, which
-they must pass through), tracking_3d_P (omega, P, max of the first output, validation NFRCs at
-their own value), validation_P (the curves and the validation NFRCs and isolas on (omega, max of
-the first output)); simulation: time signals and harmonic amplitudes, time integration against
-the HBM orbit it started from.
+they must pass through), tracking_3d_P (omega, P, ||r(t)||_inf of the first output, validation NFRCs at
+their own value, isolas in colour), validation_P (the curves and the validation NFRCs and isolas on (omega, ||r||_inf of
+the first output)); nfrc_isolas_simulation (the paper's Fig. 12: the nominal NFRC, the isolated
+branches at the nominal values and the time integrations as dots, ||r(t)||_inf of every output;
+study_paper_figures.py); simulation: time signals and harmonic amplitudes, time integration
+against the HBM orbit it started from.
 """
 import argparse
 import json
@@ -20,13 +22,15 @@ from .analysis_figures import period_doubled_figure
 from .overlay_figures import overlay_figure
 from .plot import figures_for
 from .results import read_result
+from .study_paper_figures import nfrc_isolas_simulation_figure
+from .units import length_factor, scale_lengths
 
 
-def _nfrc_figures(study_dir, summary, length_unit):
+def _nfrc_figures(study_dir, summary, length_unit, read=read_result):
     """The nominal NFRC, alone or with the branches beside it (backbones, switched branches)."""
-    nfrc = read_result(os.path.join(study_dir, "nfrc"))
+    nfrc = read(os.path.join(study_dir, "nfrc"))
     entries = summary.get("backbones", []) + [w for w in summary.get("switched", []) if "folder" in w]
-    beside = [read_result(os.path.join(study_dir, e["folder"])) for e in entries
+    beside = [read(os.path.join(study_dir, e["folder"])) for e in entries
               if os.path.exists(os.path.join(study_dir, e["folder"], "branch.csv"))]
     if not beside:
         return {"nfrc": plots.nfrc_figure(nfrc, length_unit=length_unit, title="nominal NFRC (solid: stable, dashed: unstable)")}
@@ -40,7 +44,7 @@ def _nfrc_figures(study_dir, summary, length_unit):
     return figures
 
 
-def study_figures(study_dir, length_unit=None):
+def study_figures(study_dir, length_unit=None, model_unit=None):
     """The figures of a study folder.
 
     Parameters
@@ -48,7 +52,10 @@ def study_figures(study_dir, length_unit=None):
     study_dir : str
         An `hbtrack study` folder.
     length_unit : str, optional
-        The model's length unit for the labels.
+        The unit of the lengths in the figures: with model_unit, what they are converted to
+        (units.length_factor), else only the labels' unit.
+    model_unit : str, optional
+        The unit of the model's lengths (e.g. "m"); None: drawn as they are.
 
     Returns
     -------
@@ -58,30 +65,39 @@ def study_figures(study_dir, length_unit=None):
     Examples
     --------
     >>> figures = study_figures("out/blade-study", length_unit="m")
+    >>> figures = study_figures("out/r67-study", "mm", "m")   # lengths times 1000
     """
+    factor = length_factor(length_unit, model_unit) if model_unit else 1.0
+
+    def read(folder):
+        return scale_lengths(read_result(folder), factor)
+
     with open(os.path.join(study_dir, "summary.json")) as f:
         summary = json.load(f)
     figures = {}
     if os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
-        figures.update(_nfrc_figures(study_dir, summary, length_unit))
+        figures.update(_nfrc_figures(study_dir, summary, length_unit, read))
     for entry in summary.get("tracking", []):
         param = entry["parameter"]
-        tracks = [read_result(os.path.join(study_dir, c["folder"])) for c in entry["curves"] if "folder" in c]
+        tracks = [read(os.path.join(study_dir, c["folder"])) for c in entry["curves"] if "folder" in c]
         if not tracks:
             continue
-        nfrcs = [read_result(os.path.join(study_dir, v["folder"])) for v in entry.get("validations", [])]
+        nfrcs = [read(os.path.join(study_dir, v["folder"])) for v in entry.get("validations", [])]
         isolas = []
         for v in entry.get("validations", []):
             for branch in v.get("isola_branches", []):
-                result = read_result(os.path.join(study_dir, branch["folder"]))
+                result = read(os.path.join(study_dir, branch["folder"]))
                 result["summary"].setdefault("options", {}).setdefault("parameters", {})[param] = v["value"]
                 isolas.append(result)
         figures[f"tracking_{param}"] = plots.tracking_plane_figure(tracks, validations=nfrcs, length_unit=length_unit)
-        figures[f"tracking_3d_{param}"] = plots.tracking_3d_figure(tracks, validations=nfrcs + isolas, length_unit=length_unit)
+        # The paper's Figs 6 and 11: ||r(t)||_inf, which an inward (negative) extreme dominates on a blade
+        figures[f"tracking_3d_{param}"] = plots.tracking_3d_figure(tracks, validations=nfrcs, length_unit=length_unit, isolas=isolas, norm=True)
         if nfrcs or isolas:
-            figures[f"validation_{param}"] = plots.validation_figure(tracks, nfrcs + isolas, length_unit=length_unit)
+            figures[f"validation_{param}"] = plots.validation_figure(tracks, nfrcs + isolas, length_unit=length_unit, norm=True)
+    if summary.get("tracking") and os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
+        figures["nfrc_isolas_simulation"] = nfrc_isolas_simulation_figure(study_dir, length_unit=length_unit, read=read)
     if os.path.exists(os.path.join(study_dir, "simulate", "summary.json")):
-        for stem, figure in figures_for(read_result(os.path.join(study_dir, "simulate")), length_unit).items():
+        for stem, figure in figures_for(read(os.path.join(study_dir, "simulate")), length_unit).items():
             figures[f"simulation_{stem}"] = figure
     return figures
 
@@ -105,12 +121,14 @@ def main(argv=None):
     """
     parser = argparse.ArgumentParser(prog="plot_study.py", description=__doc__.splitlines()[0])
     parser.add_argument("folder", help="study folder")
-    parser.add_argument("--units", help="the model's length unit for the labels (e.g. m)")
+    parser.add_argument("--units", help="the unit of lengths in the figures: m, cm, mm, um, nm or in convert from "
+                                        "--model-units; any other text only labels the axes")
+    parser.add_argument("--model-units", default="m", help="the unit of the model's lengths (default m)")
     args = parser.parse_args(argv)
     out = os.path.join(args.folder, "figures")
     os.makedirs(out, exist_ok=True)
     try:
-        figures = study_figures(args.folder, args.units)
+        figures = study_figures(args.folder, args.units, args.model_units)
     except (ValueError, OSError, KeyError) as error:
         print(f"plot_study.py: {error}", file=sys.stderr)
         return 2

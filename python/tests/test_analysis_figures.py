@@ -71,7 +71,7 @@ def drawn_curve(ax, label):
 
 
 @pytest.mark.parametrize("kind, expected", [("backbone", {"backbone", "backbone_outputs"}), ("continue", {"continuation", "harmonics"}),
-                                            ("switch", {"nfrc", "harmonics", "switched"})])
+                                            ("switch", {"nfrc", "fourier", "harmonics", "switched"})])
 def test_hbtrack_plot_knows_backbone_continue_and_switch_folders(kind, expected, coupled_study, continue_cli, tmp_path):
     folder = {"backbone": coupled_study["backbone"], "continue": continue_cli, "switch": coupled_study["switched"][0]}[kind]
     result = read_result(folder)

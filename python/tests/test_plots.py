@@ -12,11 +12,11 @@ from hbtrack.plot import figures_for, make_figures
 from conftest import DUFFING, ROOT, cli_path, run_cli
 
 EXPECTED = {  # result kind: figures made for it
-    "frc": {"nfrc", "harmonics"},
-    "solve": {"nfrc", "harmonics"},
+    "frc": {"nfrc", "fourier", "harmonics"},
+    "solve": {"nfrc", "fourier", "harmonics"},
     "track": {"tracking_3d", "tracking"},
     "isolas": {"isolas", "tracking"},
-    "isola_branch": {"nfrc", "harmonics"},  # one branch folder of an isolas result
+    "isola_branch": {"nfrc", "fourier", "harmonics"},  # one branch folder of an isolas result
     "simulate": {"signals", "harmonics_x"},
 }
 
@@ -86,7 +86,7 @@ def test_unstable_points_are_dashed(duffing_frc):
 def test_hbtrack_plot_verb(duffing_frc_cli, tmp_path):
     done = subprocess.run([cli_path(), "plot", duffing_frc_cli["folder"], "-o", str(tmp_path)], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
-    assert sorted(os.listdir(tmp_path)) == ["harmonics.pdf", "harmonics.png", "nfrc.pdf", "nfrc.png"]
+    assert sorted(os.listdir(tmp_path)) == ["fourier.pdf", "fourier.png", "harmonics.pdf", "harmonics.png", "nfrc.pdf", "nfrc.png"]
     refused = subprocess.run([cli_path(), "plot", ROOT], capture_output=True, text=True)
     assert refused.returncode == 2 and "no summary.json" in refused.stderr
 
