@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 jobs=${JOBS:-$(nproc)}
 
 # /usr/bin/python3: the first python3 on PATH may lack numpy (the Python module and its tests).
-# CI (CI=true) runs no benchmark and skips building them: it has 30 minutes on 2 cores.
+# CI (CI=true) runs no benchmark and skips building them: its target is 45 minutes on 2 cores.
 bench=ON
 [ -n "${CI:-}" ] && bench=OFF
 # ccache when installed: a second build of unchanged sources takes seconds.
@@ -23,8 +23,11 @@ ctest --test-dir build --output-on-failure -j "$jobs"
 
 if [ "${1:-}" = "--sanitize" ]; then
   # -O1 keeps Eigen fast enough under the sanitizers; benchmarks are not built, nor the Python
-  # module (python cannot load an ASan-instrumented extension; its tests ran above).
-  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+  # module (python cannot load an ASan-instrumented extension; its tests ran above). -g1 (line
+  # tables: the sanitizers' stack traces still name file and line) compiles a quarter faster
+  # than -g and writes a third of the object size (measured on harmonic_balance.cpp: 75 s
+  # against 98 s, 14 against 43 MB).
+  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
     -DHBTRACK_SANITIZE=ON -DHBTRACK_BUILD_BENCH=OFF -DHBTRACK_PYTHON=OFF "${launcher[@]}"
   cmake --build build-sanitize -j "$jobs"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \

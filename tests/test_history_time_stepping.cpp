@@ -124,6 +124,10 @@ TEST(HistoryTimeStepping, ThreeOscillatorsStayOnTheHbmOrbit) {
   // at H = 7 (the example's) and 3e-5 at H = 21; at omega = 1.6, 1.3e-4 and 4e-6. So at H = 21
   // the simulation must stay within 2e-4 of the range of the orbit, and at H = 7 it must show
   // the example's truncation error (more than 3 times the H = 21 deviation at omega = 0.8).
+  // Seven minutes under the sanitizers (Newmark to the steady state at 1024 steps per period):
+  // the Release pass checks these numbers; MonodromyMultipliersMatchTheTimeIntegratorsFlow runs
+  // Newmark with sliders under the sanitizers.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   for (double omega : {0.8, 1.6}) {
     double deviation[2] = {0, 0};
     for (int h : {21, 7}) {
@@ -250,6 +254,10 @@ TEST(HistoryTimeStepping, ThreeOscillatorsMonodromyVerdictsAreTheSimulations) {
   // there (within the H = 7 truncation error, ~1e-3 of the amplitude); near omega = 1.64, on
   // the upper branch after the first fold, it says unstable and the simulation leaves for
   // another orbit (x3's largest value drops from 0.78 to 0.16, a third of its range).
+  // Two and a half minutes under the sanitizers (the NFRC and two simulations to the steady
+  // state): the Release pass checks these verdicts; MonodromyMultipliersMatchTheTimeIntegratorsFlow
+  // runs the monodromy matrix and Newmark with sliders under the sanitizers.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   CaseDefinition c = load_case(test::source_path("examples/three_oscillators_jenkins.toml"));
   c.nfrc.stability.method = "none";
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);

@@ -130,7 +130,7 @@ TEST(Iwan, PropertyDerivativesMatchFiniteDifferences) {
   // Force samples are affine in each slider's (k, F) at a fixed stick-slip pattern and smooth in
   // the properties through them: central differences with h = 1e-6 relative have an O(h^2)
   // truncation error, far below 1e-6.
-  const auto e = iwan({0, 1}, (VectorXd(2) << 1.0, -1.0).finished());
+  const auto e = iwan({0, 1}, Eigen::Vector2d(1.0, -1.0));
   const double phi_max = e->discretise(kProps).phi_max;
   const int n = 96;
   for (double a : {0.05, 0.6, 4.0}) {  // micro-slip, deep micro-slip, macro-slip
@@ -161,7 +161,7 @@ TEST(Iwan, AftJacobianMatchesFiniteDifferencesInMicroAndMacroSlip) {
   // affine in x: central differences are exact up to round-off / h (~1e-9 relative); a pattern
   // change within +-h needs a trial force within k_i h of a slip force, which these motions avoid.
   const StructuralModel m = test::chain_between_walls(2, 1);
-  const auto e = iwan({1, 0}, (VectorXd(2) << 1.0, -1.0).finished());
+  const auto e = iwan({1, 0}, Eigen::Vector2d(1.0, -1.0));
   const double phi_max = e->discretise(kProps).phi_max;
   HarmonicBalanceOptions options;
   options.harmonics = 3;

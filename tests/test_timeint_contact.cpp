@@ -29,8 +29,11 @@ ContactPoint compute_upper_branch_point(double target_omega) {
   HarmonicBalance hbm(p.c.model, p.c.elements, p.c.parameters, p.c.harmonic_balance);
   NfrcOptions range = p.c.nfrc;
   range.omega_end = 0.8;  // the fold is all we need
+  // The engine locates the fold by itself; the Floquet analysis (shooting at every point of this
+  // C0 law) would be most of the cost, minutes under the sanitizers, and nothing here reads it.
+  range.stability.method = "none";
   const NfrcResult nfrc = compute_nfrc(hbm, range, p.c.outputs);
-  // Other special points (period doublings, ...) may come before: the fold is the first LP.
+  // Without stability the engine's LP/BP test alone marks points: the fold is the first LP.
   int first_fold = -1;
   for (const SpecialPoint& sp : nfrc.continuation.special_points)
     if (sp.type == "LP" && first_fold < 0) first_fold = sp.index;

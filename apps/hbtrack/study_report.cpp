@@ -38,8 +38,46 @@ void nominal_section(std::ostream& out, const json& s) {
   out << "\n";
 }
 
+// The backbones and switched branches [study] asked for (study_branches.hpp).
+void branches_section(std::ostream& out, const json& s) {
+  if (!s.contains("backbones") && !s.contains("switched")) return;
+  out << "## Backbones and switched branches\n\nDrawn over the nominal NFRC in [figures/nfrc.png](figures/nfrc.png).\n\n";
+  auto range = [](const json& r, const char* format) {
+    return r.is_array() && r.size() == 2 ? num(r[0].get<double>(), format) + " to " + num(r[1].get<double>(), format) : std::string();
+  };
+  if (s.contains("backbones")) {
+    out << "| backbone | modal amplitude | points | stop | omega (rad/s) | damping ratio | time (s) |\n|---|---|---|---|---|---|---|\n";
+    for (const auto& b : s["backbones"]) {
+      const json& z = b["damping_ratio_range"];
+      out << "| [" << b.value("folder", "") << "](" << b.value("folder", "") << "/) mode " << b.value("mode", 0) << " | "
+          << range(b["range"], "%.4g") << " | " << b.value("points", 0) << " | " << b.value("stop_reason", "") << " | "
+          << range(b["omega_range"], "%.5g") << " | "
+          << (z.is_array() && z.size() == 2 ? num(100 * z[0].get<double>(), "%.3g") + " to " + num(100 * z[1].get<double>(), "%.3g") + " %"
+                                            : "")
+          << " | " << num(b.value("wall_s", 0.0), "%.1f") << " |\n";
+    }
+    out << "\n";
+  }
+  if (s.contains("switched")) {
+    out << "| NFRC special point | omega (rad/s) | switched branch | points | its special points | stop | omega range | time (s) |\n"
+           "|---|---|---|---|---|---|---|---|\n";
+    for (const auto& w : s["switched"]) {
+      out << "| " << w.value("point", 0) << " (" << w.value("type", "") << ") | " << num(w.value("omega", 0.0), "%.6g") << " | ";
+      if (w.contains("on_the_branch_of")) {
+        out << "on the branch of " << w["on_the_branch_of"].get<std::string>() << " | | | | | |\n";
+        continue;
+      }
+      out << "[" << w.value("folder", "") << "](" << w.value("folder", "") << "/) | " << w.value("points", 0) << " | "
+          << w.value("special_points", 0) << " | " << w.value("stop_reason", "") << " | " << range(w["omega_range"], "%.6g") << " | "
+          << num(w.value("wall_s", 0.0), "%.1f") << " |\n";
+    }
+    if (s["switched"].empty()) out << "| (the nominal NFRC has no BP or PD) | | | | | | | |\n";
+    out << "\n";
+  }
+}
+
 void tracking_section(std::ostream& out, const json& s) {
-  if (!s.contains("tracking")) return;
+  if (!s.contains("tracking") || s["tracking"].empty()) return;  // nothing tracked: a study of backbones or switches
   out << "## Limit-point tracking\n\n| parameter | range | LP | omega at LP | points | stop | time (s) |\n|---|---|---|---|---|---|---|\n";
   for (const auto& t : s["tracking"])
     for (const auto& c : t["curves"]) {
@@ -113,6 +151,7 @@ void write_study_report(const std::string& dir, const json& s) {
   }
   for (const auto& f : s.value("figures", json::array())) out << "![" << f.get<std::string>() << "](" << f.get<std::string>() << ")\n\n";
   nominal_section(out, s);
+  branches_section(out, s);
   tracking_section(out, s);
   simulation_section(out, s);
   out << "## Steps\n\n| folder | exit code | time (s) |\n|---|---|---|\n";

@@ -130,7 +130,7 @@ int run_frc(const FrcOptions& options) {
   const std::string stop_reason = stop.reason(s.stop_reason);
   add_nfrc_summary(summary, c, hbm, r);
   summary["stop_reason"] = stop_reason;
-  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};
+  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};
   // The state of each special point, in summary order: `track` starts from a limit point's.
   CsvAppender special_states(dir + "/special_states.csv", state_header(hbm.unknowns()));
   for (const auto& sp : r.continuation.special_points) special_states.append(state_row(sp.lambda, sp.u));

@@ -1,10 +1,13 @@
-// `hbtrack plot DIR [-o OUT]`: the figures of any result folder, made by the Python package
-// hbtrack.plot (matplotlib) from the source tree; the folder type is detected there.
+// `hbtrack plot DIR [DIR2 ...] [-o OUT]`: the figures of any result folder, or of several drawn
+// over each other (an NFRC, its backbone, its switched branches), made by the Python package
+// hbtrack.plot (matplotlib) from the source tree; the folder types are detected there.
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include "cli_common.hpp"
 
@@ -13,7 +16,8 @@ namespace hbtrack::cli {
 namespace {
 
 struct PlotOptions {
-  std::string dir, out, units;
+  std::vector<std::string> dirs;
+  std::string out, units;
 };
 
 int run_plot(const PlotOptions& o) {
@@ -28,7 +32,8 @@ int run_plot(const PlotOptions& o) {
   setenv("MPLBACKEND", "Agg", 0);
   const char* interpreter = std::getenv("HBTRACK_PYTHON");
   if (!interpreter || !*interpreter) interpreter = HBTRACK_PYTHON_INTERPRETER;
-  std::vector<std::string> args{interpreter, "-m", "hbtrack.plot", o.dir};
+  std::vector<std::string> args{interpreter, "-m", "hbtrack.plot"};
+  args.insert(args.end(), o.dirs.begin(), o.dirs.end());
   if (!o.out.empty()) args.insert(args.end(), {"-o", o.out});
   if (!o.units.empty()) args.insert(args.end(), {"--units", o.units});
   std::vector<char*> argv;
@@ -45,9 +50,12 @@ int run_plot(const PlotOptions& o) {
 
 void add_plot_verb(CLI::App& app, VerbList& verbs) {
   static PlotOptions options;
-  CLI::App* plot = app.add_subcommand("plot", "figures (PNG and PDF) of a result folder of any verb, by the Python package");
-  plot->add_option("dir", options.dir, "result folder (frc, track, isolas, simulate, solve)")->required();
-  plot->add_option("-o,--output", options.out, "folder for the figures (default: DIR)");
+  CLI::App* plot = app.add_subcommand(
+      "plot", "figures (PNG and PDF) of a result folder of any verb, or of several drawn over each other, by the Python package");
+  plot->add_option("dirs", options.dirs,
+                   "result folder (frc, solve, track, isolas, simulate, sweep, backbone, continue, switch); several: drawn over each other")
+      ->required();
+  plot->add_option("-o,--output", options.out, "folder for the figures (default: the first DIR)");
   plot->add_option("--units", options.units, "the model's length unit for the axis labels (e.g. m; default: model length unit)");
   verbs.push_back({plot, [] { return run_plot(options); }});
 }

@@ -2,6 +2,8 @@
 // each a child process writing its own result folder under DIR (independent ones side by side, on
 // this machine or on MPI ranks: task_runner.hpp):
 //   nfrc/                 the nominal NFRC with stability
+//   backbone_modeK/       with [study] backbone: the nonlinear mode K (study_branches.hpp)
+//   switch_bpK/, _pdK/    with [study] switch: the branch born at the NFRC's special point K
 //   track_P_lpK/          limit point K followed in parameter P (the case's [study] section)
 //   validate_P_J/         an NFRC at a parameter value next to each extremum of the P curves
 //   crossings_P_J/        the limit points of the tracking curves at that value, located
@@ -20,6 +22,7 @@
 #include "folder_lock.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "result_folder.hpp"
+#include "study_branches.hpp"
 #include "study_comparisons.hpp"
 #include "study_curves.hpp"
 #include "study_checks.hpp"
@@ -47,6 +50,11 @@ struct StudyOptions {
 constexpr double kSameLimitPoint = 1e-5;
 // Validation NFRCs sit this fraction of the parameter range away from an extremum.
 constexpr double kProbeOffset = 0.02;
+// A BP or PD lies on an earlier switched branch within these (relative omega; outputs' max,
+// relative to their largest): a PD band's branch ends within a step of the band's other PD, its
+// omega within 1.2e-4 (tests/test_period_doubling.cpp), but its outputs' max up to 0.3 % off on
+// the two-dof contact example (the omega/2 harmonic grows as the square root of the distance).
+constexpr double kSameBranchOmega = 1e-3, kSameBranchOutput = 1e-2;
 
 // One verb run into DIR/folder. A step that may fail keeps going with what it wrote (exit 1: a
 // tracking leg or a simulation that stopped early still leaves its points).
@@ -85,7 +93,7 @@ class Study {
                 {"steps", json::array()}};
     if (resuming) summary_["resumed_steps"] = 0;
     save();
-    const bool ok = nominal() && tracking() && validation_and_simulation() && isolas() && isola_simulation() && convergence();
+    const bool ok = nominal() && branches() && tracking() && validation_and_simulation() && isolas() && isola_simulation() && convergence();
     // Only the parameters tracking reached: a study stopped at its nominal NFRC has none (a
     // null entry here made the checks and the page fail on "cannot use value() with null").
     for (const StudyTrack& t : tracked_)
@@ -172,6 +180,36 @@ class Study {
       if (sp.value("type", "") == "LP") limit_points_.push_back(sp);
     summary_["nfrc"] = {{"points", s["points"]}, {"special_points", s["special_points"]}, {"limit_points", limit_points_.size()},
                         {"stop_reason", s.value("stop_reason", "")}, {"wall_s", s["timings"]["wall_s"]}};
+    return true;
+  }
+
+  // Beside the NFRC, as [study] asks: the backbones side by side, then the branch of each BP and
+  // PD in turn, a point that an earlier switched branch passes through not switched again.
+  bool branches() {
+    const std::vector<BranchStep> backbones = backbone_steps(c_.study.backbones, o_.common.case_path);
+    std::vector<Step> steps;
+    for (const BranchStep& b : backbones) steps.push_back({b.folder, b.args, false});
+    if (!run_steps(steps)) return false;
+    for (size_t i = 0; i < backbones.size(); ++i)
+      summary_["backbones"].push_back(backbone_entry(dir_, backbones[i], c_.study.backbones[i]));
+    if (!c_.study.switch_branches) return true;
+    summary_["switched"] = json::array();
+    std::vector<std::string> folders;
+    const json points = summary_["nfrc"]["special_points"];
+    for (size_t k = 0; k < points.size(); ++k) {
+      const int point = static_cast<int>(k + 1);
+      if (!switchable(points[k])) continue;
+      if (const std::string on = switched_branch_through(dir_, folders, points[k], c_.outputs, kSameBranchOmega, kSameBranchOutput);
+          !on.empty()) {
+        summary_["switched"].push_back(
+            {{"point", point}, {"type", points[k]["type"]}, {"omega", points[k]["omega"]}, {"on_the_branch_of", on}});
+        continue;
+      }
+      const BranchStep s = switch_step(o_.common.case_path, dir_ + "/nfrc", points[k], point);
+      if (!run_steps({{s.folder, s.args, false}})) return false;
+      folders.push_back(s.folder);
+      summary_["switched"].push_back(switch_entry(dir_, s.folder, points[k], point));
+    }
     return true;
   }
 
@@ -477,7 +515,10 @@ int run_study(const StudyOptions& options) {
   const std::unique_ptr<TaskRunner> runner = start_task_runner(o.jobs);
   if (!runner) return 0;
   const CaseDefinition c = load_case(o.common.case_path, o.common.sets);
-  if (c.study.track.empty()) throw CaseError(o.common.case_path + ": study.track: missing (the parameters to track; see examples/blade/nominal.toml)");
+  if (c.study.track.empty() && c.study.backbones.empty() && !c.study.switch_branches)
+    throw CaseError(
+        o.common.case_path +
+        ": study.track: missing (the parameters to track, or a backbone or switch = true: nothing to study; see docs/study.md)");
   for (const std::string& name : o.only) {
     const bool known = std::any_of(c.study.track.begin(), c.study.track.end(), [&](const StudyTrack& t) { return t.parameter == name; });
     if (!known) throw CaseError("--only: '" + name + "' is not tracked in the case's [study] section");

@@ -15,7 +15,7 @@ there); plotting and reading result folders also work from python/ without a bui
 import importlib
 
 from ._core import core as _core
-from .analysis import backbone, continuation, frc, isolas, limit_point, track
+from .analysis import backbone, continuation, frc, isolas, limit_point, switch, track
 from .cases import case_from_arrays, load_case
 from .elements import add_python_element
 from .model import normal_modes, output_harmonics, reduce
@@ -26,8 +26,8 @@ if _core is not None:
     from ._hbtrack import (Case, ContinuationOptions, FoldTrackingOptions, HarmonicBalanceOptions, NfrcOptions,
                            StabilityOptions, SteadyStateOptions)
 
-__all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "track", "isolas", "limit_point", "simulate", "reduce",
-           "normal_modes", "output_harmonics", "add_python_element", "read_result", "plots", "Case", "ContinuationOptions",
+__all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "switch", "track", "isolas", "limit_point", "simulate",
+           "reduce", "normal_modes", "output_harmonics", "add_python_element", "read_result", "plots", "Case", "ContinuationOptions",
            "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
 
 

@@ -7,7 +7,8 @@ functions. Results are dicts holding what the CLI writes to a result folder:
     special_points  list of dicts, as summary.json's special_points
     special_states  2-D array, special_states.csv (frc only)
     summary         dict, as summary.json
-    kind            "frc", "continue", "track", "isolas" (as hbtrack.results.read_result names folders)
+    kind            "frc", "continue", "backbone", "switch", "track", "isolas" (as hbtrack.results.read_result
+                    names folders)
 
 A run that stops early (summary["stop_reason"]) still returns what it computed, as the CLI keeps
 its points; bad arguments raise ValueError naming the argument. The columns are described in
@@ -127,6 +128,61 @@ def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
         raise ValueError(f"range: must be (LO, HI) with 0 < LO < HI, got {range!r}")
     result = require_core().backbone(case, int(mode), start, end)
     result["kind"] = "backbone"
+    return result
+
+
+def switch(case, start, *, point):
+    """The branch born at a BP or PD of an frc result (``hbtrack switch``).
+
+    At a BP the other branch through the point (its tangent from the null space of the extended
+    Jacobian), continued both ways; at a PD the period-doubled branch (harmonic balance at
+    omega / 2 from the critical Floquet eigenvector), across the PD band (docs/analyses.md).
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case `start` was computed on (its parameters and harmonics).
+    start : dict
+        An frc result (:func:`frc` or :func:`hbtrack.read_result` of an frc folder).
+    point : int
+        Which special point, counted from 1 in the order of ``start["special_points"]``; a BP
+        or a PD.
+
+    Returns
+    -------
+    dict
+        As :func:`frc` returns (``branch`` with stability, ``states``, ``special_points``,
+        ``special_states``, ``summary`` with ``options.switch`` = {point, type, omega} and
+        ``legs``), ``kind`` = "switch". At a PD the harmonics are multiples of omega / 2:
+        ``branch`` has ``h0.5_NAME``, ``h1_NAME``, ``h1.5_NAME``, ...
+
+    Examples
+    --------
+    >>> case = hbtrack.load_case("examples/coupled_duffing.toml")
+    >>> nfrc = hbtrack.frc(case)
+    >>> bp = 1 + [p["type"] for p in nfrc["special_points"]].index("BP")
+    >>> branch = hbtrack.switch(case, nfrc, point=bp)
+    >>> abs(branch["branch"]["max_x1"] - branch["branch"]["max_x2"]).max()   # asymmetric
+    """
+    if not isinstance(start, dict) or "special_points" not in start or "special_states" not in start or "states" not in start:
+        raise ValueError("start: expected an frc result (from hbtrack.frc, or read_result of an frc folder)")
+    if isinstance(point, bool) or not isinstance(point, (int, np.integer)) or point < 1:
+        raise ValueError(f"point: must be an integer >= 1, got {point!r}")
+    special = start["special_points"]
+    if point > len(special):
+        raise ValueError(f"point: {point} is beyond the {len(special)} special points of the frc result")
+    sp = special[point - 1]
+    if sp["type"] not in ("BP", "PD"):
+        raise ValueError(f"point: special point {point} is a {sp['type']}; switch follows the new branch of a BP or the "
+                         "period-doubled branch of a PD")
+    states = np.asarray(start["states"])
+    row = int(sp.get("index", -1))
+    if not 0 <= row < len(states):
+        raise ValueError(f"point: special point {point}: index {row} is outside the frc result's states")
+    bp = np.asarray(start["special_states"])[point - 1]
+    before, after = states[max(row - 1, 0)], states[min(row + 1, len(states) - 1)]
+    result = require_core().switch(case, sp["type"], int(point), bp[0], bp[1:], before[0], before[1:], after[0], after[1:])
+    result["kind"] = "switch"
     return result
 
 

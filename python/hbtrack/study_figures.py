@@ -2,11 +2,13 @@
 
     /usr/bin/python3 python/plot_study.py STUDY_DIR [--units m]
 
-nfrc: the nominal NFRC; per tracked parameter P: tracking_P (the curves on (omega, P) with the
-limit points of the validation NFRCs, which they must pass through), tracking_3d_P (omega, P,
-max of the first output, validation NFRCs at their own value), validation_P (the curves and the
-validation NFRCs and isolas on (omega, max of the first output)); simulation: time signals and
-harmonic amplitudes, time integration against the HBM orbit it started from.
+nfrc: the nominal NFRC, with the backbones and switched branches the study computed drawn over
+it; period_doubled_K: each branch switched at a PD K, zoomed on its band; per tracked parameter
+P: tracking_P (the curves on (omega, P) with the limit points of the validation NFRCs, which
+they must pass through), tracking_3d_P (omega, P, max of the first output, validation NFRCs at
+their own value), validation_P (the curves and the validation NFRCs and isolas on (omega, max of
+the first output)); simulation: time signals and harmonic amplitudes, time integration against
+the HBM orbit it started from.
 """
 import argparse
 import json
@@ -14,8 +16,28 @@ import os
 import sys
 
 from . import plots
+from .analysis_figures import period_doubled_figure
+from .overlay_figures import overlay_figure
 from .plot import figures_for
 from .results import read_result
+
+
+def _nfrc_figures(study_dir, summary, length_unit):
+    """The nominal NFRC, alone or with the branches beside it (backbones, switched branches)."""
+    nfrc = read_result(os.path.join(study_dir, "nfrc"))
+    entries = summary.get("backbones", []) + [w for w in summary.get("switched", []) if "folder" in w]
+    beside = [read_result(os.path.join(study_dir, e["folder"])) for e in entries
+              if os.path.exists(os.path.join(study_dir, e["folder"], "branch.csv"))]
+    if not beside:
+        return {"nfrc": plots.nfrc_figure(nfrc, length_unit=length_unit, title="nominal NFRC (solid: stable, dashed: unstable)")}
+    nfrc["label"] = "nfrc: nominal NFRC"
+    figures = {"nfrc": overlay_figure([nfrc, *beside], length_unit=length_unit,
+                                      title="nominal NFRC and the branches beside it (solid: stable, dashed: unstable)")}
+    for result in beside:
+        options = result["summary"]["options"]
+        if result["kind"] == "switch" and options["switch"]["type"] == "PD" and len(result["branch"]["omega"]):
+            figures[f"period_doubled_{options['switch']['point']}"] = period_doubled_figure(result, nfrc, length_unit)
+    return figures
 
 
 def study_figures(study_dir, length_unit=None):
@@ -41,8 +63,7 @@ def study_figures(study_dir, length_unit=None):
         summary = json.load(f)
     figures = {}
     if os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
-        figures["nfrc"] = plots.nfrc_figure(read_result(os.path.join(study_dir, "nfrc")), length_unit=length_unit,
-                                            title="nominal NFRC (solid: stable, dashed: unstable)")
+        figures.update(_nfrc_figures(study_dir, summary, length_unit))
     for entry in summary.get("tracking", []):
         param = entry["parameter"]
         tracks = [read_result(os.path.join(study_dir, c["folder"])) for c in entry["curves"] if "folder" in c]

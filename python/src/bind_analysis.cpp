@@ -88,7 +88,7 @@ py::dict frc(const CaseDefinition& c, const py::object& progress) {
   if (interrupted) throw py::error_already_set();
   if (callback_error) throw *callback_error;
   if (bad_answer) throw py::value_error("progress: must return None, True or False");
-  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", r.continuation.summary.wall_s}};
+  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", r.continuation.summary.wall_s}, {"stability_s", r.stability_s}};
   py::dict out = branch_result(c, hbm, r, summary);
   if (stopped_by_callback) out["summary"]["stop_reason"] = "stopped_by_callback";
   return out;

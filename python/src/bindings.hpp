@@ -19,6 +19,7 @@ void bind_hbm(py::module_& m);
 void bind_timeint(py::module_& m);
 void bind_model(py::module_& m);
 void bind_continuation(py::module_& m);
+void bind_switch(py::module_& m);
 void bind_elements(py::module_& m);
 
 // summary.json as the Python json module would read it (same keys, same numbers).

@@ -26,5 +26,6 @@ PYBIND11_MODULE(_hbtrack, m) {
   hbtrack::python::bind_timeint(m);
   hbtrack::python::bind_model(m);
   hbtrack::python::bind_continuation(m);
+  hbtrack::python::bind_switch(m);
   hbtrack::python::bind_elements(m);
 }

@@ -101,3 +101,25 @@ def test_api_starts_from_a_cli_result_folder(duffing_case, duffing_frc_cli, duff
     # read_result gives the API's dict: tracking from the CLI's frc folder is the CLI's tracking.
     api = hbtrack.track(duffing_case, duffing_frc_cli, lp=1, param="amplitude", range=(0.1, 2.0))
     assert_same_columns(api["branch"], duffing_track_cli["branch"])
+
+
+def test_duffing_continuation_matches_cli(results_dir):
+    api = hbtrack.continuation(hbtrack.load_case(DUFFING), param="amplitude", omega=1.2, range=(0.05, 3.0))
+    folder = str(results_dir / "duffing_continue")
+    run_cli("continue", DUFFING, "--param", "amplitude", "--omega", "1.2", "--range", "0.05:3", "-o", folder)
+    cli = read_result(folder)
+    assert api["kind"] == cli["kind"] == "continue"
+    assert_same_columns(api["branch"], cli["branch"])
+    np.testing.assert_allclose(api["special_states"], cli["special_states"], rtol=RELATIVE, atol=1e-300)
+    assert [sp["type"] for sp in api["special_points"]] == [sp["type"] for sp in cli["special_points"]] == ["LP", "LP"]
+
+
+def test_duffing_backbone_matches_cli(results_dir):
+    api = hbtrack.backbone(hbtrack.load_case(DUFFING), mode=1, range=(0.01, 5.0))
+    folder = str(results_dir / "duffing_backbone")
+    run_cli("backbone", DUFFING, "--mode", "1", "--range", "0.01:5", "-o", folder)
+    cli = read_result(folder)
+    assert api["kind"] == cli["kind"] == "backbone"
+    assert_same_columns(api["branch"], cli["branch"])
+    np.testing.assert_allclose(api["states"], cli["states"], rtol=RELATIVE, atol=1e-300)
+    assert api["summary"]["linear_mode"] == pytest.approx(cli["summary"]["linear_mode"], rel=RELATIVE)

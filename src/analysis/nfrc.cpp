@@ -105,6 +105,7 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
         return !observer || observer(p, result.recorded.back(), index);
       },
       options.stability.enabled() ? &monitor : nullptr, restart);
+  result.stability_s = monitor.seconds();
   return result;
 }
 

@@ -1,5 +1,6 @@
 #include "hbtrack/analysis/stability_monitor.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 #include "hbtrack/stability/hill.hpp"
@@ -77,7 +78,9 @@ const FloquetResult& FloquetMonitor::result_for(const BranchPoint& p) {
   for (auto it = recent_.rbegin(); it != recent_.rend(); ++it)
     if (it->lambda == p.lambda && it->u.size() == p.u.size() && it->u == p.u) return it->result;
   if (recent_.size() >= 8) recent_.erase(recent_.begin());
+  const auto start = std::chrono::steady_clock::now();
   recent_.push_back({p.lambda, p.u, floquet(hbm_, p.u, p.lambda, options_)});
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return recent_.back().result;
 }
 

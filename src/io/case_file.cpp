@@ -291,11 +291,44 @@ void read_outputs(const CaseReader& in, const toml::value& root, CaseDefinition&
   }
 }
 
+// study.backbone (a table {mode, range} or an array of them) and study.switch (a boolean).
+void read_study_branches(const CaseReader& in, const toml::value& st, CaseDefinition& c) {
+  if (const toml::value* sw = in.find(st, "switch")) {
+    if (!sw->is_boolean()) in.fail(sw, "study.switch", "expected true or false (switch at every BP and PD of the nominal NFRC)");
+    c.study.switch_branches = sw->as_boolean();
+  }
+  const toml::value* bb = in.find(st, "backbone");
+  if (!bb) return;
+  const bool several = bb->is_array();
+  const size_t count = several ? bb->as_array().size() : 1;
+  for (size_t i = 0; i < count; ++i) {
+    const toml::value& b = several ? bb->as_array()[i] : *bb;
+    const std::string field = several ? "study.backbone[" + std::to_string(i) + "]" : "study.backbone";
+    if (!b.is_table()) in.fail(&b, field, "expected a table {mode = K, range = [lo, hi]} (or an array of them)");
+    in.check_keys(b, field, {"mode", "range"});
+    StudyBackbone s;
+    const toml::value& mode = in.require(b, "mode", field + ".mode");
+    s.mode = in.integer(mode, field + ".mode");
+    if (s.mode < 1 || s.mode > c.model.dofs())
+      in.fail(&mode, field + ".mode",
+              "must be a linear mode of the model, from 1 to " + std::to_string(c.model.dofs()) + ", got " + std::to_string(s.mode));
+    const toml::value& range = in.require(b, "range", field + ".range");
+    const VectorXd r = in.vector(range, field + ".range");
+    if (r.size() != 2 || !(0 < r(0) && r(0) < r(1)))
+      in.fail(&range, field + ".range", "expected [lo, hi] modal amplitudes with 0 < lo < hi");
+    s.min = r(0);
+    s.max = r(1);
+    for (const StudyBackbone& other : c.study.backbones)
+      if (other.mode == s.mode) in.fail(&mode, field + ".mode", "mode " + std::to_string(s.mode) + " appears twice");
+    c.study.backbones.push_back(s);
+  }
+}
+
 void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value* st = in.find(root, "study");
   if (!st) return;
   in.table(*st, "study");
-  in.check_keys(*st, "study", {"track", "max_points", "simulate_periods", "convergence"});
+  in.check_keys(*st, "study", {"track", "backbone", "switch", "max_points", "simulate_periods", "convergence"});
   StudySettings& study = c.study;
   study.max_points = in.integer_or(*st, "max_points", "study.max_points", study.max_points);
   if (study.max_points < 2) in.fail(&st->at("max_points"), "study.max_points", "must be >= 2");
@@ -310,6 +343,7 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
     if (study.convergence_harmonics < 0 || (study.convergence_harmonics > 0 && study.convergence_samples < 2 * study.convergence_harmonics + 1))
       in.fail(conv, "study.convergence", "expected {harmonics = H >= 1, samples = N >= 2 H + 1} (H = 0: no check)");
   }
+  read_study_branches(in, *st, c);
   const toml::value* track = in.find(*st, "track");
   if (!track) return;
   if (!track->is_array()) in.fail(track, "study.track", "expected an array of tables {parameter = ..., range = [lo, hi]}");

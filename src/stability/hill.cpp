@@ -1,9 +1,7 @@
 #include "hbtrack/stability/hill.hpp"
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
-#include <Eigen/SparseCore>
 #include <Spectra/GenEigsRealShiftSolver.h>
 #include <algorithm>
 #include <cmath>
@@ -12,7 +10,9 @@
 #include <memory>
 #include <set>
 
+#include "hbtrack/util/dense_eigen.hpp"
 #include "hill_pencil.hpp"
+#include "hill_system.hpp"
 
 namespace hbtrack {
 
@@ -21,42 +21,28 @@ namespace {
 // y = (A - sigma I)^-1 x for the first-order Hill matrix A = [[0, I], [-D2^-1 J, -D2^-1 D1]]
 // without forming A: y1 = -L(sigma)^-1 (D2 x2 + (D1 + sigma D2) x1), y2 = x1 + sigma y1, with
 // the quadratic pencil L(sigma) = J + sigma D1 + sigma^2 D2 factorised once (HillPencil: block
-// elimination of the linear dofs) and D1, mostly zero, applied as a sparse matrix.
+// elimination of the linear dofs) and D1, D2 applied from the structured system.
 class HillShiftInvert {
  public:
   using Scalar = double;
-  HillShiftInvert(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping, const Eigen::MatrixXd& mass, int blocks,
-                  std::vector<int> coupled)
-      : j_(jacobian), d1_(damping), d1_sparse_(damping.sparseView()), m_(mass), blocks_(blocks), size_(jacobian.rows()),
-        coupled_(std::move(coupled)) {}
+  explicit HillShiftInvert(const HillSystem& system) : system_(system), size_(system.size()) {}
   Eigen::Index rows() const { return 2 * size_; }
   Eigen::Index cols() const { return 2 * size_; }
   void set_shift(double sigma) {
     sigma_ = sigma;
-    pencil_ = std::make_unique<HillPencil>(j_, d1_, m_, sigma, coupled_);
+    pencil_ = std::make_unique<HillPencil>(system_, sigma);
   }
   void perform_op(const double* x_in, double* y_out) const {
     const Eigen::Map<const Eigen::VectorXd> x1(x_in, size_), x2(x_in + size_, size_);
     Eigen::Map<Eigen::VectorXd> y1(y_out, size_), y2(y_out + size_, size_);
-    const Eigen::VectorXd rhs = d1_sparse_ * x1 + mass_times(x2 + sigma_ * x1);
+    const Eigen::VectorXd rhs = system_.damping_times(x1) + system_.mass_times(x2 + sigma_ * x1);
     y1 = -pencil_->solve(rhs);
     y2 = x1 + sigma_ * y1;
   }
 
  private:
-  Eigen::VectorXd mass_times(const Eigen::VectorXd& v) const {  // (I x M) v
-    const Eigen::Index n = m_.rows();
-    Eigen::VectorXd out(v.size());
-    for (int b = 0; b < blocks_; ++b) out.segment(b * n, n).noalias() = m_ * v.segment(b * n, n);
-    return out;
-  }
-  const Eigen::MatrixXd& j_;
-  const Eigen::MatrixXd& d1_;
-  Eigen::SparseMatrix<double> d1_sparse_;
-  const Eigen::MatrixXd& m_;
-  int blocks_;
+  const HillSystem& system_;
   Eigen::Index size_;
-  std::vector<int> coupled_;
   double sigma_ = 0;
   std::unique_ptr<HillPencil> pencil_;  // (std::optional here trips GCC 12's -Wmaybe-uninitialized at -O1)
 };
@@ -64,18 +50,16 @@ class HillShiftInvert {
 // Hill's eigenvalues nearest a small real shift (eigenvalue families l + i k w share their real
 // part, so the ones near the imaginary axis with small |Im l| decide stability). Empty when
 // the Arnoldi iteration did not converge.
-Eigen::VectorXcd eigenvalues_near_axis(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping,
-                                       const Eigen::MatrixXd& mass, int blocks, int count, double omega,
-                                       std::vector<int> coupled, Eigen::MatrixXcd& vectors) {
-  HillShiftInvert op(jacobian, damping, mass, blocks, std::move(coupled));
-  const Eigen::Index dimension = 2 * jacobian.rows();
+Eigen::VectorXcd eigenvalues_near_axis(const HillSystem& system, int count, double omega, Eigen::MatrixXcd& vectors) {
+  HillShiftInvert op(system);
+  const Eigen::Index dimension = 2 * system.size();
   const Eigen::Index ncv = std::min<Eigen::Index>(dimension, std::max<Eigen::Index>(2 * count + 1, 20));
   // A shift a little off zero keeps the pencil regular at a limit point, where J is singular.
   Spectra::GenEigsRealShiftSolver<HillShiftInvert> solver(op, count, ncv, 1e-3 * omega);
   solver.init();
   solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10);
   if (solver.info() != Spectra::CompInfo::Successful) return {};
-  vectors = solver.eigenvectors().topRows(jacobian.rows());
+  vectors = solver.eigenvectors().topRows(system.size());
   return solver.eigenvalues();
 }
 
@@ -91,9 +75,10 @@ Eigen::VectorXcd all_eigenvalues(const Eigen::MatrixXd& jacobian, const Eigen::M
     a.block(size + b * n, 0, n, size) = -mass.solve(jacobian.middleRows(b * n, n));
     a.block(size + b * n, size, n, size) = -mass.solve(damping.middleRows(b * n, n));
   }
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, true);
-  vectors = solver.eigenvectors().topRows(size);
-  return solver.eigenvalues();
+  Eigen::MatrixXcd all_vectors;
+  const Eigen::VectorXcd values = dense_eigenvalues(a, &all_vectors);
+  vectors = all_vectors.topRows(size);
+  return values;
 }
 
 // Where the energy of a Hill eigenvector p sits among the harmonics: sum k E_k / sum E_k over
@@ -120,25 +105,36 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   // The exponent families are l + i k w with w the basis' fundamental (omega / nu), and the
   // multipliers are over its period.
   const double omega = hbm.fundamental(forcing_omega);
-  // Reused from call to call: two dense n(2H+1) squares (11 MB on the blade) would otherwise be
-  // mapped and faulted in afresh at every point.
-  thread_local Eigen::MatrixXd jacobian, damping;
-  hbm.hill_matrices(x, forcing_omega, jacobian, damping);
-  const Eigen::Index size = jacobian.rows();
   const int blocks = hbm.basis().coefficients();
+  const Eigen::Index size = static_cast<Eigen::Index>(n) * blocks;
   // Dense QR on the whole spectrum while it is cheap; beyond, the 2n eigenvalues nearest the
-  // axis by shift-invert Arnoldi (one LU of the n(2H+1) pencil instead of a 2n(2H+1) QR).
+  // axis by shift-invert Arnoldi (one LU of the pencil's Schur complement on the element dofs
+  // instead of a 2n(2H+1) QR). Stability and the PD/NS/LP test functions need only the
+  // exponents near the axis: at most 24 of them, whatever the size (Arnoldi's cost grows with
+  // the square of that count).
   constexpr Eigen::Index kDenseLimit = 300;
   Eigen::VectorXcd all;
   Eigen::MatrixXcd vectors;
   const bool arnoldi = solver == "arnoldi" || (solver == "auto" && 2 * size > kDenseLimit);
-  // Stability and the PD/NS/LP test functions need only the exponents near the axis: at most
-  // 24 of them, whatever the size (Arnoldi's cost grows with the square of that count).
+  // Reused from call to call: the dense matrices (11 MB on the blade) and the element blocks
+  // would otherwise be mapped and faulted in afresh at every point.
+  thread_local Eigen::MatrixXd jacobian, damping;
   if (arnoldi) {
     std::set<int> coupled;  // the dofs the elements touch: the only ones coupling harmonics
     for (const auto& e : hbm.elements()) coupled.insert(e->dofs.begin(), e->dofs.end());
-    all = eigenvalues_near_axis(jacobian, damping, hbm.model().mass, blocks, std::min<int>({2 * n, 24, static_cast<int>(size) - 2}), omega,
-                                {coupled.begin(), coupled.end()}, vectors);
+    thread_local HillSystem system;
+    system.stiffness = &hbm.model().stiffness;
+    system.mass = &hbm.model().mass;
+    system.damping = &hbm.model().damping;
+    system.basis = &hbm.basis();
+    system.fundamental = omega;
+    system.coupled.assign(coupled.begin(), coupled.end());
+    hbm.hill_element_blocks(x, forcing_omega, system.coupled, system.element_jacobian, system.element_damping);
+    system.prepare_products();
+    all = eigenvalues_near_axis(system, std::min<int>({2 * n, 24, static_cast<int>(size) - 2}), omega, vectors);
+    if (all.size() == 0) system.dense(jacobian, damping);  // the dense solver below, on the same matrices
+  } else {
+    hbm.hill_matrices(x, forcing_omega, jacobian, damping);
   }
   if (all.size() == 0) all = all_eigenvalues(jacobian, damping, hbm.model().mass, blocks, vectors);
   std::vector<double> centroid(static_cast<size_t>(all.size()));  // signed, in harmonics

@@ -1,12 +1,13 @@
 #include "hbtrack/stability/monodromy.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
+
+#include "hbtrack/util/dense_eigen.hpp"
 
 namespace hbtrack {
 
@@ -211,7 +212,7 @@ FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, 
   MatrixXd reduced(kept.size(), kept.size());
   for (size_t r = 0; r < kept.size(); ++r)
     for (size_t c = 0; c < kept.size(); ++c) reduced(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = full_map(kept[r], kept[c]);
-  Eigen::VectorXcd mu = Eigen::EigenSolver<MatrixXd>(reduced, false).eigenvalues();
+  Eigen::VectorXcd mu = dense_eigenvalues(reduced);
   if (mu.size() > 2 * n) {
     // A slider that slips forgets its position: its multiplier is 0 (round-off). The 2n of
     // largest modulus are the dynamic ones.

@@ -1,6 +1,5 @@
 #include "hbtrack/stability/shooting.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <unsupported/Eigen/MatrixFunctions>
 #include <cmath>
@@ -8,6 +7,7 @@
 #include <stdexcept>
 
 #include "hbtrack/timeint/equation_of_motion.hpp"
+#include "hbtrack/util/dense_eigen.hpp"
 #include "hbtrack/timeint/initial_state.hpp"
 
 namespace hbtrack {
@@ -185,7 +185,7 @@ FloquetResult shooting_floquet(HarmonicBalance& hbm, const VectorXd& x, double o
   FloquetResult r;
   r.method = "shooting";
   const double period = hbm.subharmonic() * equation.period();
-  const Eigen::VectorXcd mu = phi.allFinite() ? Eigen::VectorXcd(Eigen::EigenSolver<MatrixXd>(phi, false).eigenvalues())
+  const Eigen::VectorXcd mu = phi.allFinite() ? dense_eigenvalues(phi)
                                               : Eigen::VectorXcd::Constant(2 * n, std::complex<double>(INFINITY, 0));
   r.exponents = mu.array().log() / period;
   finish_floquet(r, hbm.fundamental(omega), 1e-9 * omega);

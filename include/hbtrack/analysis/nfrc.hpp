@@ -74,6 +74,7 @@ struct NfrcResult {
   ContinuationResult continuation;
   std::vector<RecordedPoint> recorded;
   double length_scale = 0;
+  double stability_s = 0;  // of continuation.summary.wall_s, the time spent on stability
 };
 
 // Called for each accepted point with its recorded outputs; return false to stop.

@@ -43,6 +43,8 @@ class FloquetMonitor final : public BranchMonitor {
   // Floquet result at p: reused when p is one of the last points evaluated (the engine
   // evaluates each accepted point before the observer sees it), computed otherwise.
   const FloquetResult& result_for(const BranchPoint& p);
+  // Wall time spent computing Floquet results so far (the run's `timings.stability_s`).
+  double seconds() const { return seconds_; }
 
  private:
   struct Entry {
@@ -53,6 +55,7 @@ class FloquetMonitor final : public BranchMonitor {
   HarmonicBalance& hbm_;
   StabilityOptions options_;
   std::vector<Entry> recent_;  // a few, newest last
+  double seconds_ = 0;
 };
 
 }  // namespace hbtrack

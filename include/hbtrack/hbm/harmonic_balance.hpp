@@ -7,6 +7,7 @@
 // The model, elements and options are constant; evaluation buffers are reused (not thread-safe:
 // one instance per thread).
 #include <Eigen/Dense>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -108,6 +109,11 @@ class HarmonicBalance {
   //   jacobian = dR_full/dx_full,  damping = D1 = 2 w (nabla x M) + I x C + Gamma^-1 (df/dv) Gamma.
   // D2 = I x M is not formed.
   void hill_matrices(const Eigen::VectorXd& x, double omega, Eigen::MatrixXd& jacobian, Eigen::MatrixXd& damping);
+  // The elements' parts of those two matrices alone, on the model dofs `coupled` (ascending, every
+  // dof an element touches): (c nc) square, harmonic-major over `coupled`. The model's linear
+  // part, which couples dofs only within a harmonic, is left to the caller (stability/hill_system.hpp).
+  void hill_element_blocks(const Eigen::VectorXd& x, double omega, const std::vector<int>& coupled, Eigen::MatrixXd& jacobian,
+                           Eigen::MatrixXd& damping);
 
  private:
   struct ElementSlot {
@@ -118,6 +124,10 @@ class HarmonicBalance {
     ElementResponse response;
   };
   void sample(const Eigen::VectorXd& x, double omega);
+  // Samples at x and adds every element's Hill blocks, its dofs placed by `position` within
+  // harmonic blocks of `stride` rows.
+  void add_hill_element_blocks(const Eigen::VectorXd& x, double omega, int stride, const std::function<int(int)>& position,
+                               Eigen::MatrixXd& jacobian, Eigen::MatrixXd& damping);
   // Adds an element's Jacobian blocks; `positions` place its dofs within a harmonic block of
   // `stride` rows (retained-dof columns for the condensed system, model dofs for the full one).
   void add_element_blocks(ElementSlot& slot, double omega, int stride, const std::vector<int>& positions,

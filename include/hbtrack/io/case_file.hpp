@@ -28,8 +28,15 @@ struct StudyTrack {
   double min = 0, max = 0;
   std::vector<double> validate;  // extra validation NFRCs at these values (e.g. a paper's)
 };
+// A nonlinear mode the study computes beside the NFRC (`hbtrack backbone --mode K --range LO:HI`).
+struct StudyBackbone {
+  int mode = 1;
+  double min = 0, max = 0;  // the modal amplitude's range
+};
 struct StudySettings {
   std::vector<StudyTrack> track;
+  std::vector<StudyBackbone> backbones;
+  bool switch_branches = false;  // follow the branches born at the nominal NFRC's BP and PD points
   int max_points = 400;       // per leg of a tracking curve
   int simulate_periods = 60;  // periods of the time-integration check, 0 for none
   // The convergence check: the nominal NFRC and the tracking curves recomputed with these
