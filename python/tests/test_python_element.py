@@ -56,3 +56,20 @@ def test_bad_shapes_and_dofs_are_value_errors():
     case = hbtrack.add_python_element(duffing(), ["x"], lambda x, v: np.zeros((3, 3)))
     with pytest.raises(Exception, match="shape"):
         hbtrack.frc(case)
+
+
+def test_the_documented_example_script_gives_the_builtin_branch():
+    """examples/python/python_element.py as a user runs it: the Duffing case's cubic spring as a
+    Python callable reaches the end of the range on the built-in element's branch (the same
+    Newton iterates, so to round-off: 1e-10 of the largest state)."""
+    import os
+    import re
+    import subprocess
+    import sys
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+    done = subprocess.run([sys.executable, os.path.join(root, "examples", "python", "python_element.py")],
+                          capture_output=True, text=True, check=True)
+    match = re.search(r"(\d+) points, (\w+); largest difference from the built-in cubic_spring's branch (\S+)", done.stdout)
+    assert match, done.stdout
+    assert match.group(2) == "reached_end"
+    assert float(match.group(3)) <= 1e-10

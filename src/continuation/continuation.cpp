@@ -6,8 +6,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "hbtrack/util/dense_lu.hpp"
-#include "hbtrack/util/phase_timer.hpp"
+#include "corner_step.hpp"
+#include "fixed_parameter_newton.hpp"
+#include "scaled_problem.hpp"
 
 namespace hbtrack {
 
@@ -42,209 +43,9 @@ bool ContinuationResult::success() const {
 
 namespace {
 
-double inf_norm(const VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
-
-// Tangent of the branch and the determinant of the bordered Jacobian used to compute it.
-struct Tangent {
-  VectorXd t;
-  double log_det = 0;  // log |det [J R_lambda; b^T]| (scaled coordinates)
-  int det_sign = 1;
-};
-
-// Scaled-coordinate view of the problem: X = [u ./ su; lambda / sl].
-struct Scaled {
-  ContinuationProblem& problem;
-  VectorXd su;
-  double sl;
-  double rtol;
-  int m;
-  VectorXd r, r_lambda;
-  MatrixXd jac;
-  int jacobian_evaluations = 0;
-  int newton_iterations = 0;
-  int factorizations = 0;
-  // Workspaces kept across iterations and points: a Newton iteration allocates no m x m matrix.
-  MatrixXd newton_matrix{};   // the bordered matrix last factored by the corrector
-  MatrixXd tangent_matrix{};  // the bordered matrix at the converged point
-  DenseLU lu{};               // factors of newton_matrix, or of tangent_matrix after a fresh tangent
-  VectorXd solution{}, refinement_residual{}, product{};
-  VectorXd y_before{};  // where the corrector's last step started
-  int residual_evaluations = 0;
-  int chord_iterations = 0;  // all chord steps so far
-  // lu holds the factors of the last Newton iteration of the corrector that just converged:
-  // the tangent may start from them. Only within one corrector, so that a run resumed from a
-  // saved state (which carries no factors) repeats the original exactly.
-  bool newton_factors_current = false;
-
-  // Re-scales scaled vectors after the unknown scale changed to that of the point u.
-  void rescale(const VectorXd& u, std::initializer_list<VectorXd*> points, VectorXd& tangent_vec) {
-    const VectorXd new_su = problem.unknown_scale(u);
-    if (new_su == su) return;
-    for (VectorXd* p : points)
-      if (p->size() == m + 1) p->head(m) = p->head(m).cwiseProduct(su).cwiseQuotient(new_su);
-    tangent_vec.head(m) = tangent_vec.head(m).cwiseProduct(su).cwiseQuotient(new_su);
-    tangent_vec.normalize();
-    su = new_su;
-  }
-  VectorXd pack(const VectorXd& u, double lambda) const {
-    VectorXd x(m + 1);
-    x.head(m) = u.cwiseQuotient(su);
-    x(m) = lambda / sl;
-    return x;
-  }
-  VectorXd unknowns(const VectorXd& x) const { return x.head(m).cwiseProduct(su); }
-  double parameter(const VectorXd& x) const { return x(m) * sl; }
-  // Evaluates R, dR/dX (scaled) at x; returns the relative residual.
-  double evaluate(const VectorXd& x) {
-    problem.evaluate(unknowns(x), parameter(x), r, &jac, &r_lambda);
-    ++jacobian_evaluations;
-    return inf_norm(r) / rtol;
-  }
-  // The bordered matrix a = [J diag(su), r_lambda sl; row], written into a kept workspace.
-  void bordered(const VectorXd& row, MatrixXd& a) const {
-    a.resize(m + 1, m + 1);
-    a.topLeftCorner(m, m) = jac * su.asDiagonal();
-    a.topRightCorner(m, 1) = r_lambda * sl;
-    a.row(m) = row.transpose();
-  }
-  // Unit tangent at the last evaluated point, oriented along `reference` (also the border).
-  // After a converged corrector whose Newton matrix had the same border, it is refined from
-  // that matrix's factors instead of factoring anew (tangent_from_newton_factors).
-  Tangent tangent(const VectorXd& reference) {
-    bordered(reference, tangent_matrix);
-    Tangent out;
-    const bool same_border = newton_factors_current && newton_matrix.row(m).transpose() == reference;
-    newton_factors_current = false;
-    if (!(same_border && tangent_from_newton_factors(out))) {
-      const ScopedPhase timing(Phase::factorization);
-      lu.compute(tangent_matrix);
-      ++factorizations;
-      solution.setZero(m + 1);
-      solution(m) = 1.0;
-      lu.solve_in_place(solution);
-      out.t = solution;
-    }
-    out.log_det = lu.log_abs_determinant();
-    out.det_sign = lu.determinant_sign();
-    out.t.normalize();
-    if (out.t.dot(reference) < 0) out.t = -out.t;
-    return out;
-  }
-  // The Newton matrix A of the corrector's last iteration differs from the tangent's matrix B
-  // (same border) by the last step dy: iterative refinement of B t = e with A's factors gives
-  // B's solution to working accuracy in a few O(m^2) steps, against an O(m^3) factorization.
-  // A's determinant stands for B's (the BP test function): det B = det A det(I + A^-1 (B - A)),
-  // and the second factor is positive when ||A^-1 (B - A)|| < 1, which also makes the
-  // refinement converge; the bound 0.1 leaves room for the estimate of that norm, a lower
-  // bound. False (the caller factors B) when the bound or the refinement fails, e.g. after a
-  // long last Newton step or near a singular Jacobian.
-  bool tangent_from_newton_factors(Tangent& out) {
-    const ScopedPhase timing(Phase::factorization);
-    newton_matrix = tangent_matrix - newton_matrix;  // B - A: A itself lives on in its factors
-    const MatrixXd& change = newton_matrix;
-    const double relative_change = estimate_norm1(
-        m + 1,
-        [&](VectorXd& v) {
-          product.noalias() = change * v;
-          v = product;
-          lu.solve_in_place(v);
-        },
-        [&](VectorXd& v) {
-          lu.solve_transposed_in_place(v);
-          product.noalias() = change.transpose() * v;
-          v = product;
-        });
-    if (!(relative_change <= 0.1)) return false;
-    if (!refine_last_unit_solution(lu, tangent_matrix, solution, refinement_residual)) return false;
-    out.t = solution;
-    return true;
-  }
-
-  // Evaluates R alone at x (a chord iteration); returns the relative residual.
-  double evaluate_residual(const VectorXd& x) {
-    problem.evaluate(unknowns(x), parameter(x), r, nullptr, nullptr);
-    ++residual_evaluations;
-    return inf_norm(r) / rtol;
-  }
-  // Factors the Newton matrix [J; row] at the last evaluated point.
-  void factor_newton_matrix(const VectorXd& row) {
-    bordered(row, newton_matrix);
-    const ScopedPhase timing(Phase::factorization);
-    lu.compute(newton_matrix);
-    ++factorizations;
-  }
-
-  // Newton on [R(y); P(y)] = 0 from y, with P the pseudo-arclength plane direction.(y - x) = ds
-  // or the hypersphere |y - x|^2 = ds^2. On success the Jacobian at y is the last evaluated.
-  // With options.reuse_factorization, an iteration after the first keeps the factors of the
-  // last Newton matrix (a chord step: one residual and an O(m^2) solve instead of a Jacobian
-  // and an O(m^3) factorization) as long as each step shrinks the error by options.contraction;
-  // after a step that does not, the corrector goes on as Newton, from where that step started
-  // when it made the error worse.
-  bool correct(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere,
-               const ContinuationOptions& options, int& iterations) {
-    newton_factors_current = false;
-    const double plane_tolerance = 1e-8 * ds * std::max(1.0, ds);
-    double last_error = std::numeric_limits<double>::infinity();
-    for (int it = 0; it <= options.max_iterations; ++it) {
-      const bool chord = options.reuse_factorization && newton_factors_current;
-      const double residual = chord ? evaluate_residual(y) : evaluate(y);
-      const VectorXd d = y - x;
-      double p;
-      VectorXd p_row;
-      if (hypersphere) {
-        p = d.squaredNorm() - ds * ds;
-        p_row = 2.0 * d;
-        if (p_row.norm() == 0.0) p_row = direction;
-      } else {
-        p = direction.dot(d) - ds;
-        p_row = direction;
-      }
-      // The error in units of the tolerances: converged at <= 1.
-      const double error = std::max(residual / options.tolerance, std::abs(p) / plane_tolerance);
-      if (std::isfinite(residual) && error <= 1.0) {
-        if (chord) evaluate(y);  // the tangent needs the Jacobian at y
-        iterations = it;
-        return true;
-      }
-      if (chord && !(error <= options.contraction * last_error)) {
-        // The kept factors no longer contract: Newton from here, or from where the step
-        // started when it made things worse.
-        if (!(error < last_error)) y = y_before;
-        return finish_with_newton(y, x, direction, ds, hypersphere, options, iterations, it);
-      }
-      if (!std::isfinite(residual)) return false;
-      if (it == options.max_iterations) return false;
-      if (!chord) factor_newton_matrix(p_row);
-      solution.resize(m + 1);
-      solution.head(m) = -r;
-      solution(m) = -p;
-      {
-        const ScopedPhase timing(Phase::factorization);
-        lu.solve_in_place(solution);
-      }
-      newton_factors_current = true;
-      if (!solution.allFinite()) return false;
-      if (chord) ++chord_iterations;
-      y_before = y;
-      last_error = error;
-      y += solution;
-      ++newton_iterations;
-    }
-    return false;
-  }
-  // The rest of a corrector as plain Newton from y, after `done` iterations.
-  bool finish_with_newton(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere,
-                          const ContinuationOptions& options, int& iterations, int done) {
-    ContinuationOptions newton = options;
-    newton.reuse_factorization = false;
-    newton.max_iterations = options.max_iterations - done;
-    int more = 0;
-    const bool converged = correct(y, x, direction, ds, hypersphere, newton, more);
-    iterations = done + more;
-    return converged;
-  }
-};
+using continuation_detail::inf_norm;
+using continuation_detail::Scaled;
+using continuation_detail::Tangent;
 
 // Test-function values at a point: engine's LP and BP first, then the monitor's.
 struct TestValues {
@@ -309,37 +110,6 @@ struct Locator {
 };
 
 }  // namespace
-
-namespace {
-// Newton at fixed lambda; `used` counts the iterations spent, also when it fails.
-int newton_counting(ContinuationProblem& problem, VectorXd& u, double lambda, double tolerance, int max_iterations, int& used) {
-  VectorXd r, r_lambda;
-  MatrixXd jac;
-  DenseLU lu;
-  const double scale = problem.residual_scale();
-  used = 0;
-  for (int it = 0; it <= max_iterations; ++it) {
-    problem.evaluate(u, lambda, r, &jac, &r_lambda);
-    if (!r.allFinite()) return -1;
-    if (inf_norm(r) <= tolerance * scale) return it;
-    if (it == max_iterations) break;
-    const ScopedPhase timing(Phase::factorization);
-    lu.compute(jac);
-    r = -r;
-    lu.solve_in_place(r);
-    ++used;
-    if (!r.allFinite()) return -1;
-    u += r;
-  }
-  return -1;
-}
-}  // namespace
-
-int newton_at_fixed_parameter(ContinuationProblem& problem, VectorXd& u, double lambda, double tolerance,
-                              int max_iterations) {
-  int used = 0;
-  return newton_counting(problem, u, lambda, tolerance, max_iterations, used);
-}
 
 ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
                                    double lambda_end, const ContinuationOptions& options, const PointObserver& observer,
@@ -439,7 +209,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     // First point: Newton at fixed lambda_start.
     VectorXd u = u0;
     int used = 0;
-    const int first_iterations = newton_counting(problem, u, lambda_start, options.tolerance, 3 * options.max_iterations, used);
+    const int first_iterations = continuation_detail::fixed_parameter_newton(problem, u, lambda_start, options.tolerance, 3 * options.max_iterations, used);
     if (first_iterations < 0) {
       summary.newton_iterations += used;  // what was tried, for the failure message
       ++summary.failed_steps;
@@ -487,15 +257,19 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     int iterations = 0;
     const int chords_before = s.chord_iterations;
     const bool converged = s.correct(y, x, direction_vec, ds, hypersphere, options, iterations);
+    const int det_sign = static_cast<int>(previous.values[1]);
+    Tangent tan_new;
+    // On a piecewise smooth branch a corrector fails where the branch turns by more than 90
+    // degrees at a corner: step onto the corner and leave it along the next piece instead.
+    const bool onto_corner = !converged && corners && step_to_corner(s, x, direction_vec, det_sign, ds, options, y, tan_new, iterations);
 
     // Reject a corrector that did not converge, went back along the branch, jumped away from
     // the prediction or turned too sharply; at the smallest step a corner is real (a
     // nonsmooth law kinks the branch): go through it.
     const bool smallest_step = ds <= 2 * options.step_min;
-    bool accepted = converged && (y - x).dot(t) > 0 && (smallest_step || (y - prediction).norm() <= ds);
-    Tangent tan_new;
+    bool accepted = onto_corner || (converged && (y - x).dot(t) > 0 && (smallest_step || (y - prediction).norm() <= ds));
     bool through_corner = false;
-    if (accepted) {
+    if (accepted && !onto_corner) {
       // Through a corner (smallest step) the branch goes on the way the step went: oriented by
       // the old tangent, a turn sharper than 90 degrees would send it back along itself.
       tan_new = s.tangent(smallest_step ? VectorXd((y - x).normalized()) : t);
@@ -508,11 +282,16 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
         if (corner.turn > 0 && ds <= 0.5 * corner.step && turn >= 0.75 * corner.turn) {
           tan_new = s.tangent(VectorXd((y - x).normalized()));
           accepted = through_corner = true;
-          ++summary.corners_stepped_over;
         } else {
           corner = {ds, turn, 0};
         }
       }
+      // Along a branch the sign of det [R_u R_lambda; t^T] changes only at a branch point. Where
+      // a piecewise smooth branch folds back close to itself, a long step can land on the part
+      // coming back, the turn looking small: that point's tangent, oriented along the old one,
+      // then has the other sign. Shorter steps follow the branch round; at the smallest step a
+      // change of sign is a branch point.
+      if (accepted && corners && !smallest_step && tan_new.det_sign != det_sign) accepted = through_corner = false;
     }
     if (!accepted) {
       if (!converged) ++summary.failed_steps;
@@ -521,6 +300,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
       if (ds < options.step_min) return finish(converged ? "step_size_underflow_on_curvature" : "step_size_underflow");
       continue;
     }
+    if (through_corner || onto_corner) ++summary.corners_stepped_over;
 
     const double arc = (y - x).norm();
     BranchPoint point{s.unknowns(y), s.parameter(y), tan_new.t, iterations, arc};

@@ -14,23 +14,23 @@ CoulombSlider::CoulombSlider(int directions, double tangential_stiffness, double
   if (d_ < 1 || d_ > 2) throw std::invalid_argument("CoulombSlider: 1 or 2 tangential directions");
 }
 
-SliderStep CoulombSlider::step(double normal, const VectorXd& x, const VectorXd& drift, const VectorXd& previous) const {
+SliderStep CoulombSlider::step(double normal, const SliderVector& x, const SliderVector& drift, const SliderVector& previous) const {
   const int q = inputs();
   SliderStep s;
-  s.force = VectorXd::Zero(d_);
-  s.G = MatrixXd::Zero(d_, d_);
-  s.H = MatrixXd::Zero(d_, q);
-  s.A = MatrixXd::Zero(d_, d_);
-  s.E = MatrixXd::Zero(d_, q);
-  const MatrixXd identity = MatrixXd::Identity(d_, d_);
+  s.force = SliderVector::Zero(d_);
+  s.G = SliderSquare::Zero(d_, d_);
+  s.H = SliderInputs::Zero(d_, q);
+  s.A = SliderSquare::Zero(d_, d_);
+  s.E = SliderInputs::Zero(d_, q);
+  const SliderSquare identity = SliderSquare::Identity(d_, d_);
   if (normal <= 0.0) {  // separated: the slider follows x
     s.mode = SlideMode::separated;
     s.state = x;
     s.E.middleCols(x_input(0), d_) = identity;
     return s;
   }
-  const VectorXd predicted = previous - drift;
-  const VectorXd trial = kt_ * (x - predicted);
+  const SliderVector predicted = previous - drift;
+  const SliderVector trial = kt_ * (x - predicted);
   const double limit = mu_ * normal, norm = trial.norm();
   if (norm <= limit) {  // stick: T = kt (x - zeta_prev + drift)
     s.mode = SlideMode::stick;
@@ -46,8 +46,8 @@ SliderStep CoulombSlider::step(double normal, const VectorXd& x, const VectorXd&
   }
   // Slip: T = mu N g, g = T*/|T*|; across g the trial's change turns the direction.
   s.mode = SlideMode::slip;
-  const VectorXd g = trial / norm;
-  const MatrixXd turn = limit / norm * (identity - g * g.transpose());
+  const SliderVector g = trial / norm;
+  const SliderSquare turn = limit / norm * (identity - g * g.transpose());
   s.force = limit * g;
   s.state = x - s.force / kt_;
   s.G = -kt_ * turn;
@@ -63,8 +63,8 @@ SliderStep CoulombSlider::step(double normal, const VectorXd& x, const VectorXd&
   return s;
 }
 
-MatrixXd CoulombSlider::period_map() const {
-  MatrixXd p = MatrixXd::Identity(d_, d_);
+SliderSquare CoulombSlider::period_map() const {
+  SliderSquare p = SliderSquare::Identity(d_, d_);
   for (const SliderStep& s : steps_) p = s.A * p;
   return p;
 }
@@ -75,10 +75,11 @@ void CoulombSlider::solve_period(const VectorXd& normal, const MatrixXd& x, cons
   steps_.resize(static_cast<size_t>(n));
   anchored_ = false;
   centre_ = stick_centre(x, mu_ * normal / kt_);
-  VectorXd zeta = centre_.z;
+  SliderVector zeta = centre_.z;
+  const SliderVector drift_step = drift;
   if (normal.minCoeff() > 0.0 && drift.isZero(0.0) && centre_.margin >= 0.0) {
     anchored_ = true;
-    for (Eigen::Index t = 0; t < n; ++t) steps_[static_cast<size_t>(t)] = step(normal(t), x.row(t).transpose(), drift, zeta);
+    for (Eigen::Index t = 0; t < n; ++t) steps_[static_cast<size_t>(t)] = step(normal(t), x.row(t).transpose(), drift_step, zeta);
     return;
   }
   // Round-off of a pass: a few ulps of the largest quantity, per step.
@@ -86,17 +87,17 @@ void CoulombSlider::solve_period(const VectorXd& normal, const MatrixXd& x, cons
   const double tolerance = 64 * std::numeric_limits<double>::epsilon() * std::max(scale, std::numeric_limits<double>::min()) * static_cast<double>(n);
   constexpr int kMaxPasses = 200;
   for (int pass = 0;; ++pass) {
-    VectorXd state = zeta;
+    SliderVector state = zeta;
     for (Eigen::Index t = 0; t < n; ++t) {
-      steps_[static_cast<size_t>(t)] = step(normal(t), x.row(t).transpose(), drift, state);
+      steps_[static_cast<size_t>(t)] = step(normal(t), x.row(t).transpose(), drift_step, state);
       state = steps_[static_cast<size_t>(t)].state;
     }
-    const VectorXd residual = state - zeta;
+    const SliderVector residual = state - zeta;
     if (residual.norm() <= tolerance || pass == kMaxPasses) return;
     // Newton lands on the periodic state if the stick-slip pattern holds there; late passes
     // fall back to plain iteration, which contracts, should patterns alternate.
-    const Eigen::FullPivLU<MatrixXd> lu(MatrixXd::Identity(d_, d_) - period_map());
-    zeta = (pass < kMaxPasses / 2 && lu.isInvertible()) ? VectorXd(zeta + lu.solve(residual)) : state;
+    const Eigen::FullPivLU<MatrixXd> lu(MatrixXd(SliderSquare::Identity(d_, d_) - period_map()));
+    zeta = (pass < kMaxPasses / 2 && lu.isInvertible()) ? SliderVector(zeta + lu.solve(VectorXd(residual))) : state;
   }
 }
 
@@ -118,22 +119,25 @@ MatrixXd CoulombSlider::periodic_response(const MatrixXd& dv) const {
   const Eigen::Index n = static_cast<Eigen::Index>(steps_.size());
   const int q = inputs();
   MatrixXd dt(n * d_, dv.cols());
-  MatrixXd state = MatrixXd::Zero(d_, dv.cols());
+  MatrixXd state = MatrixXd::Zero(d_, dv.cols()), next(d_, dv.cols());
+  // state <- A_t state + E_t (inputs at t), without temporaries.
+  const auto advance = [&](const SliderStep& s, Eigen::Index t) {
+    next.noalias() = s.A * state;
+    next.noalias() += s.E * dv.middleRows(t * q, q);
+    state.swap(next);
+  };
   if (anchored_) {  // in stick all period at the centre
     state = centre_response(dv);
   } else {
     // The state after the period from a zero start, then the periodic start (I - P)^-1 of it.
-    for (Eigen::Index t = 0; t < n; ++t) {
-      const SliderStep& s = steps_[static_cast<size_t>(t)];
-      state = s.A * state + s.E * dv.middleRows(t * q, q);
-    }
-    state = (MatrixXd::Identity(d_, d_) - period_map()).fullPivLu().solve(state);
+    for (Eigen::Index t = 0; t < n; ++t) advance(steps_[static_cast<size_t>(t)], t);
+    state = MatrixXd(SliderSquare::Identity(d_, d_) - period_map()).fullPivLu().solve(state);
   }
   for (Eigen::Index t = 0; t < n; ++t) {
     const SliderStep& s = steps_[static_cast<size_t>(t)];
-    const auto inputs_t = dv.middleRows(t * q, q);
-    dt.middleRows(t * d_, d_) = s.H * inputs_t + s.G * state;
-    if (!anchored_) state = s.A * state + s.E * inputs_t;
+    dt.middleRows(t * d_, d_).noalias() = s.H * dv.middleRows(t * q, q);
+    dt.middleRows(t * d_, d_).noalias() += s.G * state;
+    if (!anchored_) advance(s, t);
   }
   return dt;
 }
@@ -143,25 +147,28 @@ MatrixXd CoulombSlider::periodic_response_transpose(const MatrixXd& dt) const {
   const int q = inputs();
   MatrixXd dv(n * q, dt.cols());
   // Adjoint of the state after sample t: m_t = A_(t+1)^T m_(t+1) + G_(t+1)^T w_(t+1), periodic.
-  MatrixXd adjoint = MatrixXd::Zero(d_, dt.cols());
+  MatrixXd adjoint = MatrixXd::Zero(d_, dt.cols()), previous(d_, dt.cols());
+  // adjoint <- A_t^T adjoint + G_t^T (weights at t), without temporaries.
+  const auto recede = [&](const SliderStep& s, Eigen::Index t) {
+    previous.noalias() = s.A.transpose() * adjoint;
+    previous.noalias() += s.G.transpose() * dt.middleRows(t * d_, d_);
+    adjoint.swap(previous);
+  };
   if (!anchored_) {
-    for (Eigen::Index t = n - 1; t >= 0; --t) {
-      const SliderStep& s = steps_[static_cast<size_t>(t)];
-      adjoint = s.A.transpose() * adjoint + s.G.transpose() * dt.middleRows(t * d_, d_);
-    }
-    adjoint = (MatrixXd::Identity(d_, d_) - period_map().transpose()).fullPivLu().solve(adjoint);
+    for (Eigen::Index t = n - 1; t >= 0; --t) recede(steps_[static_cast<size_t>(t)], t);
+    adjoint = MatrixXd(SliderSquare::Identity(d_, d_) - period_map().transpose()).fullPivLu().solve(adjoint);
   }
   MatrixXd centre = MatrixXd::Zero(d_, dt.cols());  // weights on an anchored slider's centre
   for (Eigen::Index t = n - 1; t >= 0; --t) {
     const SliderStep& s = steps_[static_cast<size_t>(t)];
     const auto weights_t = dt.middleRows(t * d_, d_);
-    dv.middleRows(t * q, q) = s.H.transpose() * weights_t;
+    dv.middleRows(t * q, q).noalias() = s.H.transpose() * weights_t;
     if (anchored_) {
-      centre += s.G.transpose() * weights_t;
+      centre.noalias() += s.G.transpose() * weights_t;
       continue;
     }
-    dv.middleRows(t * q, q) += s.E.transpose() * adjoint;
-    adjoint = s.A.transpose() * adjoint + s.G.transpose() * weights_t;
+    dv.middleRows(t * q, q).noalias() += s.E.transpose() * adjoint;
+    recede(s, t);
   }
   for (size_t s = 0; anchored_ && s < centre_.support.size(); ++s) {  // the transpose of centre_response
     const Eigen::Index a = centre_.support[s];

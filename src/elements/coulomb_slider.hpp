@@ -28,10 +28,17 @@ namespace hbtrack {
 
 enum class SlideMode { stick, slip, separated };
 
+// Sizes bounded by d <= 2, q <= 7: stored in place, so that the N steps of a period (one per
+// sample, at every residual evaluation) allocate nothing.
+using SliderVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2, 1>;
+using SliderSquare = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 2, 2>;
+using SliderInputs = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 2, 7>;
+
 struct SliderStep {
   SlideMode mode = SlideMode::stick;
-  Eigen::VectorXd force, state;  // T, zeta after the step (d each)
-  Eigen::MatrixXd G, H, A, E;    // d x d, d x q, d x d, d x q
+  SliderVector force, state;  // T, zeta after the step (d each)
+  SliderSquare G, A;          // d x d
+  SliderInputs H, E;          // d x q
 };
 
 class CoulombSlider {
@@ -46,7 +53,7 @@ class CoulombSlider {
   int mu_input() const { return 1 + 2 * d_; }
   int stiffness_input() const { return 2 + 2 * d_; }
 
-  SliderStep step(double normal, const Eigen::VectorXd& x, const Eigen::VectorXd& drift, const Eigen::VectorXd& previous) const;
+  SliderStep step(double normal, const SliderVector& x, const SliderVector& drift, const SliderVector& previous) const;
 
   // The periodic steady state over N samples (normal: N, x: N x d, drift per sample: d). When
   // the slider can stick all period (always in contact, no drift, some position within
@@ -67,7 +74,7 @@ class CoulombSlider {
 
  private:
   // Period map of the state linearisation: A_(N-1) ... A_0.
-  Eigen::MatrixXd period_map() const;
+  SliderSquare period_map() const;
 
   int d_;
   double kt_, mu_;

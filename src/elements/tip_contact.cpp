@@ -26,6 +26,8 @@ const std::vector<std::string>& TipContact::property_names() const {
   return friction_ == TipFriction::sliding ? sliding : stick_slip;
 }
 
+bool TipContact::force_has_corners() const { return friction_ == TipFriction::stick_slip || kind_ == ContactLawKind::penalty; }
+
 std::string TipContact::smoothness_limit() const {
   if (friction_ == TipFriction::sliding) return hbtrack::smoothness_limit(kind_);
   return "stick-slip transitions make the friction force non-smooth";

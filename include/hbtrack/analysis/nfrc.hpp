@@ -41,11 +41,7 @@ class NfrcProblem final : public ContinuationProblem {
   }
   double parameter_scale() const override { return omega_scale_; }
   double residual_scale() const override { return force_scale_; }
-  bool has_corners() const override {
-    for (const auto& e : hbm_.elements())
-      if (e->smoothness_limit().find("C0") != std::string::npos) return true;
-    return false;
-  }
+  bool has_corners() const override { return hbm_.has_corners(); }
 
  private:
   HarmonicBalance& hbm_;

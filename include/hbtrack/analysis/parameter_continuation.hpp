@@ -21,6 +21,7 @@ class ParameterProblem final : public ContinuationProblem {
   Eigen::VectorXd unknown_scale(const Eigen::VectorXd& u) const override;
   double parameter_scale() const override { return parameter_scale_; }
   double residual_scale() const override { return force_scale_; }
+  bool has_corners() const override { return hbm_.has_corners(); }
 
  private:
   HarmonicBalance& hbm_;

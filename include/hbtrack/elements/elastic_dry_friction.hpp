@@ -29,6 +29,7 @@ class ElasticDryFriction final : public ScalarElement {
   std::string smoothness_limit() const override {
     return "stick-slip transitions make the Jenkins force non-smooth";
   }
+  bool force_has_corners() const override { return true; }
   void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                 const std::vector<double>& property_values, ElementResponse& out,
                 bool want_property_derivatives) const override;

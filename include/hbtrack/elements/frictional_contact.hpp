@@ -37,6 +37,7 @@ class FrictionalContact final : public NonlinearElement {
   std::string smoothness_limit() const override {
     return "contact separation and stick-slip transitions make the force non-smooth";
   }
+  bool force_has_corners() const override { return true; }
   void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                 const std::vector<double>& property_values, ElementResponse& out,
                 bool want_property_derivatives) const override;

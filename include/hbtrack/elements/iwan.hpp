@@ -35,6 +35,7 @@ class Iwan final : public ScalarElement {
   std::string smoothness_limit() const override {
     return "stick-slip transitions of its sliders make the Iwan force non-smooth";
   }
+  bool force_has_corners() const override { return true; }
   void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
                 const std::vector<double>& property_values, ElementResponse& out,
                 bool want_property_derivatives) const override;

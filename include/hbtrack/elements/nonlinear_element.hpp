@@ -91,6 +91,11 @@ class NonlinearElement {
   // Why the force is not twice continuously differentiable ("" when it is): limit-point tracking
   // differentiates the Jacobian and cannot follow a fold through such a law.
   virtual std::string smoothness_limit() const { return ""; }
+  // True when the sampled force is continuous but its Jacobian jumps where a sample changes
+  // state (a penalty contact's gap, a slider's stick-slip transitions): the residual is then
+  // piecewise smooth and its branches have corners, which the continuation steps over
+  // (ContinuationProblem::has_corners).
+  virtual bool force_has_corners() const { return false; }
   // Surfaces where the law's tangent jumps (a C0 law's corner), as signed functions of one
   // sample (x, v: 1 x k) that change sign there, so that time stepping can stop on them:
   // switching_surfaces() values written to `out`. None (0) for a law with a continuous tangent.

@@ -57,6 +57,7 @@ class GapContact final : public ScalarElement {
   // The penalty law's sample mean (sample_mean_law) depends on the velocity.
   bool depends_on_velocity() const override { return kind_ == ContactLawKind::penalty; }
   std::string smoothness_limit() const override { return hbtrack::smoothness_limit(kind_); }
+  bool force_has_corners() const override { return kind_ == ContactLawKind::penalty; }
   // The penalty law's corner d = gap (also the polynomial law given no width).
   int switching_surfaces(const std::vector<double>& property_values) const override;
   void switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, const std::vector<double>& property_values,

@@ -33,6 +33,8 @@ class TipContact final : public NonlinearElement {
   bool depends_on_omega() const override { return true; }
   bool history_dependent() const override { return friction_ == TipFriction::stick_slip; }
   std::string smoothness_limit() const override;
+  // The penalty law's gap; the stick-slip slider's transitions.
+  bool force_has_corners() const override;
   // The penalty law's corner: the radial displacement at the clearance.
   int switching_surfaces(const std::vector<double>& property_values) const override;
   void switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, const std::vector<double>& property_values,

@@ -66,6 +66,13 @@ class HarmonicBalance {
   ParameterSet& parameters() { return parameters_; }
   const ParameterSet& parameters() const { return parameters_; }
   int amplitude_parameter() const { return amplitude_index_; }
+  // True when an element's force has corners (NonlinearElement::force_has_corners): the
+  // residual is then only piecewise smooth in x.
+  bool has_corners() const {
+    for (const auto& e : elements_)
+      if (e->force_has_corners()) return true;
+    return false;
+  }
   // The basis' fundamental frequency omega / nu (harmonic k of the basis is at k omega / nu); the
   // solution's period is 2 pi / fundamental(omega).
   double fundamental(double omega) const { return omega / options_.subharmonic; }
