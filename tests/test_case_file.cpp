@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/io/result_tables.hpp"
 #include "hbtrack/model/damping.hpp"
 #include "test_support.hpp"
 
@@ -90,6 +91,15 @@ TEST(CaseFile, ValidCaseLoadsAsWritten) {
 }
 
 // Multi-byte UTF-8 (2, 3 and 4 bytes) is text like any other: only malformed sequences are refused.
+TEST(CaseFile, OutputDescriptionsAreReadAndWrittenToTheSummary) {
+  const CaseDefinition c = load_case(write_case("described", variant("dof = \"b\"\n", "dof = \"b\"\ndescription = \"tip, radial\"\n")).string());
+  ASSERT_EQ(c.outputs.size(), 1u);
+  EXPECT_EQ(c.outputs[0].description, "tip, radial");
+  EXPECT_EQ(outputs_json(c)[0].value("description", ""), "tip, radial");
+  // Without one, summary.json has no description key (figures fall back to name and dof).
+  EXPECT_FALSE(outputs_json(load_case(write_case("valid", kValid).string()))[0].contains("description"));
+}
+
 TEST(CaseFile, NonAsciiUtf8TextIsAccepted) {
   const CaseDefinition c = load_case(write_case("utf8", "# clearance in \u00b5m \u2192 0.1, \U0001F600\n" + variant("name = \"tip\"", "name = \"tip_\u00b5\"")).string());
   EXPECT_EQ(c.outputs[0].name, "tip_\u00b5");
@@ -195,6 +205,9 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       // Fuzzing finding: toml11 3.7 read out of bounds reporting this (a literal string with 0xE0).
       {"invalid_utf8_in_string", variant("name = \"tip\"", "name = 'tip\xe0'"), "not valid UTF-8 (byte"},
       {"overlong_utf8_in_comment", variant("", "# \xc0\xaf"), "not valid UTF-8 (byte"},
+      {"long_description", variant("dof = \"b\"\n", "dof = \"b\"\ndescription = \"" + std::string(81, 'x') + "\"\n"),
+       "outputs[0].description: at most 80 characters on one line"},
+      {"description_not_text", variant("dof = \"b\"\n", "dof = \"b\"\ndescription = 3\n"), "outputs[0].description"},
   };
   // Side files the matrix rows refer to (relative paths resolve next to the case file).
   fs::create_directories(test_dir());

@@ -64,7 +64,7 @@ HarmonicBalanceOptions options(const std::string& condensation, int samples = 12
   return o;
 }
 
-const std::vector<OutputDof> kOutputs{{"n", 0}, {"t", 1}, {"b", 2}};
+const std::vector<OutputDof> kOutputs{{"n", 0, ""}, {"t", 1, ""}, {"b", 2, ""}};
 
 }  // namespace
 

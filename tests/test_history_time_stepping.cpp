@@ -218,7 +218,7 @@ TEST(HistoryTimeStepping, MonodromyMultipliersMatchTheTimeIntegratorsFlow) {
   // with 4000 steps reproduces to (omega_n dt)^4 ~ 1e-10.
   {
     const double omega = 0.9, period = 2 * kPi / omega;
-    const FixedFrequencySolution s = solve_at_frequency(hbm, omega, {{"x", 0}}, 1e-11, 50);
+    const FixedFrequencySolution s = solve_at_frequency(hbm, omega, {{"x", 0, ""}}, 1e-11, 50);
     ASSERT_TRUE(s.converged);
     ASSERT_LT(s.recorded.outputs[0].max, 0.1);
     const FloquetResult r = monodromy_floquet(hbm, s.x, omega, 4000);
@@ -232,7 +232,7 @@ TEST(HistoryTimeStepping, MonodromyMultipliersMatchTheTimeIntegratorsFlow) {
   // multipliers); measured 4e-5 and 2.4e-4. Hill's multipliers, from the periodic (lambda = 0)
   // linearisation of the hysteresis, are printed for docs/stability.md.
   for (double omega : {1.1, 1.3}) {
-    const FixedFrequencySolution s = solve_at_frequency(hbm, omega, {{"x", 0}}, 1e-11, 50);
+    const FixedFrequencySolution s = solve_at_frequency(hbm, omega, {{"x", 0, ""}}, 1e-11, 50);
     ASSERT_TRUE(s.converged) << "omega " << omega;
     const FloquetResult r = monodromy_floquet(hbm, s.x, omega, 8000);
     const Eigen::VectorXcd flow = flow_multipliers(hbm, s.x, omega, 8192);

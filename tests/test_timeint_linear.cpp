@@ -45,7 +45,7 @@ cd discrete_hht_response(double omega, double h, double alpha) {
   return x_per_a * kForce * weight / (kMass * z + (kDamping * v_per_a + kStiffness * x_per_a) * weight);
 }
 
-const std::vector<OutputDof> kOutputs{{"x", 0}};
+const std::vector<OutputDof> kOutputs{{"x", 0, ""}};
 
 // The transient left at convergence is about change / (1 - lambda), lambda = exp(-c T / 2m)
 // = 0.50 per period here: a tight stroboscopic tolerance makes it negligible in comparisons to

@@ -20,7 +20,6 @@ from hbtrack.units import length_factor, scale_lengths
 from conftest import ROOT, run_cli
 
 COUPLED = os.path.join(ROOT, "examples", "coupled_duffing.toml")
-ROTOR67 = os.path.join(ROOT, "examples", "rotor67", "nominal.toml")
 
 
 @pytest.fixture(scope="module")
@@ -128,11 +127,11 @@ def test_outputs_named_by_their_descriptions_never_by_columns(coupled_frc):
     assert parse_labels(["le=leading edge"]) == {"le": "leading edge"}
     with pytest.raises(ValueError):
         parse_labels(["le"])
-    # The case file's comment after an output's name, up to its first comma or parenthesis
-    rotor = {"summary": {"outputs": [{"name": "le", "dof": "n1_r"}, {"name": "te", "dof": "n9_r"}], "options": {"case": ROTOR67}}}
-    assert output_descriptions(rotor) == {"le": "leading-edge tip node", "te": "trailing-edge tip node"}
-    rotor["summary"]["options"]["case"] = "nowhere.toml"
-    assert output_descriptions(rotor) == {"le": "le (n1_r)", "te": "te (n9_r)"}
+    # summary.json's descriptions (the case file's [[outputs]] description), else name and dof
+    rotor = {"summary": {"outputs": [{"name": "le", "dof": "n1_r", "description": "leading-edge tip, radial"},
+                                     {"name": "te", "dof": "n9_r"}]}}
+    assert output_descriptions(rotor) == {"le": "leading-edge tip, radial", "te": "te (n9_r)"}
+    assert output_descriptions(rotor, {"te": "trailing edge"})["te"] == "trailing edge"
 
 
 def test_zoom_on_the_resonance():
@@ -168,3 +167,21 @@ def test_the_overlap_check_sees_texts_printed_over_each_other():
     (a, box_a), (b, box_b) = text_boxes(figure)[ax]
     assert box_a.overlaps(box_b)
     plt.close(figure)
+
+
+def test_the_binary_passes_every_plot_option_on(coupled_frc, tmp_path):
+    """`hbtrack plot` takes the options of `python -m hbtrack.plot` and passes them on: the same
+    figures, and a bad value refused by the binary in one line with a non-zero exit."""
+    import subprocess
+    from conftest import cli_path
+
+    def run_cli(*args, check=True):
+        return subprocess.run([cli_path(), *args], capture_output=True, text=True, check=check)
+    out = str(tmp_path / "figures")
+    run_cli("plot", coupled_frc["folder"], "-o", out, "--units", "mm", "--norm", "--no-zoom", "--point", "LP2",
+            "--label", "x1=first mass", "--label", "x2=second mass", "--titles", "--zoom", "0.2")
+    assert sorted(os.listdir(out)) == sorted(f"{stem}.{ext}" for stem in ("nfrc", "fourier", "harmonics") for ext in ("png", "pdf"))
+    refused = run_cli("plot", coupled_frc["folder"], "--zoom", "2", check=False)
+    assert refused.returncode != 0 and "--zoom" in refused.stderr and refused.stderr.count("\n") == 1
+    missing = run_cli("plot", coupled_frc["folder"], "-o", out, "--point", "LP7", check=False)
+    assert missing.returncode == 2  # no such point: said, not a traceback

@@ -272,6 +272,9 @@ void check_forcing_within_harmonics(const CaseReader& in, const toml::value& roo
   }
 }
 
+// An output's description labels an axis: longer text would not fit beside it.
+constexpr size_t kLongestDescription = 80;
+
 void read_outputs(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value* outputs = in.find(root, "outputs");
   if (!outputs) return;
@@ -280,13 +283,17 @@ void read_outputs(const CaseReader& in, const toml::value& root, CaseDefinition&
   for (size_t i = 0; i < outputs->as_array().size(); ++i) {
     const std::string field = "outputs[" + std::to_string(i) + "]";
     const toml::value& o = in.table(outputs->as_array()[i], field);
-    in.check_keys(o, field, {"name", "dof"});
+    in.check_keys(o, field, {"name", "dof", "description"});
     OutputDof out;
     out.dof = dof_index(in, c.model, in.require(o, "dof", field + ".dof"), field + ".dof");
     out.name = in.string_or(o, "name", field + ".name", c.model.dof_names[static_cast<size_t>(out.dof)]);
     if (out.name.empty() || out.name.find_first_of(",\"\n ") != std::string::npos)
       in.fail(&o, field + ".name", "must be non-empty without commas, quotes or spaces (it names CSV columns)");
     if (!names.insert(out.name).second) in.fail(&o, field + ".name", "output name '" + out.name + "' appears twice");
+    out.description = in.string_or(o, "description", field + ".description", "");
+    if (out.description.size() > kLongestDescription || out.description.find_first_of("\n\r") != std::string::npos)
+      in.fail(&o, field + ".description",
+              "at most " + std::to_string(kLongestDescription) + " characters on one line (it labels figure axes)");
     c.outputs.push_back(out);
   }
 }

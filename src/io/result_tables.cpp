@@ -48,7 +48,11 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
 
 json outputs_json(const CaseDefinition& c) {
   json outputs = json::array();
-  for (const auto& out : c.outputs) outputs.push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
+  for (const auto& out : c.outputs) {
+    json entry = {{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}};
+    if (!out.description.empty()) entry["description"] = out.description;
+    outputs.push_back(entry);
+  }
   return outputs;
 }
 

@@ -9,7 +9,8 @@ namespace hbtrack {
 
 struct OutputDof {
   std::string name;
-  int dof = -1;  // model dof index
+  int dof = -1;             // model dof index
+  std::string description;  // what figures call it ("leading-edge tip node"); "" for none
 };
 
 struct OutputValues {
