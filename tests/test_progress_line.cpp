@@ -13,8 +13,8 @@
 
 namespace fs = std::filesystem;
 using hbtrack::cli::Coverage;
-using hbtrack::cli::ProgressState;
 using hbtrack::cli::progress_text;
+using hbtrack::cli::ProgressState;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
 
@@ -83,8 +83,8 @@ TEST(ProgressLine, TrackWritesNoProgressLineWhenStderrIsNotATerminal) {
   // Duffing at 3 harmonics: an NFRC over the resonance and the tracking curve in 0.1 s.
   std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
   duffing += " --set harmonic_balance.harmonics=3";
-  const CliRun frc = run_cli("frc " + duffing + " --set continuation.omega_start=1.0 --set continuation.omega_end=1.4 -q -o " +
-                             (dir / "frc").string());
+  const CliRun frc =
+      run_cli("frc " + duffing + " --set continuation.omega_start=1.0 --set continuation.omega_end=1.4 -q -o " + (dir / "frc").string());
   ASSERT_EQ(frc.exit_code, 0) << frc.err;
   // stderr is a file here, as in a log or a batch job.
   const CliRun track = run_cli("track " + duffing + " --from " + (dir / "frc").string() + " --lp 1 --param amplitude --range 0.5:1.5 -o " +

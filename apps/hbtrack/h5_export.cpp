@@ -107,7 +107,8 @@ void string_attribute(hid_t object, const std::string& name, const std::string& 
 
 void integer_attribute(hid_t object, const std::string& name, long long value) {
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, "the dataspace of " + name);
-  Handle attribute(H5Acreate2(object, name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose, "the attribute " + name);
+  Handle attribute(H5Acreate2(object, name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+                   "the attribute " + name);
   check(H5Awrite(attribute.get(), H5T_NATIVE_LLONG, &value), "the attribute " + name);
 }
 
@@ -150,8 +151,10 @@ void write_special_points(hid_t file, const json& points) {
     std::vector<double> values;
     for (const json& p : points) {
       double v = std::numeric_limits<double>::quiet_NaN();
-      if (p.contains(key) && p[key].is_boolean()) v = p[key].get<bool>() ? 1.0 : 0.0;
-      else if (p.contains(key) && p[key].is_number()) v = p[key].get<double>();
+      if (p.contains(key) && p[key].is_boolean())
+        v = p[key].get<bool>() ? 1.0 : 0.0;
+      else if (p.contains(key) && p[key].is_number())
+        v = p[key].get<double>();
       values.push_back(v);
     }
     write_doubles(group.get(), unique_name(dataset_name(key), used), values, values.size());
@@ -224,7 +227,8 @@ std::vector<std::string> export_result_folder_h5(const std::string& dir, const s
   written.push_back("summary_json");
   for (const char* key : {"verb", "stop_reason"})
     if (summary.contains(key) && summary[key].is_string()) string_attribute(file.get(), key, summary[key].get<std::string>());
-  if (summary.contains("points") && summary["points"].is_number_integer()) integer_attribute(file.get(), "points", summary["points"].get<long long>());
+  if (summary.contains("points") && summary["points"].is_number_integer())
+    integer_attribute(file.get(), "points", summary["points"].get<long long>());
   file.commit();
   return written;
 }

@@ -41,7 +41,8 @@ double Coverage::add(double value, int leg) {
   if (!std::isfinite(value)) return fraction_;
   if (!two_legs_) return fraction_ = std::max(fraction_, covered_fraction(value, start_, end_));
   const double first = covered_fraction(from_, start_, end_);  // leg 1's share: [lo, from]
-  const double part = leg <= 1 ? first * covered_fraction(value, from_, start_) : first + (1 - first) * covered_fraction(value, from_, end_);
+  const double part =
+      leg <= 1 ? first * covered_fraction(value, from_, start_) : first + (1 - first) * covered_fraction(value, from_, end_);
   return fraction_ = std::max(fraction_, part);
 }
 

@@ -32,7 +32,8 @@ void add_export_verb(CLI::App& app, VerbList& verbs) {
   CLI::App* e = app.add_subcommand("export", "a result folder as one MATLAB .mat or HDF5 file (tables, special points, summary)");
   e->add_option("dir", options.dir, "result folder of any verb")->required();
   e->add_option("-o,--output", options.out, "the file to write (default: DIR/results.mat, or DIR/results.h5 with --format h5)");
-  e->add_option("--format", options.format, "mat (MATLAB v5: MATLAB, Octave, scipy.io.loadmat, the default) or h5 (HDF5: h5py, h5read, Julia)");
+  e->add_option("--format", options.format,
+                "mat (MATLAB v5: MATLAB, Octave, scipy.io.loadmat, the default) or h5 (HDF5: h5py, h5read, Julia)");
   e->add_flag("-q,--quiet", options.quiet, "no summary line on stderr");
   verbs.push_back({e, [] { return run_export(options); }});
 }
