@@ -11,6 +11,7 @@ packages=(
   nlohmann-json3-dev     # summary.json
   libtoml11-dev          # case files
   libmatio-dev           # MATLAB .mat matrices
+  libhdf5-dev            # `hbtrack export --format h5` (HDF5's C library; the tool only, not libhbtrack)
   zlib1g-dev             # inflates compressed .mat headers before libmatio sizes them
   calculix-ccx           # cross-checks the hex20 element against CalculiX (test skipped without it)
   libspectra-dev         # sparse/shift-invert eigensolvers (Hill, Craig-Bampton)

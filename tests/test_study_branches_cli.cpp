@@ -114,7 +114,10 @@ TEST(StudyBranchesCli, BackboneAndSwitchedBranchesAreStepsOnThePageAndInTheFigur
   const CliRun resumed = run_cli("study " + study + " --resume " + out.string());
   EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.err.find("backbone_mode1             done before, kept"), std::string::npos) << resumed.err;
-  EXPECT_NE(resumed.err.find("running " + folders[0]), std::string::npos) << resumed.err;
+  // Where the study is: the stage of the pipeline, and each step counted as it ends.
+  EXPECT_NE(resumed.err.find("study: stage 2 of 8, branches: running " + folders[0]), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find("(step 1 of 1)"), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find("study: stage 8 of 8, figures"), std::string::npos) << resumed.err;
   EXPECT_EQ(without_timings(read_json(out / "summary.json")), without_timings(s));
   fs::remove_all(dir);
 }

@@ -23,31 +23,102 @@ double covered_fraction(double value, double start, double end) {
   return std::clamp((value - start) / span, 0.0, 1.0);
 }
 
+Coverage Coverage::one_way(double start, double end) {
+  Coverage c;
+  c.start_ = start;
+  c.end_ = end;
+  return c;
+}
+
+Coverage Coverage::two_legs(double lo, double hi, double from) {
+  Coverage c = one_way(lo, hi);
+  c.two_legs_ = true;
+  c.from_ = from;
+  return c;
+}
+
+double Coverage::add(double value, int leg) {
+  if (!std::isfinite(value)) return fraction_;
+  if (!two_legs_) return fraction_ = std::max(fraction_, covered_fraction(value, start_, end_));
+  const double first = covered_fraction(from_, start_, end_);  // leg 1's share: [lo, from]
+  const double part =
+      leg <= 1 ? first * covered_fraction(value, from_, start_) : first + (1 - first) * covered_fraction(value, from_, end_);
+  return fraction_ = std::max(fraction_, part);
+}
+
+std::string progress_text(const ProgressState& s) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "  point %5d  omega %-12.6g", s.index, s.omega);
+  std::string line = buf;
+  if (!s.parameter.empty()) {
+    std::snprintf(buf, sizeof buf, "  %s %-12.6g", s.parameter.c_str(), s.parameter_value);
+    line += buf;
+  }
+  if (s.fraction >= 0) {
+    // The pace so far, extrapolated: rough near a resonance (or a cusp), where the steps shorten.
+    const std::string left =
+        s.fraction > 0.01 && s.fraction < 1 ? "~" + duration_text(s.elapsed_s * (1 - s.fraction) / s.fraction) + " left" : "";
+    std::snprintf(buf, sizeof buf, " %5.1f %%  %-14s", 100 * s.fraction, left.c_str());
+    line += buf;
+  }
+  if (!s.output.empty()) {
+    std::snprintf(buf, sizeof buf, "  max_%s %-12.5g", s.output.c_str(), s.output_max);
+    line += buf;
+  }
+  return line;
+}
+
 Progress::Progress(bool quiet) : enabled_(!quiet && isatty(STDERR_FILENO)) {}
 
 Progress::Progress(bool quiet, double range_start, double range_end) : Progress(quiet) {
   has_range_ = true;
-  start_ = range_start;
-  end_ = range_end;
+  coverage_ = Coverage::one_way(range_start, range_end);
 }
 
-Progress::~Progress() {
-  if (enabled_) std::fprintf(stderr, "\n");
+Progress::Progress(bool quiet, const std::string& parameter, double lo, double hi, double from) : Progress(quiet) {
+  has_range_ = true;
+  coverage_ = Coverage::two_legs(lo, hi, from);
+  parameter_ = parameter;
+}
+
+Progress::~Progress() { finish(); }
+
+void Progress::finish() {
+  if (shown_) std::fprintf(stderr, "\n");
+  shown_ = false;
 }
 
 void Progress::update(int index, double omega, const RecordedPoint& p, const std::vector<OutputDof>& outputs) {
   if (!enabled_) return;
-  std::fprintf(stderr, "\r  point %5d  omega %-12.6g", index, omega);
+  ProgressState s;
+  s.index = index;
+  s.omega = omega;
+  show(s, omega, 1, p, outputs);
+}
+
+void Progress::update(int index, double omega, double parameter_value, int leg, const RecordedPoint& p,
+                      const std::vector<OutputDof>& outputs) {
+  if (!enabled_) return;
+  ProgressState s;
+  s.index = index;
+  s.omega = omega;
+  s.parameter = parameter_;
+  s.parameter_value = parameter_value;
+  show(s, parameter_value, leg, p, outputs);
+}
+
+void Progress::show(ProgressState s, double position, int leg, const RecordedPoint& p, const std::vector<OutputDof>& outputs) {
   if (has_range_) {
-    furthest_ = std::max(furthest_, covered_fraction(omega, start_, end_));
-    std::fprintf(stderr, " %5.1f %%", 100 * furthest_);
-    // The pace so far, extrapolated: rough near a resonance, where the steps shorten.
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    const std::string left = furthest_ > 0.01 && furthest_ < 1 ? "~" + duration_text(elapsed * (1 - furthest_) / furthest_) + " left" : "";
-    std::fprintf(stderr, "  %-14s", left.c_str());
+    s.fraction = coverage_.add(position, leg);
+    s.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
   }
-  if (!outputs.empty() && !p.outputs.empty()) std::fprintf(stderr, "  max_%s %-12.5g", outputs[0].name.c_str(), p.outputs[0].max);
+  if (!outputs.empty() && !p.outputs.empty()) {
+    s.output = outputs[0].name;
+    s.output_max = p.outputs[0].max;
+  }
+  std::fprintf(stderr, "\r%s", progress_text(s).c_str());
   std::fflush(stderr);
+  shown_ = true;
 }
 
 }  // namespace hbtrack::cli

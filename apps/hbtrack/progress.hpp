@@ -1,8 +1,8 @@
 #pragma once
 // The one-line progress report of a running verb on a terminal (stderr): the point, omega, the
-// first output's maximum and, when the verb knows the range it covers, the percentage covered
-// and the time left at the pace so far. Silent when stderr is not a terminal (a log, a pipe, a
-// batch job) or with -q.
+// tracked parameter's value, the first output's maximum and, when the verb knows the range it
+// covers, the percentage covered and the time left at the pace so far. Silent when stderr is not
+// a terminal (a log, a pipe, a batch job) or with -q.
 #include <chrono>
 #include <string>
 #include <vector>
@@ -18,20 +18,65 @@ std::string duration_text(double seconds);
 // range or a value that is not finite).
 double covered_fraction(double value, double start, double end);
 
+// How much of its range a run has covered so far, 0 to 1, never lower than before.
+class Coverage {
+ public:
+  // omega from start to end (frc): the furthest value counts, a folding branch that steps back
+  // does not lower it.
+  static Coverage one_way(double start, double end);
+  // A parameter followed from `from` inside [lo, hi] in two legs (track): leg 1 towards lo, leg
+  // 2 towards hi, each counting for its share of the range, by the furthest value it reached. A
+  // leg that turns back (at a cusp) and leaves the range elsewhere counts as whole once leg 2
+  // starts.
+  static Coverage two_legs(double lo, double hi, double from);
+  // The fraction after this value of the leg (ignored by one_way; values not finite are ignored).
+  double add(double value, int leg = 1);
+  double fraction() const { return fraction_; }
+
+ private:
+  bool two_legs_ = false;
+  double start_ = 0, end_ = 0, from_ = 0, fraction_ = 0;
+};
+
+// What one update of the line shows.
+struct ProgressState {
+  int index = 0;
+  double omega = 0;
+  std::string parameter;  // the tracked parameter ("" for none) and its value
+  double parameter_value = 0;
+  double fraction = -1;  // of the range covered; negative when the run has no range
+  double elapsed_s = 0;  // since the start, for the time left
+  std::string output;    // the first output's name ("" for none) and its maximum
+  double output_max = 0;
+};
+
+// The line's text (without the '\r' that returns to its start), padded so that a shorter update
+// overwrites a longer one: "  point    42  omega 1.25  amplitude 0.8  37.5 %  ~12s left ...".
+std::string progress_text(const ProgressState& s);
+
 class Progress {
  public:
   explicit Progress(bool quiet);
-  // A run over [range_start, range_end] of omega: the report adds the percentage covered (the
-  // furthest so far: a folding branch that steps back does not lower it) and the time left.
+  // A run over [range_start, range_end] of omega (frc): the report adds the percentage covered
+  // and the time left.
   Progress(bool quiet, double range_start, double range_end);
+  // A limit point followed in `parameter` from `from` inside [lo, hi], in two legs (track): the
+  // report adds the parameter's value, the percentage covered and the time left.
+  Progress(bool quiet, const std::string& parameter, double lo, double hi, double from);
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
   void update(int index, double omega, const RecordedPoint& p, const std::vector<OutputDof>& outputs);
+  // A tracking point of `leg` (1 or 2): `parameter_value` is where it is in the range.
+  void update(int index, double omega, double parameter_value, int leg, const RecordedPoint& p, const std::vector<OutputDof>& outputs);
+  // Ends the line, once: the warnings and the closing report that follow start on their own line.
+  void finish();
 
  private:
-  bool enabled_, has_range_ = false;
-  double start_ = 0, end_ = 0, furthest_ = 0;
+  void show(ProgressState s, double position, int leg, const RecordedPoint& p, const std::vector<OutputDof>& outputs);
+  bool enabled_, has_range_ = false, shown_ = false;
+  Coverage coverage_;
+  std::string parameter_;
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 

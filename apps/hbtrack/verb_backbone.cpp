@@ -64,6 +64,7 @@ int run_backbone(const BackboneCliOptions& o) {
     write_json_atomically(dir + "/summary.json", summary);
     throw RunFailed{e.what()};
   }
+  progress.finish();
   const auto& s = r.continuation.summary;
   const std::string stop_reason = stop.reason(s.stop_reason);
   add_backbone_summary(summary, c, hbm, r);

@@ -60,6 +60,7 @@ int run_continue(const ContinueOptions& o) {
     write_json_atomically(dir + "/summary.json", summary);
     throw RunFailed{e.what()};
   }
+  progress.finish();
   hbm.parameters().value(parameter) = nominal;
   const auto& s = r.continuation.summary;
   const std::string stop_reason = stop.reason(s.stop_reason);

@@ -1,7 +1,9 @@
-// `hbtrack export DIR [-o FILE.mat]`: a result folder as one MATLAB .mat file (mat_export.hpp).
+// `hbtrack export DIR [--format mat|h5] [-o FILE]`: a result folder as one MATLAB .mat file
+// (mat_export.hpp) or one HDF5 file (h5_export.hpp).
 #include <cstdio>
 
 #include "cli_common.hpp"
+#include "h5_export.hpp"
 #include "mat_export.hpp"
 
 namespace hbtrack::cli {
@@ -14,9 +16,9 @@ struct ExportOptions {
 };
 
 int run_export(const ExportOptions& o) {
-  if (o.format != "mat") throw CaseError("--format: must be mat, got '" + o.format + "'");
-  const std::string path = o.out.empty() ? o.dir + "/results.mat" : o.out;
-  const std::vector<std::string> names = export_result_folder(o.dir, path);
+  if (o.format != "mat" && o.format != "h5") throw CaseError("--format: must be mat or h5, got '" + o.format + "'");
+  const std::string path = o.out.empty() ? o.dir + "/results." + o.format : o.out;
+  const std::vector<std::string> names = o.format == "h5" ? export_result_folder_h5(o.dir, path) : export_result_folder(o.dir, path);
   if (!o.quiet) {
     std::string listed;
     for (const std::string& n : names) listed += (listed.empty() ? "" : ", ") + n;
@@ -27,10 +29,11 @@ int run_export(const ExportOptions& o) {
 
 void add_export_verb(CLI::App& app, VerbList& verbs) {
   static ExportOptions options;
-  CLI::App* e = app.add_subcommand("export", "a result folder as one MATLAB .mat file (tables as structs, special points, summary)");
+  CLI::App* e = app.add_subcommand("export", "a result folder as one MATLAB .mat or HDF5 file (tables, special points, summary)");
   e->add_option("dir", options.dir, "result folder of any verb")->required();
-  e->add_option("-o,--output", options.out, "the .mat file to write (default: DIR/results.mat)");
-  e->add_option("--format", options.format, "mat (MATLAB v5: MATLAB, Octave, scipy.io.loadmat)");
+  e->add_option("-o,--output", options.out, "the file to write (default: DIR/results.mat, or DIR/results.h5 with --format h5)");
+  e->add_option("--format", options.format,
+                "mat (MATLAB v5: MATLAB, Octave, scipy.io.loadmat, the default) or h5 (HDF5: h5py, h5read, Julia)");
   e->add_flag("-q,--quiet", options.quiet, "no summary line on stderr");
   verbs.push_back({e, [] { return run_export(options); }});
 }

@@ -126,6 +126,7 @@ int run_frc(const FrcOptions& options) {
     const ParameterWindow window{std::min(start.omega, end), std::max(start.omega, end), end > start.omega ? 1 : -1, false};
     r = compute_branch(hbm, c.nfrc, c.outputs, start.x, start.omega, window, record, restart);
   }
+  progress.finish();
   const auto& s = r.continuation.summary;
   const std::string stop_reason = stop.reason(s.stop_reason);
   add_nfrc_summary(summary, c, hbm, r);

@@ -56,6 +56,12 @@ constexpr double kProbeOffset = 0.02;
 // the two-dof contact example (the omega/2 harmonic grows as the square root of the distance).
 constexpr double kSameBranchOmega = 1e-3, kSameBranchOutput = 1e-2;
 
+// The stages of a study, in order, for the lines that say where it is ("stage 3 of 8, tracking").
+// A stage with nothing to do for the case (no [study] convergence, no isola) says nothing.
+enum Stage { kNominal, kBranches, kTracking, kValidation, kIsolas, kIsolaSimulation, kConvergence, kFigures, kStages };
+constexpr const char* kStageNames[kStages] = {"nominal NFRC", "branches",         "tracking",    "validation and simulation",
+                                              "isolas",       "isola simulation", "convergence", "figures"};
+
 // One verb run into DIR/folder. A step that may fail keeps going with what it wrote (exit 1: a
 // tracking leg or a simulation that stopped early still leaves its points).
 struct Step {
@@ -148,12 +154,15 @@ class Study {
     if (!o_.common.quiet && !todo.empty()) {
       std::string names;
       for (const size_t i : todo) names += (names.empty() ? "" : ", ") + steps[i].folder;
-      std::fprintf(stderr, "study: running %s\n", names.c_str());
+      std::fprintf(stderr, "study: stage %d of %d, %s: running %s\n", stage_ + 1, int{kStages}, kStageNames[stage_], names.c_str());
     }
     if (!o_.resume.empty()) save();
+    size_t ended = 0;
     const std::vector<int> ran = runner_.run(tasks, [&](size_t k, int code, double seconds) {
       const Step& s = steps[todo[k]];
-      if (!o_.common.quiet) std::fprintf(stderr, "study:   %-26s exit %d, %.1f s\n", s.folder.c_str(), code, seconds);
+      ++ended;
+      if (!o_.common.quiet)
+        std::fprintf(stderr, "study:   %-26s exit %d, %.1f s (step %zu of %zu)\n", s.folder.c_str(), code, seconds, ended, todo.size());
       summary_["steps"].push_back({{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}});
       save();
     });
@@ -174,6 +183,7 @@ class Study {
   double case_value(const std::string& name) const { return c_.parameters.value(c_.parameters.find(name)); }
 
   bool nominal() {
+    stage_ = kNominal;
     if (!run_steps({{"nfrc", {"frc", o_.common.case_path}, true}})) return false;
     const json s = read_summary(dir_ + "/nfrc");
     for (const auto& sp : s["special_points"])
@@ -186,6 +196,7 @@ class Study {
   // Beside the NFRC, as [study] asks: the backbones side by side, then the branch of each BP and
   // PD in turn, a point that an earlier switched branch passes through not switched again.
   bool branches() {
+    stage_ = kBranches;
     const std::vector<BranchStep> backbones = backbone_steps(c_.study.backbones, o_.common.case_path);
     std::vector<Step> steps;
     for (const BranchStep& b : backbones) steps.push_back({b.folder, b.args, false});
@@ -216,6 +227,7 @@ class Study {
   // Round k follows the k-th limit point in every parameter at once; a limit point that already
   // lies on an earlier curve of the same parameter (the two folds of one cusp) is not tracked again.
   bool tracking() {
+    stage_ = kTracking;
     summary_["tracking"] = json::array();
     const std::string out = first_output();
     for (const StudyTrack& t : tracked_)
@@ -266,6 +278,7 @@ class Study {
   // one), the tracking curves' limit points located at the same values, and the time
   // integration: all independent of each other.
   bool validation_and_simulation() {
+    stage_ = kValidation;
     std::vector<Step> frcs, crossings;
     for (const StudyTrack& t : tracked_) {
       if (curves_[t.parameter].empty()) continue;
@@ -346,6 +359,7 @@ class Study {
   // Limit points of the tracking curves that no NFRC from the linear solution passes announce
   // isolated branches: `isolas` follows each until it closes.
   bool isolas() {
+    stage_ = kIsolas;
     std::vector<Step> steps;
     std::vector<json*> where;
     for (const Probe& p : probes_) {
@@ -406,6 +420,7 @@ class Study {
 
   // The paper's Fig. 12: a stable point of an isolated branch, integrated in time.
   bool isola_simulation() {
+    stage_ = kIsolaSimulation;
     if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return true;
     json tracking = json::array();
     for (const StudyTrack& t : tracked_) tracking.push_back(entries_[t.parameter]);
@@ -426,6 +441,7 @@ class Study {
   // Every event recomputed with more harmonics and samples: the nominal NFRC, then each tracking
   // curve from the refined NFRC's limit point nearest the original's.
   bool convergence() {
+    stage_ = kConvergence;
     const int h = c_.study.convergence_harmonics, n = c_.study.convergence_samples;
     if (h <= 0) return true;
     const std::vector<std::string> refine{"--set", "harmonic_balance.harmonics=" + std::to_string(h), "--set",
@@ -473,6 +489,8 @@ class Study {
 
   // Figures are a convenience: a missing matplotlib costs the pictures, not the study.
   void figures() {
+    stage_ = kFigures;
+    if (!o_.common.quiet) std::fprintf(stderr, "study: stage %d of %d, %s: drawing\n", stage_ + 1, int{kStages}, kStageNames[stage_]);
     ensure_directory(dir_ + "/figures");
     std::vector<std::string> args{dir_};
     if (!o_.units.empty()) args.insert(args.end(), {"--units", o_.units});
@@ -501,6 +519,7 @@ class Study {
   std::map<std::string, std::vector<TrackingCurve>> curves_;
   std::vector<Probe> probes_;
   std::string stop_reason_;
+  Stage stage_ = kNominal;
   std::map<std::string, json> previous_;  // resuming: the stopped study's ended steps, by folder
 };
 

@@ -146,7 +146,7 @@ int run_track(TrackOptions o) {
   write_json_atomically(dir + "/summary.json", summary);
 
   const FoldScales scales = tracking_scales(hbm, c.nfrc, tracking.parameter_max - tracking.parameter_min);
-  Progress progress(o.common.quiet);
+  Progress progress(o.common.quiet, o.param, tracking.parameter_min, tracking.parameter_max, start_value);
   StopRequest stop(o.time_limit);
   FoldTrackingRestart restart;
   if (resumed) restart.resume_from = &resumed->state;
@@ -161,13 +161,14 @@ int run_track(TrackOptions o) {
           std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
           row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
           states.append(row);
-          progress.update(index, p.omega, p.recorded, c.outputs);
+          progress.update(index, p.omega, p.parameter, p.leg, p.recorded, c.outputs);
           return !stop.requested();
         },
         restart);
   } catch (const std::runtime_error& e) {
     throw RunFailed{e.what()};
   }
+  progress.finish();
   add_tracking_summary(summary, c, r, o.param);
   double omega_low = start.omega, omega_high = start.omega;
   for (const FoldCurvePoint& p : r.points) {

@@ -41,7 +41,7 @@ def test_export_writes_every_table_special_point_and_the_summary(duffing_frc_cli
 
 def test_export_refuses_a_missing_folder_and_an_unknown_format_in_one_line(tmp_path):
     for args, message in [([str(tmp_path / "absent")], "not a result folder"),
-                          ([str(tmp_path), "--format", "h5"], "--format: must be mat")]:
+                          ([str(tmp_path), "--format", "hdf"], "--format: must be mat or h5")]:
         done = subprocess.run([cli_path(), "export", *args], capture_output=True, text=True)
         assert done.returncode == 2
         assert message in done.stderr

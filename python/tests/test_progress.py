@@ -32,11 +32,10 @@ def test_progress_callback_sees_every_point_and_can_stop(duffing_case):
         hbtrack.frc(duffing_case, progress=3)
 
 
-def test_cli_progress_line_on_a_terminal_only(tmp_path):
-    # stderr a pseudo-terminal: the line carries the percentage of the range and ends at 100 %.
+def run_on_a_terminal(*args):
+    """`hbtrack ARGS` with stderr a pseudo-terminal: its exit code and the updates of its line."""
     leader, follower = pty.openpty()
-    done = subprocess.run([cli_path(), "frc", DUFFING, "-o", str(tmp_path / "tty")], stdout=subprocess.DEVNULL,
-                          stderr=follower, timeout=120)
+    done = subprocess.run([cli_path(), *args], stdout=subprocess.DEVNULL, stderr=follower, timeout=120)
     os.close(follower)
     text = b""
     while True:
@@ -48,12 +47,30 @@ def test_cli_progress_line_on_a_terminal_only(tmp_path):
             break
         text += chunk
     os.close(leader)
-    assert done.returncode == 0
-    updates = text.decode().split("\r")
-    assert len(updates) > 20, text
+    return done.returncode, text.decode().split("\r")
+
+
+def test_cli_progress_line_on_a_terminal_only(tmp_path):
+    # stderr a pseudo-terminal: the line carries the percentage of the range and ends at 100 %.
+    code, updates = run_on_a_terminal("frc", DUFFING, "-o", str(tmp_path / "tty"))
+    assert code == 0
+    assert len(updates) > 20, updates
     percentages = [float(u.split("%")[0].split()[-1]) for u in updates if "%" in u]
     assert percentages[-1] == 100.0 and percentages == sorted(percentages), percentages
-    assert any(" left" in u for u in updates), text
+    assert any(" left" in u for u in updates), updates
     # stderr a file (a log): no progress at all.
     logged = subprocess.run([cli_path(), "frc", DUFFING, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=120)
     assert logged.returncode == 0 and "%" not in logged.stderr, logged.stderr
+
+
+def test_track_progress_line_covers_the_parameter_range_on_a_terminal_only(duffing_frc_cli, tmp_path):
+    # Both legs reach the ends of --range: the span of amplitudes seen grows to 100 %.
+    track = ["track", DUFFING, "--from", duffing_frc_cli["folder"], "--lp", "1", "--param", "amplitude", "--range", "0.1:2"]
+    code, updates = run_on_a_terminal(*track, "-o", str(tmp_path / "tty"))
+    assert code == 0
+    percentages = [float(u.split("%")[0].split()[-1]) for u in updates if "%" in u]
+    assert len(percentages) > 10 and percentages[-1] == 100.0 and percentages == sorted(percentages), percentages
+    assert all(" amplitude " in u for u in updates if "%" in u), updates
+    assert any(" left" in u for u in updates), updates
+    logged = subprocess.run([cli_path(), *track, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=120)
+    assert logged.returncode == 0 and "%" not in logged.stderr and "\r" not in logged.stderr, logged.stderr
