@@ -16,6 +16,7 @@
 #include "case_dof_names.hpp"
 #include "case_elements.hpp"
 #include "case_reader.hpp"
+#include "case_templates.hpp"
 #include "hbtrack/io/input_file.hpp"
 #include "hbtrack/model/damping.hpp"
 #include "utf8_validation.hpp"
@@ -499,6 +500,8 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   }
   CaseReader in(path);
   if (!root.is_table()) throw CaseError(path + ": expected a TOML table at the top level");
+  // Before the overrides, so that `--set elements[i]...` addresses element i of the expanded list.
+  expand_element_templates(in, root);
   apply_overrides(in, root, overrides);
   in.check_keys(root, "", {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs", "study"});
   CaseDefinition c;
