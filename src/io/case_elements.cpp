@@ -151,6 +151,9 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
       in.fail(&type_value, field + ".type", "unknown element type '" + type + "'" +
                                                  (guess.empty() ? " (expected one of: " + join(types) + ")" : " (did you mean '" + guess + "'?)"));
     }
+    // Templates are expanded before the overrides: only `--set elements[i].nodes=...` gets here.
+    if (const toml::value* nodes = in.find(e, "nodes"))
+      in.fail(nodes, field + ".nodes", "templates are expanded before --set: set the expanded elements' keys instead");
     std::vector<std::string> allowed{"type", "dofs", "lanczos"};
     if (type == "regularized_contact" || type == "tip_contact" || type == "frictional_contact") allowed.push_back("law");
     if (type == "tip_contact") allowed.push_back("friction");

@@ -13,8 +13,10 @@
 #include <set>
 #include <sstream>
 
+#include "case_dof_names.hpp"
 #include "case_elements.hpp"
 #include "case_reader.hpp"
+#include "case_templates.hpp"
 #include "hbtrack/io/input_file.hpp"
 #include "hbtrack/model/damping.hpp"
 #include "utf8_validation.hpp"
@@ -44,7 +46,7 @@ void read_model(const CaseReader& in, const toml::value& root, CaseDefinition& c
     const double k = in.number_or(*chain, "stiffness", "model.chain.stiffness", 1.0);
     if (mass <= 0) in.fail(chain, "model.chain.mass", "must be > 0");
     if (k <= 0) in.fail(chain, "model.chain.stiffness", "must be > 0");
-    for (int i = 1; i <= n; ++i) m.dof_names.push_back("x" + std::to_string(i));
+    m.dof_names = numbered_dof_names(n);
     m.mass = mass * MatrixXd::Identity(n, n);
     m.stiffness = MatrixXd::Zero(n, n);
     for (int i = 0; i < n; ++i) {
@@ -59,14 +61,15 @@ void read_model(const CaseReader& in, const toml::value& root, CaseDefinition& c
       in.fail(chain, "model.chain", "cannot be combined with M, K or dofs");
     return;
   }
-  m.dof_names = in.strings(in.require(model, "dofs", "model.dofs"), "model.dofs");
-  const int n = static_cast<int>(m.dof_names.size());
-  if (n == 0) in.fail(&model.at("dofs"), "model.dofs", "needs at least one dof name");
-  std::set<std::string> seen;
-  for (const auto& name : m.dof_names)
-    if (!seen.insert(name).second) in.fail(&model.at("dofs"), "model.dofs", "dof name '" + name + "' appears twice");
+  const toml::value& dofs = in.require(model, "dofs", "model.dofs");
+  // `dofs = N`: names x1 .. xN, as the chain's; generated once M and K are known to be N x N.
+  const bool counted = dofs.is_integer();
+  if (counted && in.integer(dofs, "model.dofs") < 1) in.fail(&dofs, "model.dofs", "must be >= 1 (the number of dofs, named x1 .. xN)");
+  if (!counted) m.dof_names = read_dof_names(in, dofs, "model.dofs");
+  const int n = counted ? in.integer(dofs, "model.dofs") : static_cast<int>(m.dof_names.size());
   m.mass = in.matrix(in.require(model, "M", "model.M"), "model.M", n);
   m.stiffness = in.matrix(in.require(model, "K", "model.K"), "model.K", n);
+  if (counted) m.dof_names = numbered_dof_names(n);
 }
 
 void read_damping(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
@@ -504,6 +507,8 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   }
   CaseReader in(path);
   if (!root.is_table()) throw CaseError(path + ": expected a TOML table at the top level");
+  // Before the overrides, so that `--set elements[i]...` addresses element i of the expanded list.
+  expand_element_templates(in, root);
   apply_overrides(in, root, overrides);
   in.check_keys(root, "", {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs", "study"});
   CaseDefinition c;

@@ -1,0 +1,22 @@
+#pragma once
+// [model] dofs: the names of the model's dofs, as a list, as a count N (x1 .. xN) or read from a
+// file ({ file = "names.txt" }: one name per line; or the summary.json of `hbtrack reduce`).
+#include <string>
+#include <vector>
+
+#include "case_reader.hpp"
+
+namespace hbtrack {
+
+// A names file (or a summary.json) larger than this is refused: at 16 MiB it already names a
+// model whose dense matrices would not fit in memory.
+inline constexpr std::size_t kMaxDofNamesFileBytes = std::size_t{16} << 20;
+
+// "x1" .. "xN": the names of `dofs = N` and of the chain model.
+std::vector<std::string> numbered_dof_names(int n);
+
+// The names a `dofs` list or `{ file = ... }` table gives, checked non-empty and unique; `field`
+// is "model.dofs". An integer `dofs` is the caller's (its names follow the matrices' size).
+std::vector<std::string> read_dof_names(const CaseReader& in, const toml::value& dofs, const std::string& field);
+
+}  // namespace hbtrack
