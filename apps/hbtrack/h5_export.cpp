@@ -203,20 +203,15 @@ class PendingH5File {
 }  // namespace
 
 std::vector<std::string> export_result_folder_h5(const std::string& dir, const std::string& h5_path) {
-  namespace fs = std::filesystem;
-  if (!fs::is_directory(dir)) throw CaseError(dir + ": not a result folder (no such directory)");
-  const json summary = read_summary(dir);
-  std::vector<fs::path> tables;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".csv") tables.push_back(entry.path());
-  std::sort(tables.begin(), tables.end());
+  const ResultFolderContents contents = list_result_folder(dir);
+  const json& summary = contents.summary;
 
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // our one-line errors, not HDF5's stack on stderr
   PendingH5File file(h5_path + ".tmp", h5_path);
   std::vector<std::string> written;
-  for (const fs::path& p : tables) {
-    const std::string name = dataset_name(p.stem().string());
-    write_table(file.get(), name, read_csv_table(p.string()));
+  for (const std::string& table : contents.tables) {
+    const std::string name = dataset_name(std::filesystem::path(table).stem().string());
+    write_table(file.get(), name, read_csv_table(table));
     written.push_back(name);
   }
   if (summary.contains("special_points") && summary["special_points"].is_array() && !summary["special_points"].empty()) {

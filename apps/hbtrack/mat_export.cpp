@@ -173,19 +173,14 @@ std::string matlab_name(const std::string& column) {
 }
 
 std::vector<std::string> export_result_folder(const std::string& dir, const std::string& mat_path) {
-  namespace fs = std::filesystem;
-  if (!fs::is_directory(dir)) throw CaseError(dir + ": not a result folder (no such directory)");
-  const json summary = read_summary(dir);
-  std::vector<fs::path> tables;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".csv") tables.push_back(entry.path());
-  std::sort(tables.begin(), tables.end());
+  const ResultFolderContents contents = list_result_folder(dir);
+  const json& summary = contents.summary;
 
   PendingMatFile file(mat_path + ".matio", mat_path);
   std::vector<std::string> written;
-  for (const fs::path& p : tables) {
-    const std::string name = matlab_name(p.stem().string());
-    file.write(table_struct(name, read_csv_table(p.string())), name);
+  for (const std::string& table : contents.tables) {
+    const std::string name = matlab_name(std::filesystem::path(table).stem().string());
+    file.write(table_struct(name, read_csv_table(table)), name);
     written.push_back(name);
   }
   if (summary.contains("special_points") && summary["special_points"].is_array() && !summary["special_points"].empty()) {

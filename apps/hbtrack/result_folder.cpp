@@ -1,8 +1,10 @@
 #include "result_folder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -57,6 +59,16 @@ CsvTable read_csv_table(const std::string& path) {
     t.rows.push_back(std::move(row));
   }
   return t;
+}
+
+ResultFolderContents list_result_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(dir)) throw CaseError(dir + ": not a result folder (no such directory)");
+  ResultFolderContents contents{read_summary(dir), {}};
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".csv") contents.tables.push_back(entry.path().string());
+  std::sort(contents.tables.begin(), contents.tables.end());
+  return contents;
 }
 
 nlohmann::json read_summary(const std::string& dir) {

@@ -22,6 +22,14 @@ CsvTable read_csv_table(const std::string& path);
 
 nlohmann::json read_summary(const std::string& dir);
 
+// What an export writes of a result folder: its summary and its CSV tables (sorted by name).
+// CaseError when `dir` is not a folder or has no readable summary.json.
+struct ResultFolderContents {
+  nlohmann::json summary;
+  std::vector<std::string> tables;
+};
+ResultFolderContents list_result_folder(const std::string& dir);
+
 // Row `point` (0-based, as in branch.csv) of a table whose columns are omega, x0, x1, ...
 struct HbmState {
   double omega = 0;
