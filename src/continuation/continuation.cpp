@@ -257,6 +257,8 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     int iterations = 0;
     const int chords_before = s.chord_iterations;
     const bool converged = s.correct(y, x, direction_vec, ds, hypersphere, options, iterations);
+    // The sign of the bordered determinant at the last point: test_values stores it as the BP
+    // test function, values[1].
     const int det_sign = static_cast<int>(previous.values[1]);
     Tangent tan_new;
     // On a piecewise smooth branch a corrector fails where the branch turns by more than 90
