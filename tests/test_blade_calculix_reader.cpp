@@ -1,6 +1,6 @@
 // The CalculiX matrix-storage reader (.sti/.mas/.dof): small handwritten files, malformed files
 // with their one-line errors, and, when ccx is installed, real CalculiX output of a blade mesh
-// against hbtrack's own hex20 assembly.
+// against hbtrack's own hex20 assembly; the node coordinates of an input deck (*NODE, *INCLUDE).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 
+#include "hbtrack/io/calculix_input_nodes.hpp"
 #include "hbtrack/io/calculix_reader.hpp"
 #include "hbtrack/model/blade_generator.hpp"
 
@@ -113,6 +114,52 @@ TEST_F(CalculixReader, MalformedFilesGiveOneLineErrors) {
     expect_error([&] { read_calculix_dof_map(path); }, path, c.line, c.phrase);
   }
   expect_error([&] { read_calculix_dof_map((dir_ / "missing.dof").string()); }, (dir_ / "missing.dof").string(), 0, "cannot open");
+}
+
+// A deck as meshers write it: comments, keywords in any case, NSET parameters, a trailing comma,
+// a coordinate left out (0 for ccx), other keywords' data lines (elements, *NODE PRINT) skipped,
+// and an included mesh file, read from beside the including deck.
+TEST_F(CalculixReader, ReadsTheNodesOfAnInputDeckAndItsIncludes) {
+  write("mesh.msh", "** nodes of the tip\n*node, nset=TIP\n 7, 1.5, -2.0e-1, +3\n8, 4.0, 5.0,\n");
+  const std::string deck = write("job.inp",
+                                 "*HEADING\nblade\n*NODE, NSET=Nall\n1, 0.0, 0.0, 0.0\n2, 1.0, 2.0\n"
+                                 "*ELEMENT, TYPE=C3D8, ELSET=E\n1, 1, 2, 7, 8, 1, 2, 7, 8\n"
+                                 "*INCLUDE, INPUT=mesh.msh\n*STEP\n*NODE PRINT, NSET=Nall\nU\n*END STEP\n");
+  const std::vector<CalculixNode> nodes = read_calculix_input_nodes(deck);
+  ASSERT_EQ(nodes.size(), 4u);
+  const std::pair<int, Eigen::Vector3d> expected[] = {
+      {1, {0.0, 0.0, 0.0}}, {2, {1.0, 2.0, 0.0}}, {7, {1.5, -0.2, 3.0}}, {8, {4.0, 5.0, 0.0}}};
+  for (size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(nodes[k].id, expected[k].first);
+    EXPECT_EQ(nodes[k].position, expected[k].second) << "node " << nodes[k].id;  // exact: the text's nearest doubles
+  }
+}
+
+TEST_F(CalculixReader, InputDeckErrorsNameTheFileTheLineAndTheRule) {
+  struct Bad {
+    std::string text;
+    int line;
+    std::string phrase;
+  };
+  const Bad cases[] = {
+      {"*NODE\n1, 0, 0, 0\n1, 1, 1, 1\n", 3, "node 1 is already defined at"},
+      {"*NODE\n0, 0, 0, 0\n", 2, "node id '0' must be an integer >= 1"},
+      {"*NODE\nA, 0, 0, 0\n", 2, "must be an integer >= 1"},
+      {"*NODE\n1, 0, nan, 0\n", 2, "coordinate y of node 1 must be a finite number"},
+      {"*NODE\n1, 0, 0, 0, 9\n", 2, "a *NODE line is 'id, x, y, z', got 5 fields"},
+      {"*NODE, SYSTEM=C\n1, 1, 0, 0\n", 1, "only rectangular coordinates"},
+      {"*NODE\n1, 1, 0, 0\n*TRANSFORM, NSET=N, TYPE=C\n0,0,0,1,0,0\n", 3, "*TRANSFORM"},
+      {"*INCLUDE\n", 1, "*INCLUDE needs INPUT=FILE"},
+      {"*HEADING\nno nodes\n", 0, "no *NODE block"},
+  };
+  for (const Bad& c : cases) {
+    const std::string path = write("bad.inp", c.text);
+    expect_error([&] { read_calculix_input_nodes(path); }, path, c.line, c.phrase);
+  }
+  const std::string self = write("self.inp", "*INCLUDE, INPUT=self.inp\n");
+  expect_error([&] { read_calculix_input_nodes(self); }, self, 1, "nested more than");
+  const std::string missing = (dir_ / "missing.inp").string();
+  expect_error([&] { read_calculix_input_nodes(missing); }, missing, 0, "cannot open");
 }
 
 // CalculiX's C3D20 (full integration) and hbtrack's hex20 share node order and quadrature: on the

@@ -130,6 +130,55 @@ TEST_F(BladeCli, MakeBladeThenReduceFromMatrixMarketMatAndCalculixGiveTheSameMod
   EXPECT_EQ(header.rfind("node,x,y,z,radius,radial_x", 0), 0u) << header;
 }
 
+// Reading coordinates from JOB.inp (no node table) gives the node table's model exactly; the
+// global frame is the cylindrical model turned back node by node: K_cyl = Q^T K_global Q with
+// Q the boundary nodes' frames (boundary_nodes.csv) and the identity on the modal dofs.
+TEST_F(BladeCli, ReduceTakesCalculixNodesFromTheDeckAndFramesInGlobalAxes) {
+  ASSERT_EQ(run("make-blade -q -o " + path("fe")).exit_code, 0);
+  const auto m = hbtrack::read_matrix_market_sparse(path("fe/M.mtx")), k = hbtrack::read_matrix_market_sparse(path("fe/K.mtx"));
+  write_calculix(path("fe/job"), m, k, node_ids_of(path("fe/nodes.csv")));
+  {
+    std::ifstream table(path("fe/nodes.csv"));
+    std::ofstream deck(path("fe/job.inp"));
+    std::string line;
+    std::getline(table, line);  // header
+    deck << "** written by the test from nodes.csv\n*NODE, NSET=NALL\n";
+    while (std::getline(table, line)) deck << line << "\n";  // node,x,y,z rows are *NODE lines as they stand
+  }
+  const std::string boundary = " --boundary-file " + path("fe/boundary.txt") + " --modes 6 -q -o ";
+  CliRun r = run("reduce --calculix " + path("fe/job") + " --nodes " + path("fe/nodes.csv") + boundary + path("rom_table"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("reduce --calculix " + path("fe/job") + boundary + path("rom_deck"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("reduce --calculix " + path("fe/job") + " --frame global" + boundary + path("rom_global"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  const auto matrix = [&](const std::string& name) { return Eigen::MatrixXd(hbtrack::read_matrix_market_sparse(path(name))); };
+  EXPECT_EQ(matrix("rom_deck/K.mtx"), matrix("rom_table/K.mtx"));
+  EXPECT_EQ(matrix("rom_deck/M.mtx"), matrix("rom_table/M.mtx"));
+  EXPECT_EQ(read_json(path("rom_deck/summary.json"))["inputs"]["nodes"], path("fe/job.inp"));
+  const json global = read_json(path("rom_global/summary.json"));
+  EXPECT_EQ(global["dof_names"][0], "n1_x");
+  EXPECT_EQ(global["dof_names"][2], "n1_z");
+  EXPECT_TRUE(global["rotation_axis"].is_null());
+
+  const Eigen::MatrixXd k_cyl = matrix("rom_table/K.mtx"), k_global = matrix("rom_global/K.mtx");
+  Eigen::MatrixXd q = Eigen::MatrixXd::Identity(k_cyl.rows(), k_cyl.cols());
+  std::ifstream frames(path("rom_table/boundary_nodes.csv"));
+  std::string line;
+  std::getline(frames, line);  // header: node,x,y,z,radius, then radial, circumferential, axial (x, y, z each)
+  for (Eigen::Index j = 0; std::getline(frames, line); ++j) {
+    std::stringstream cells(line);
+    std::vector<double> v;
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 14u);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int c = 0; c < 3; ++c) q(3 * j + c, 3 * j + axis) = v[static_cast<size_t>(5 + 3 * axis + c)];
+  }
+  // Round-off of one change of basis on entries of size max|K|.
+  EXPECT_LT((q.transpose() * k_global * q - k_cyl).cwiseAbs().maxCoeff(), 1e-11 * k_cyl.cwiseAbs().maxCoeff());
+}
+
 TEST_F(BladeCli, ReduceRejectsBadInputWithOneLineErrors) {
   ASSERT_EQ(run("make-blade -q -o " + path("fe")).exit_code, 0);
   std::ifstream boundary_list(path("fe/boundary.txt"));
@@ -150,6 +199,9 @@ TEST_F(BladeCli, ReduceRejectsBadInputWithOneLineErrors) {
       {matrices + " --boundary " + tip + " --axis 0,0", "--axis: '0,0' must be x, y, z or a nonzero direction AX,AY,AZ"},
       {matrices + " --boundary " + tip + " --axis 0,0,0", "must be x, y, z or a nonzero direction"},
       {matrices + " --boundary " + tip + " --axis x --axis-origin 0,0", "--axis-origin"},
+      {matrices + " --boundary " + tip + " --frame polar", "--frame: 'polar' must be cylindrical or global"},
+      {" --mass " + path("fe/M.mtx") + " --stiffness " + path("fe/K.mtx") + " --boundary " + tip, "--nodes is required"},
+      {" --calculix " + path("fe/nojob") + " --boundary " + tip, "nojob.inp not found"},
   };
   for (const Case& c : cases) {
     const CliRun r = run("reduce" + c.args + " -o " + path("rom"));

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/io/calculix_input_nodes.hpp"
 #include "hbtrack/io/calculix_reader.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/matrix_readers.hpp"
@@ -74,6 +75,7 @@ TEST(FuzzCorpora, MatFileInputsLoadOrGiveOneLineErrors) {
 
 TEST(FuzzCorpora, CalculixInputsLoadOrGiveOneLineErrors) {
   const int n = replay("calculix", ".sti",
-                       {[](const std::string& p) { hbtrack::read_calculix_matrix(p); }, [](const std::string& p) { hbtrack::read_calculix_dof_map(p); }});
+                       {[](const std::string& p) { hbtrack::read_calculix_matrix(p); }, [](const std::string& p) { hbtrack::read_calculix_dof_map(p); },
+                        [](const std::string& p) { hbtrack::read_calculix_input_nodes(p); }});
   EXPECT_GE(n, 3);
 }

@@ -3,9 +3,11 @@
 // fixed-interface modes. Formats and outputs: docs/reduction.md.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 
 #include "cli_common.hpp"
+#include "hbtrack/io/calculix_input_nodes.hpp"
 #include "hbtrack/io/calculix_reader.hpp"
 #include "hbtrack/io/matrix_readers.hpp"
 #include "hbtrack/io/results_writer.hpp"
@@ -25,6 +27,7 @@ struct ReduceOptions {
   std::string mass, stiffness, calculix, nodes, boundary_file, out_dir;
   std::vector<int> boundary;
   std::string axis = "x";         // x, y, z or "AX,AY,AZ": the rotation axis of the model
+  std::string frame = "cylindrical";  // the boundary dofs' directions: cylindrical (r, t, z) or global (x, y, z)
   std::vector<double> axis_origin{0.0, 0.0, 0.0};
   int modes = 12;
   int compare = 6;
@@ -98,6 +101,32 @@ Eigen::Vector3d parse_axis(const std::string& text) {
   return v;
 }
 
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The node coordinates: a node table, or the *NODE blocks of a CalculiX deck (--nodes JOB.inp,
+// or JOB.inp found beside --calculix JOB's matrices).
+std::vector<NodeRecord> read_nodes(const ReduceOptions& o) {
+  std::string inp = ends_with(o.nodes, ".inp") ? o.nodes : "";
+  if (o.nodes.empty()) {
+    if (o.calculix.empty()) throw CaseError("reduce: --nodes is required with --mass and --stiffness (a node table node,x,y,z or a CalculiX .inp)");
+    inp = o.calculix + ".inp";
+    if (!std::filesystem::exists(inp))
+      throw CaseError("reduce: --nodes not given and " + inp + " not found: give the node table or the CalculiX deck with --nodes");
+  }
+  if (inp.empty()) return read_node_table(o.nodes);
+  std::vector<CalculixNode> deck;
+  try {
+    deck = read_calculix_input_nodes(inp);
+  } catch (const std::runtime_error& e) {
+    throw CaseError(std::string("--nodes: ") + e.what());
+  }
+  std::vector<NodeRecord> nodes(deck.size());
+  for (size_t k = 0; k < deck.size(); ++k) nodes[k] = {deck[k].id, deck[k].position};
+  return nodes;
+}
+
 json to_json(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
 int run_reduce(const ReduceOptions& o) {
@@ -112,7 +141,10 @@ int run_reduce(const ReduceOptions& o) {
   const Eigen::Vector3d axis_origin(o.axis_origin[0], o.axis_origin[1], o.axis_origin[2]);
   if (!axis_origin.allFinite()) throw CaseError("--axis-origin: must be finite");
 
-  const std::vector<NodeRecord> nodes = read_node_table(o.nodes);
+  if (o.frame != "cylindrical" && o.frame != "global") throw CaseError("--frame: '" + o.frame + "' must be cylindrical or global");
+  const bool global_frame = o.frame == "global";
+  const std::vector<NodeRecord> nodes = read_nodes(o);
+  const std::string node_source = o.nodes.empty() ? o.calculix + ".inp" : o.nodes;
   const std::vector<int> boundary_ids = o.boundary.empty() ? read_node_list(o.boundary_file) : o.boundary;
   const FullModel full = read_full_model(o, nodes);
   check_square_pair(full);
@@ -125,7 +157,7 @@ int run_reduce(const ReduceOptions& o) {
   std::vector<CylindricalFrame> frames;
   for (int id : boundary_ids) {
     const auto found = node_by_id.find(id);
-    if (found == node_by_id.end()) throw CaseError(o.nodes + ": boundary node " + std::to_string(id) + " is not in the node table");
+    if (found == node_by_id.end()) throw CaseError(node_source + ": boundary node " + std::to_string(id) + " is not in the node table");
     CraigBamptonBoundaryNode b;
     for (int d = 0; d < 3; ++d) {
       const auto row = full.row_of.find({id, d});
@@ -133,12 +165,14 @@ int run_reduce(const ReduceOptions& o) {
         throw CaseError("reduce: boundary node " + std::to_string(id) + " has no free " + "xyz"[d] + " translation in the matrices");
       b.dofs[static_cast<size_t>(d)] = row->second;
     }
-    try {
-      frames.push_back(cylindrical_frame(found->second->position, axis_origin, axis));
-    } catch (const std::invalid_argument& e) {
-      throw CaseError("reduce: boundary node " + std::to_string(id) + ": " + e.what());
+    if (!global_frame) {
+      try {
+        frames.push_back(cylindrical_frame(found->second->position, axis_origin, axis));
+      } catch (const std::invalid_argument& e) {
+        throw CaseError("reduce: boundary node " + std::to_string(id) + ": " + e.what());
+      }
+      b.frame = frames.back().directions;
     }
-    b.frame = frames.back().directions;
     boundary.push_back(b);
     boundary_records.push_back(*found->second);
   }
@@ -153,6 +187,7 @@ int run_reduce(const ReduceOptions& o) {
     throw RunFailed{std::string("reduce: ") + e.what()};
   }
   const double reduce_s = seconds_since(t_reduce);
+  if (global_frame) rom.dof_names = craig_bampton_dof_names(static_cast<int>(boundary.size()), o.modes, {"_x", "_y", "_z"});
 
   const NormalModes reduced_modes = normal_modes(rom.mass, rom.stiffness);
   const auto t_full = Clock::now();
@@ -171,14 +206,18 @@ int run_reduce(const ReduceOptions& o) {
   write_matrix_market(o.out_dir + "/M.mtx", rom.mass.sparseView());
   write_matrix_market(o.out_dir + "/K.mtx", rom.stiffness.sparseView());
   write_matrix_market(o.out_dir + "/T.mtx", rom.transformation.sparseView());
-  write_boundary_nodes(o.out_dir + "/boundary_nodes.csv", boundary_records, frames);
+  if (global_frame)
+    write_node_table(o.out_dir + "/boundary_nodes.csv", boundary_records);
+  else
+    write_boundary_nodes(o.out_dir + "/boundary_nodes.csv", boundary_records, frames);
 
   json errors = json::array();
   for (int r = 0; r < compare; ++r) errors.push_back(reduced_modes.frequencies(r) / full_frequencies(r) - 1.0);
   json summary = {
       {"verb", "reduce"},
-      {"inputs", o.calculix.empty() ? json{{"mass", o.mass}, {"stiffness", o.stiffness}, {"nodes", o.nodes}}
-                                    : json{{"calculix", o.calculix}, {"nodes", o.nodes}}},
+      {"inputs", o.calculix.empty() ? json{{"mass", o.mass}, {"stiffness", o.stiffness}, {"nodes", node_source}}
+                                    : json{{"calculix", o.calculix}, {"nodes", node_source}}},
+      {"frame", o.frame},
       {"sizes",
        {{"full_dofs", full.stiffness.rows()},
         {"boundary_nodes", boundary.size()},
@@ -186,7 +225,8 @@ int run_reduce(const ReduceOptions& o) {
         {"fixed_interface_modes", o.modes},
         {"reduced_dofs", rom.mass.rows()}}},
       {"boundary_node_ids", boundary_ids},
-      {"rotation_axis", {{"origin", {axis_origin.x(), axis_origin.y(), axis_origin.z()}}, {"direction", {axis.x(), axis.y(), axis.z()}}}},
+      {"rotation_axis", global_frame ? json(nullptr)
+                                     : json{{"origin", {axis_origin.x(), axis_origin.y(), axis_origin.z()}}, {"direction", {axis.x(), axis.y(), axis.z()}}}},
       {"dof_names", rom.dof_names},
       {"natural_frequencies", to_json(reduced_modes.frequencies)},
       {"fixed_interface_frequencies", to_json(rom.fixed_interface_frequencies)},
@@ -209,10 +249,14 @@ void add_reduce_verbs(CLI::App& app, VerbList& verbs) {
   reduce->add_option("--mass", options.mass, "mass matrix: M.mtx (Matrix Market) or model.mat:M (MATLAB variable)");
   reduce->add_option("--stiffness", options.stiffness, "stiffness matrix: K.mtx or model.mat:K");
   reduce->add_option("--calculix", options.calculix, "CalculiX matrix storage: reads JOBNAME.sti, JOBNAME.mas, JOBNAME.dof");
-  reduce->add_option("--nodes", options.nodes, "node table node,x,y,z (for matrix files: rows 3k..3k+2 are node k's x, y, z)")->required();
+  reduce->add_option("--nodes", options.nodes,
+                     "node table node,x,y,z (for matrix files: rows 3k..3k+2 are node k's x, y, z) or a CalculiX deck FILE.inp "
+                     "(its *NODE blocks); with --calculix JOB, JOB.inp when omitted");
   reduce->add_option("--boundary", options.boundary, "boundary node ids, in order (n1, n2, ...)")->delimiter(',');
   reduce->add_option("--boundary-file", options.boundary_file, "file of boundary node ids, in order");
   reduce->add_option("--axis", options.axis, "rotation axis of the model, for the boundary nodes' (r, t, z) frames: x, y, z or AX,AY,AZ (default x)");
+  reduce->add_option("--frame", options.frame,
+                     "directions of the boundary dofs: cylindrical (n1_r, n1_t, n1_z about --axis, the default) or global (n1_x, n1_y, n1_z)");
   reduce->add_option("--axis-origin", options.axis_origin, "a point of the rotation axis X,Y,Z (default 0,0,0)")->delimiter(',')->expected(3);
   reduce->add_option("--modes", options.modes, "fixed-interface modes kept (default 12)");
   reduce->add_option("--compare", options.compare, "full-model modes computed to check the reduced model (default 6)");

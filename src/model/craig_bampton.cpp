@@ -28,7 +28,7 @@ Eigen::MatrixXd symmetric_part(const Eigen::MatrixXd& a) { return 0.5 * (a + a.t
 
 }  // namespace
 
-std::vector<std::string> craig_bampton_dof_names(int boundary_nodes, int modes) {
+std::vector<std::string> craig_bampton_dof_names(int boundary_nodes, int modes, const std::array<const char*, 3>& directions) {
   // Built with += : GCC 12 flags a spurious -Wrestrict on "n" + std::to_string(j) + suffix.
   auto name = [](char prefix, int number, const char* suffix) {
     std::string out(1, prefix);
@@ -38,7 +38,7 @@ std::vector<std::string> craig_bampton_dof_names(int boundary_nodes, int modes) 
   };
   std::vector<std::string> names;
   for (int j = 1; j <= boundary_nodes; ++j)
-    for (const char* direction : {"_r", "_t", "_z"}) names.push_back(name('n', j, direction));
+    for (const char* direction : directions) names.push_back(name('n', j, direction));
   for (int m = 1; m <= modes; ++m) names.push_back(name('m', m, ""));
   return names;
 }

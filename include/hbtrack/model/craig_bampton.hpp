@@ -32,6 +32,8 @@ CraigBamptonModel craig_bampton(const Eigen::SparseMatrix<double>& mass, const E
                                 const std::vector<CraigBamptonBoundaryNode>& boundary, int fixed_interface_modes);
 
 // Reduced dof names for B boundary nodes and M modes: n1_r, n1_t, n1_z, ..., m1, ...
-std::vector<std::string> craig_bampton_dof_names(int boundary_nodes, int modes);
+// `directions`: the suffixes of a boundary node's three dofs (the local r, t, z by default).
+std::vector<std::string> craig_bampton_dof_names(int boundary_nodes, int modes,
+                                                 const std::array<const char*, 3>& directions = {"_r", "_t", "_z"});
 
 }  // namespace hbtrack
