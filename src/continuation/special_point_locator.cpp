@@ -1,0 +1,54 @@
+#include "special_point_locator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hbtrack::continuation_detail {
+
+bool Locator::point_at(const VectorXd& x0, const VectorXd& t0, double arc, VectorXd& y, Tangent& tan) {
+  y = x0 + arc * t0;
+  int iterations = 0;
+  if (!s.correct(y, x0, t0, arc, false, options, iterations)) return false;
+  tan = s.tangent(t0);
+  return true;
+}
+
+double Locator::value(size_t which, const VectorXd& y, const Tangent& tan, double reference_log_det) {
+  if (which == 0) return tan.t(s.m);
+  if (which == 1) return tan.det_sign * std::exp(std::min(tan.log_det - reference_log_det, 600.0));
+  BranchPoint p{s.unknowns(y), s.parameter(y), tan.t, 0, 0};
+  return monitor->test_functions(p)[which - 2];
+}
+
+bool Locator::locate(size_t which, const VectorXd& x0, const VectorXd& t0, double f0, const VectorXd& x1, double f1,
+                     double reference_log_det, VectorXd& y_out, Tangent& tan_out) {
+  double a = 0, fa = f0, b = t0.dot(x1 - x0), fb = f1;
+  const double span = b;
+  int side = 0;
+  for (int it = 0; it < 60; ++it) {
+    double c = b - fb * (b - a) / (fb - fa);
+    // Near the zero the test function is roundoff, and the secant may leave the bracket:
+    // bisect instead.
+    if (!(c > a && c < b)) c = 0.5 * (a + b);
+    VectorXd y;
+    Tangent tan;
+    if (!point_at(x0, t0, c, y, tan)) return false;
+    const double fc = value(which, y, tan, reference_log_det);
+    y_out = y;
+    tan_out = tan;
+    if (fc == 0.0 || std::abs(b - a) <= 1e-12 * span) return true;
+    if ((fc > 0) == (fb > 0)) {
+      b = c, fb = fc;
+      if (side == -1) fa *= 0.5;  // Illinois: halve the stale end so it cannot stall
+      side = -1;
+    } else {
+      a = c, fa = fc;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    }
+    if (std::abs(b - a) <= 1e-12 * span) return true;
+  }
+  return false;
+}
+
+}  // namespace hbtrack::continuation_detail
