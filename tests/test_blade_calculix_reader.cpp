@@ -12,6 +12,7 @@
 #include "hbtrack/io/calculix_input_nodes.hpp"
 #include "hbtrack/io/calculix_reader.hpp"
 #include "hbtrack/model/blade_generator.hpp"
+#include "hbtrack/model/calculix_deck.hpp"
 
 namespace {
 
@@ -170,26 +171,15 @@ TEST_F(CalculixReader, RealCalculixOutputMatchesHbtrackAssembly) {
   g.span_elements = 2;
   const BladeModel blade = generate_blade(g);
   const SolidMesh& mesh = blade.grid.mesh();
-  {
-    std::ofstream inp(dir_ / "blade.inp");
-    inp.precision(14);  // ccx reads at most 20 characters per field
-    inp << "*NODE\n";
-    for (int n = 0; n < mesh.node_count(); ++n) {
-      const auto& p = mesh.nodes[static_cast<size_t>(n)];
-      inp << n + 1 << ", " << p.x() << ", " << p.y() << ", " << p.z() << "\n";
-    }
-    inp << "*ELEMENT, TYPE=C3D20, ELSET=EALL\n";
-    for (size_t e = 0; e < mesh.elements.size(); ++e) {
-      inp << e + 1;
-      for (size_t a = 0; a < mesh.elements[e].size(); ++a) inp << (a == 15 ? ",\n" : ", ") << mesh.elements[e][a] + 1;  // 16 entries per line at most
-      inp << "\n";
-    }
-    inp << "*BOUNDARY\n";
-    for (int n = 0; n < mesh.node_count(); ++n)
-      if (blade.dofs.dof(n, 0) < 0) inp << n + 1 << ", 1, 3\n";
-    inp << "*MATERIAL, NAME=TA6V\n*ELASTIC\n108e9, 0.34\n*DENSITY\n4400.\n*SOLID SECTION, ELSET=EALL, MATERIAL=TA6V\n";
-    inp << "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n";
-  }
+  std::vector<int> clamped;
+  for (int n = 0; n < mesh.node_count(); ++n)
+    if (blade.dofs.dof(n, 0) < 0) clamped.push_back(n);
+  std::ofstream(dir_ / "blade.inp") << calculix_deck(mesh, clamped, g.material, kCalculixMatrixStorageStep);
+  // The deck's nodes read back are the mesh's, to the 14 digits written.
+  const std::vector<CalculixNode> deck_nodes = read_calculix_input_nodes((dir_ / "blade.inp").string());
+  ASSERT_EQ(static_cast<int>(deck_nodes.size()), mesh.node_count());
+  for (int n = 0; n < mesh.node_count(); ++n)
+    EXPECT_LT((deck_nodes[static_cast<size_t>(n)].position - mesh.nodes[static_cast<size_t>(n)]).norm(), 1e-13) << "node " << n + 1;
   const std::string command = "cd " + dir_.string() + " && ccx blade > ccx.log 2>&1";
   if (std::system(command.c_str()) != 0) {
     std::stringstream log;

@@ -179,6 +179,28 @@ TEST_F(BladeCli, ReduceTakesCalculixNodesFromTheDeckAndFramesInGlobalAxes) {
   EXPECT_LT((q.transpose() * k_global * q - k_cyl).cwiseAbs().maxCoeff(), 1e-11 * k_cyl.cwiseAbs().maxCoeff());
 }
 
+// The CalculiX round trip a user makes: make-blade --calculix writes the deck, ccx writes the
+// matrices, reduce reads them and the deck's coordinates. Same reduced model as from hbtrack's own
+// matrices up to ccx's 14 significant digits (matrices equal to 1e-10 of their largest entry, see
+// the reader test), which move the reduced frequencies by 3e-9 to 8e-9 here, the bending modes
+// most (their modal stiffness is far below the largest entry). 1e-6 keeps that apart from a wrong
+// dof map, frame or coordinate, which moves them by percents.
+TEST_F(BladeCli, ReduceFromCalculixOwnOutputOfTheMakeBladeDeck) {
+  if (std::system("command -v ccx > /dev/null 2>&1") != 0) GTEST_SKIP() << "ccx (calculix-ccx) not installed";
+  ASSERT_EQ(run("make-blade -q --calculix -o " + path("fe")).exit_code, 0);
+  ASSERT_EQ(std::system(("cd " + path("fe") + " && ccx blade > ccx.log 2>&1").c_str()), 0) << "ccx failed, see " << path("fe/ccx.log");
+  const std::string boundary = " --boundary-file " + path("fe/boundary.txt") + " --modes 6 -q -o ";
+  CliRun r = run("reduce --calculix " + path("fe/blade") + boundary + path("rom_ccx"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run("reduce --mass " + path("fe/M.mtx") + " --stiffness " + path("fe/K.mtx") + " --nodes " + path("fe/nodes.csv") + boundary + path("rom_own"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json ccx = read_json(path("rom_ccx/summary.json")), own = read_json(path("rom_own/summary.json"));
+  EXPECT_EQ(ccx["inputs"]["nodes"], path("fe/blade.inp"));
+  ASSERT_EQ(ccx["natural_frequencies"].size(), own["natural_frequencies"].size());
+  for (size_t k = 0; k < own["natural_frequencies"].size(); ++k)
+    EXPECT_NEAR(ccx["natural_frequencies"][k].get<double>() / own["natural_frequencies"][k].get<double>(), 1.0, 1e-6) << "mode " << k + 1;
+}
+
 TEST_F(BladeCli, ReduceRejectsBadInputWithOneLineErrors) {
   ASSERT_EQ(run("make-blade -q -o " + path("fe")).exit_code, 0);
   std::ifstream boundary_list(path("fe/boundary.txt"));

@@ -2,6 +2,7 @@
 // M.mtx, K.mtx, nodes.csv, boundary.txt and a summary with its lowest modes named (1B, 2B, 1T,
 // ...). Either the parametric plate (hbtrack/model/blade_generator.hpp) or, with --geometry, a
 // blade meshed from published stream-surface sections (data/rotor67/sections.csv: NASA rotor 67).
+// With --calculix also the same mesh as a CalculiX deck, blade.inp.
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "hbtrack/io/results_writer.hpp"
 #include "hbtrack/model/blade_generator.hpp"
 #include "hbtrack/model/blade_mode_classifier.hpp"
+#include "hbtrack/model/calculix_deck.hpp"
 #include "hbtrack/model/section_blade.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
 #include "node_table.hpp"
@@ -31,6 +33,7 @@ struct MakeBladeOptions {
   int refinement = 1;
   double rim_depth = -1;  // m; < 0: the section blade's default
   int modes = 6;
+  bool calculix = false;  // also write blade.inp
   bool quiet = false;
 };
 
@@ -78,12 +81,14 @@ int run_make_blade(const MakeBladeOptions& o) {
   std::optional<BladeModel> parametric_blade;
   std::optional<SectionBlade> section_blade;
   const BladeMesh* blade = nullptr;
+  IsotropicMaterial material;
   if (o.geometry.empty()) {
     if (o.rim_depth >= 0) throw CaseError("--rim-depth: only with --geometry (the parametric blade is clamped at its root)");
     const BladeGeometry parametric;
     parametric_blade.emplace(generate_blade(parametric, o.refinement));
     blade = &*parametric_blade;
     geometry = parametric_geometry_json(parametric);
+    material = parametric.material;
   } else {
     SectionBladeOptions options;
     options.refinement = o.refinement;
@@ -92,6 +97,7 @@ int run_make_blade(const MakeBladeOptions& o) {
     section_blade.emplace(generate_section_blade(sections, options));
     blade = &*section_blade;
     geometry = section_geometry_json(o.geometry, options, *section_blade);
+    material = options.material;
   }
   const AssembledMatrices matrices = assemble_blade(*blade);
   NormalModes modes;
@@ -112,6 +118,12 @@ int run_make_blade(const MakeBladeOptions& o) {
   write_matrix_market(o.out_dir + "/K.mtx", matrices.stiffness);
   write_node_table(o.out_dir + "/nodes.csv", free_nodes);
   write_node_list(o.out_dir + "/boundary.txt", boundary_ids, "tip nodes at mid-thickness, leading edge (n1) to trailing edge (n9)");
+  if (o.calculix) {
+    std::vector<int> clamped;
+    for (int n = 0; n < blade->grid.mesh().node_count(); ++n)
+      if (blade->dofs.dof(n, 0) < 0) clamped.push_back(n);
+    write_file_atomically(o.out_dir + "/blade.inp", calculix_deck(blade->grid.mesh(), clamped, material, kCalculixMatrixStorageStep));
+  }
 
   json frequencies = json::array(), types = json::array(), paper = json::array(), tip_radii = json::array();
   for (Eigen::Index r = 0; r < modes.frequencies.size(); ++r) {
@@ -155,6 +167,8 @@ void add_make_blade_verbs(CLI::App& app, VerbList& verbs) {
   make->add_option("--rim-depth", options.rim_depth,
                    "with --geometry: depth (m) of the disk-rim sector under the hub, clamped at its bottom; 0 clamps the hub section");
   make->add_option("--modes", options.modes, "lowest modes computed and named (default 6)");
+  make->add_flag("--calculix", options.calculix,
+                 "also write the mesh as a CalculiX deck, blade.inp, whose step writes the matrices `reduce --calculix DIR/blade` reads");
   make->add_flag("-q,--quiet", options.quiet, "no closing report");
   verbs.push_back({make, [] { return run_make_blade(options); }});
 }
