@@ -76,7 +76,7 @@ CraigBamptonModel craig_bampton(const SparseMatrix& mass, const SparseMatrix& st
   const SparseMatrix k_ib = block(stiffness, interior_index, interior_dofs, boundary_index, boundary_dofs);
 
   // Constraint modes: interior response to a unit displacement of each boundary dof, Psi = -K_ii^-1 K_ib.
-  Eigen::SimplicialLDLT<SparseMatrix> k_ii_factor(k_ii);
+  SparseLdlt k_ii_factor(k_ii);
   if (k_ii_factor.info() != Eigen::Success || (k_ii_factor.vectorD().array() <= 0.0).any())
     throw std::runtime_error("Craig-Bampton: K_ii is not positive definite (the boundary and constraints do not fix the rigid-body motion)");
   const Eigen::MatrixXd constraint_modes = -k_ii_factor.solve(Eigen::MatrixXd(k_ib));
@@ -84,7 +84,7 @@ CraigBamptonModel craig_bampton(const SparseMatrix& mass, const SparseMatrix& st
   CraigBamptonModel out;
   Eigen::MatrixXd fixed_modes(interior_dofs, fixed_interface_modes);
   if (fixed_interface_modes > 0) {
-    const NormalModes modes = lowest_sparse_modes(k_ii, m_ii, fixed_interface_modes);
+    const NormalModes modes = lowest_sparse_modes(k_ii_factor, k_ii, m_ii, fixed_interface_modes);
     fixed_modes = modes.shapes;
     out.fixed_interface_frequencies = modes.frequencies;
   }

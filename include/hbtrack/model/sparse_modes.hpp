@@ -2,6 +2,7 @@
 // The lowest undamped modes of a large sparse model, K phi = w^2 M phi, by a shift-invert Lanczos
 // iteration (Spectra) on one sparse LDL^T factorisation of K - sigma M.
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 
 #include "hbtrack/model/damping.hpp"
 
@@ -13,5 +14,10 @@ namespace hbtrack {
 // solved densely. Throws std::runtime_error when the factorisation or the iteration fails.
 NormalModes lowest_sparse_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass, int count,
                                 double shift = 0.0);
+
+using SparseLdlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+// The same at shift 0 with a factorisation of K the caller already holds (one LDL^T fewer).
+NormalModes lowest_sparse_modes(const SparseLdlt& stiffness_factor, const Eigen::SparseMatrix<double>& stiffness,
+                                const Eigen::SparseMatrix<double>& mass, int count);
 
 }  // namespace hbtrack
