@@ -21,6 +21,7 @@
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/io/results_writer.hpp"
+#include "python_package.hpp"
 #include "result_folder.hpp"
 #include "study_branches.hpp"
 #include "study_comparisons.hpp"
@@ -492,9 +493,16 @@ class Study {
     stage_ = kFigures;
     if (!o_.common.quiet) std::fprintf(stderr, "study: stage %d of %d, %s: drawing\n", stage_ + 1, int{kStages}, kStageNames[stage_]);
     ensure_directory(dir_ + "/figures");
+    summary_["figures"] = json::array();
     std::vector<std::string> args{dir_};
     if (!o_.units.empty()) args.insert(args.end(), {"--units", o_.units});
-    const int code = run_child(python_script_task("plot_study.py", args, dir_ + "/figures/log.txt"));
+    int code = -1;
+    try {
+      code = run_child(python_module_task("hbtrack.study_figures", args, dir_ + "/figures/log.txt"));
+    } catch (const RunFailed& no_package) {
+      if (!o_.common.quiet) std::fprintf(stderr, "study: no figures: %s\n", no_package.reason.c_str());
+      return;
+    }
     json made = json::array();
     if (code == 0) {
       std::vector<std::string> files;

@@ -89,6 +89,9 @@ def test_hbtrack_plot_verb(duffing_frc_cli, tmp_path):
     done = subprocess.run([cli_path(), "plot", duffing_frc_cli["folder"], "-o", str(tmp_path)], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert sorted(os.listdir(tmp_path)) == ["fourier.pdf", "fourier.png", "harmonics.pdf", "harmonics.png", "nfrc.pdf", "nfrc.png"]
+    assert sorted(done.stdout.split()) == sorted(str(tmp_path / f) for f in os.listdir(tmp_path))  # the files written, listed
+    quiet = subprocess.run([cli_path(), "plot", duffing_frc_cli["folder"], "-o", str(tmp_path / "q"), "-q"], capture_output=True, text=True)
+    assert quiet.returncode == 0 and quiet.stdout == "" and len(os.listdir(tmp_path / "q")) == 6, quiet.stderr
     refused = subprocess.run([cli_path(), "plot", ROOT], capture_output=True, text=True)
     assert refused.returncode == 2 and "no summary.json" in refused.stderr
 
