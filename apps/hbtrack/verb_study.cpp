@@ -12,6 +12,8 @@
 //   simulate_isola/       time integration from the stable isola point of largest output
 //   converged/            with [study] convergence: the NFRC and tracking curves at more H, N
 //   figures/, index.md    the figures and a page with the numbers (study_report.cpp)
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,6 +25,7 @@
 #include "hbtrack/io/results_writer.hpp"
 #include "python_package.hpp"
 #include "result_folder.hpp"
+#include "step_progress.hpp"
 #include "study_branches.hpp"
 #include "study_comparisons.hpp"
 #include "study_curves.hpp"
@@ -128,6 +131,8 @@ class Study {
   bool run_steps(const std::vector<Step>& steps) {
     if (steps.empty()) return true;
     if (interrupted()) return stop("interrupted");
+    // On a terminal the steps' progress shows on the study's line (step_progress.hpp).
+    StepProgressRelay relay(!o_.common.quiet && isatty(STDERR_FILENO));
     std::vector<ChildTask> tasks;
     std::vector<size_t> todo;  // steps[todo[k]] is tasks[k]
     std::vector<int> codes(steps.size(), 0);
@@ -148,6 +153,10 @@ class Study {
       std::vector<std::string> args = s.args;
       for (const std::string& set : o_.common.sets) args.insert(args.end(), {"--set", set});
       args.insert(args.end(), {"-q", "-o", folder});
+      if (relay.enabled()) {
+        args.insert(args.end(), {"--progress-file", folder + "/progress.txt"});
+        relay.watch(s.folder, folder + "/progress.txt");
+      }
       ensure_directory(folder);
       tasks.push_back(hbtrack_task(args, folder + "/log.txt"));
       todo.push_back(i);
@@ -162,8 +171,12 @@ class Study {
     const std::vector<int> ran = runner_.run(tasks, [&](size_t k, int code, double seconds) {
       const Step& s = steps[todo[k]];
       ++ended;
-      if (!o_.common.quiet)
-        std::fprintf(stderr, "study:   %-26s exit %d, %.1f s (step %zu of %zu)\n", s.folder.c_str(), code, seconds, ended, todo.size());
+      relay.forget(s.folder);
+      if (!o_.common.quiet) {
+        char line[256];
+        std::snprintf(line, sizeof line, "study:   %-26s exit %d, %.1f s (step %zu of %zu)", s.folder.c_str(), code, seconds, ended, todo.size());
+        relay.say(line);
+      }
       summary_["steps"].push_back({{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}});
       save();
     });
