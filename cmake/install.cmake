@@ -21,7 +21,15 @@ if(HBTRACK_PYTHON)
   install(TARGETS _hbtrack LIBRARY DESTINATION ${HBTRACK_PYTHON_INSTALL_DIR}/hbtrack)
   install(DIRECTORY python/hbtrack/ DESTINATION ${HBTRACK_PYTHON_INSTALL_DIR}/hbtrack
           FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
+  # The installed tool finds this package from its own bin folder, so that a moved or copied
+  # prefix keeps working (apps/hbtrack/python_package.cpp).
+  if(IS_ABSOLUTE "${HBTRACK_PYTHON_INSTALL_DIR}")
+    set(HBTRACK_PYTHON_FROM_BIN "${HBTRACK_PYTHON_INSTALL_DIR}")
+  else()
+    file(RELATIVE_PATH HBTRACK_PYTHON_FROM_BIN /prefix/${CMAKE_INSTALL_BINDIR} /prefix/${HBTRACK_PYTHON_INSTALL_DIR})
+  endif()
 endif()
+set_property(SOURCE apps/hbtrack/python_package.cpp APPEND PROPERTY COMPILE_DEFINITIONS HBTRACK_PYTHON_FROM_BIN="${HBTRACK_PYTHON_FROM_BIN}")
 
 if(HBTRACK_BUILD_TESTS AND NOT HBTRACK_SANITIZE)
   # Installs this build tree (no rebuild) into a temporary prefix, builds examples/consumer

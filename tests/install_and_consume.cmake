@@ -2,7 +2,9 @@
 # into PREFIX (nothing is rebuilt), then what a user of the installed hbtrack does:
 #   1. configures and builds examples/consumer with find_package(hbtrack) and runs it on Duffing;
 #   2. runs PREFIX/bin/hbtrack;
-#   3. imports the installed Python package with matplotlib made unimportable, then computes.
+#   3. imports the installed Python package with matplotlib made unimportable, then computes;
+#   4. copies the tool and the Python package to another prefix and draws a figure there with
+#      `hbtrack plot`, in an environment that names neither the source nor the build tree.
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0)
@@ -61,4 +63,28 @@ print("python: ok", len(result["branch"]["omega"]), "points")
 ]=])
   run(${PYTHON} -I -c "${script}" ${PREFIX}/${PYTHON_DIR} ${SOURCE_DIR}/examples/duffing.toml)
   message(STATUS "${last_output}")
+endif()
+
+if(PYTHON AND NOT IS_ABSOLUTE "${PYTHON_DIR}")
+  # The tool finds the package relative to itself (apps/hbtrack/python_package.cpp): a copied
+  # prefix draws with its own copy. Python caches the bytecode of what it imports beside it, so
+  # the copy's __pycache__ shows which package drew.
+  set(moved ${PREFIX}-moved)
+  file(REMOVE_RECURSE ${moved})
+  file(COPY ${PREFIX}/bin DESTINATION ${moved})
+  get_filename_component(package_parent ${moved}/${PYTHON_DIR} ABSOLUTE)
+  file(COPY ${PREFIX}/${PYTHON_DIR}/hbtrack DESTINATION ${package_parent} PATTERN "__pycache__" EXCLUDE)
+  set(clean_env ${CMAKE_COMMAND} -E env --unset=PYTHONPATH --unset=HBTRACK_PYTHON --unset=PYTHONDONTWRITEBYTECODE
+                --unset=PYTHONPYCACHEPREFIX --unset=PYTHONHOME MPLBACKEND=Agg)
+  run(${CMAKE_COMMAND} -E chdir ${moved} ${clean_env} ${moved}/bin/hbtrack frc ${SOURCE_DIR}/examples/duffing.toml -q -o ${moved}/duffing)
+  run(${CMAKE_COMMAND} -E chdir ${moved} ${clean_env} ${moved}/bin/hbtrack plot ${moved}/duffing -o ${moved}/figures)
+  if(NOT EXISTS ${moved}/figures/nfrc.png OR NOT last_output MATCHES "nfrc.png")
+    message(FATAL_ERROR "the moved prefix's hbtrack plot drew no nfrc.png: ${last_output}")
+  endif()
+  file(GLOB compiled ${package_parent}/hbtrack/__pycache__/plot.*.pyc)
+  if(NOT compiled)
+    message(FATAL_ERROR "hbtrack plot of ${moved} did not import the package copied beside it (${package_parent}/hbtrack)")
+  endif()
+  message(STATUS "moved prefix: hbtrack plot drew with ${package_parent}/hbtrack")
+  file(REMOVE_RECURSE ${moved})
 endif()

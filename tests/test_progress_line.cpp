@@ -1,5 +1,6 @@
 // The progress line of frc and track (apps/hbtrack/progress.hpp): the fraction of the range
-// covered, its text, and its silence when stderr is not a terminal. (On a terminal, frc's and
+// covered, its text, and its silence when stderr is not a terminal; the lines a step relays to
+// the study's line (step_progress.hpp). (On a terminal, frc's and
 // track's lines are read through a pseudo-terminal in python/tests/test_progress.py.)
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -9,10 +10,14 @@
 
 #include "cli_support.hpp"
 #include "progress.hpp"
+#include "step_progress.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using hbtrack::cli::Coverage;
+using hbtrack::cli::parse_relay_line;
+using hbtrack::cli::relay_line;
+using hbtrack::cli::step_progress_text;
 using hbtrack::cli::progress_text;
 using hbtrack::cli::ProgressState;
 using hbtrack::test::CliRun;
@@ -94,4 +99,37 @@ TEST(ProgressLine, TrackWritesNoProgressLineWhenStderrIsNotATerminal) {
   EXPECT_EQ(track.err.find('%'), std::string::npos) << track.err;
   EXPECT_NE(track.err.find("track: "), std::string::npos) << "the closing report still comes: " << track.err;
   fs::remove_all(dir);
+}
+
+TEST(ProgressLine, RelayLinesReadBackAndAPartLineIsRefused) {
+  ProgressState s;
+  s.index = 42;
+  s.fraction = 0.375;
+  s.elapsed_s = 12.5;
+  ProgressState back;
+  ASSERT_TRUE(parse_relay_line(relay_line(s), back)) << relay_line(s);
+  EXPECT_EQ(back.index, 42);
+  EXPECT_DOUBLE_EQ(back.fraction, 0.375);
+  EXPECT_DOUBLE_EQ(back.elapsed_s, 12.5);
+  EXPECT_FALSE(parse_relay_line("42 0.37", back)) << "a line cut short by a writer";
+  EXPECT_FALSE(parse_relay_line("42 0.375 12.5 extra", back));
+  EXPECT_FALSE(parse_relay_line("point 42", back));
+}
+
+TEST(ProgressLine, StudyShowsEachStepsLastCompleteLine) {
+  ProgressState s;
+  s.index = 7;
+  s.fraction = 0.25;
+  s.elapsed_s = 10;
+  const std::string first = relay_line(s);
+  s.index = 9;
+  s.fraction = 0.5;
+  const std::string second = relay_line(s);
+  // The writer is half-way through a third line: the second is the last complete one.
+  EXPECT_EQ(step_progress_text("nfrc", first + second + "11 0.7"), "nfrc 50.0 % ~10s left");
+  EXPECT_EQ(step_progress_text("nfrc", first), "nfrc 25.0 % ~30s left") << "10 s for a quarter: 30 s for the rest";
+  EXPECT_EQ(step_progress_text("nfrc", ""), "") << "a step that has not reported yet";
+  EXPECT_EQ(step_progress_text("nfrc", "11 0.7"), "");
+  s.fraction = -1;  // a backbone: no range
+  EXPECT_EQ(step_progress_text("backbone_mode1", relay_line(s)), "backbone_mode1 point 9");
 }

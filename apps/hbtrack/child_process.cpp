@@ -16,13 +16,6 @@ ChildTask hbtrack_task(const std::vector<std::string>& args, const std::string& 
   return {"/proc/self/exe", args, log_path};
 }
 
-ChildTask python_script_task(const std::string& script, const std::vector<std::string>& args, const std::string& log_path) {
-  // Debian's interpreter: the one whose numpy and matplotlib the install script provides.
-  std::vector<std::string> words{std::string(HBTRACK_PYTHON_DIR) + "/" + script};
-  words.insert(words.end(), args.begin(), args.end());
-  return {"/usr/bin/python3", words, log_path};
-}
-
 pid_t start_child(const ChildTask& task) {
   std::vector<std::string> words{task.program};
   words.insert(words.end(), task.args.begin(), task.args.end());

@@ -16,9 +16,8 @@ struct ChildTask {
   std::string log_path;
 };
 
-// `hbtrack ARGS...` (this same executable) and `/usr/bin/python3 python/SCRIPT ARGS...`.
+// `hbtrack ARGS...` (this same executable); python_package.hpp makes Python ones.
 ChildTask hbtrack_task(const std::vector<std::string>& args, const std::string& log_path);
-ChildTask python_script_task(const std::string& script, const std::vector<std::string>& args, const std::string& log_path);
 
 // Starts the child; its pid, or -1 when it could not be started.
 pid_t start_child(const ChildTask& task);

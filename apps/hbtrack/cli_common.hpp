@@ -33,12 +33,13 @@ struct RunFailed {
   std::string reason;
 };
 
-// Options every analysis verb takes: CASE, -o DIR, --set NAME=VALUE..., -q.
+// Options every analysis verb takes: CASE, -o DIR, --set NAME=VALUE..., -q, --progress-file.
 struct CommonOptions {
   std::string case_path;
   std::string out_dir;
   std::vector<std::string> sets;
   bool quiet = false;
+  std::string progress_file;  // where the progress goes as lines too (Progress::relay_to), "" for nowhere
 };
 void add_common_options(CLI::App* command, CommonOptions& options);
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "hbtrack/io/case_file.hpp"  // CaseError
+
 namespace hbtrack::cli {
 
 std::string duration_text(double seconds) {
@@ -55,10 +57,7 @@ std::string progress_text(const ProgressState& s) {
     line += buf;
   }
   if (s.fraction >= 0) {
-    // The pace so far, extrapolated: rough near a resonance (or a cusp), where the steps shorten.
-    const std::string left =
-        s.fraction > 0.01 && s.fraction < 1 ? "~" + duration_text(s.elapsed_s * (1 - s.fraction) / s.fraction) + " left" : "";
-    std::snprintf(buf, sizeof buf, " %5.1f %%  %-14s", 100 * s.fraction, left.c_str());
+    std::snprintf(buf, sizeof buf, " %5.1f %%  %-14s", 100 * s.fraction, time_left_text(s.fraction, s.elapsed_s).c_str());
     line += buf;
   }
   if (!s.output.empty()) {
@@ -66,6 +65,29 @@ std::string progress_text(const ProgressState& s) {
     line += buf;
   }
   return line;
+}
+
+std::string time_left_text(double fraction, double elapsed_s) {
+  // The pace so far, extrapolated: rough near a resonance (or a cusp), where the steps shorten.
+  if (!(fraction > 0.01 && fraction < 1)) return "";
+  return "~" + duration_text(elapsed_s * (1 - fraction) / fraction) + " left";
+}
+
+std::string relay_line(const ProgressState& s) {
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "%d %.6f %.3f\n", s.index, s.fraction, s.elapsed_s);
+  return buf;
+}
+
+bool parse_relay_line(const std::string& line, ProgressState& s) {
+  int index = 0, consumed = 0;
+  double fraction = 0, elapsed = 0;
+  if (std::sscanf(line.c_str(), "%d %lf %lf%n", &index, &fraction, &elapsed, &consumed) != 3) return false;
+  if (line.find_first_not_of(" \n", static_cast<size_t>(consumed)) != std::string::npos) return false;
+  s.index = index;
+  s.fraction = fraction;
+  s.elapsed_s = elapsed;
+  return true;
 }
 
 Progress::Progress(bool quiet) : enabled_(!quiet && isatty(STDERR_FILENO)) {}
@@ -81,7 +103,16 @@ Progress::Progress(bool quiet, const std::string& parameter, double lo, double h
   parameter_ = parameter;
 }
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+  if (relay_) std::fclose(relay_);
+}
+
+void Progress::relay_to(const std::string& path) {
+  if (path.empty()) return;
+  relay_ = std::fopen(path.c_str(), "a");
+  if (!relay_) throw CaseError("--progress-file: cannot open " + path + " for writing");
+}
 
 void Progress::finish() {
   if (shown_) std::fprintf(stderr, "\n");
@@ -89,7 +120,7 @@ void Progress::finish() {
 }
 
 void Progress::update(int index, double omega, const RecordedPoint& p, const std::vector<OutputDof>& outputs) {
-  if (!enabled_) return;
+  if (!enabled_ && !relay_) return;
   ProgressState s;
   s.index = index;
   s.omega = omega;
@@ -98,7 +129,7 @@ void Progress::update(int index, double omega, const RecordedPoint& p, const std
 
 void Progress::update(int index, double omega, double parameter_value, int leg, const RecordedPoint& p,
                       const std::vector<OutputDof>& outputs) {
-  if (!enabled_) return;
+  if (!enabled_ && !relay_) return;
   ProgressState s;
   s.index = index;
   s.omega = omega;
@@ -108,10 +139,16 @@ void Progress::update(int index, double omega, double parameter_value, int leg, 
 }
 
 void Progress::show(ProgressState s, double position, int leg, const RecordedPoint& p, const std::vector<OutputDof>& outputs) {
-  if (has_range_) {
-    s.fraction = coverage_.add(position, leg);
-    s.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  const auto now = std::chrono::steady_clock::now();
+  s.elapsed_s = std::chrono::duration<double>(now - t0_).count();
+  if (has_range_) s.fraction = coverage_.add(position, leg);
+  // A line per point would be thousands on a long run: a few a second are all a reader shows.
+  if (relay_ && now - last_relayed_ >= std::chrono::milliseconds(100)) {
+    std::fputs(relay_line(s).c_str(), relay_);
+    std::fflush(relay_);
+    last_relayed_ = now;
   }
+  if (!enabled_) return;
   if (!outputs.empty() && !p.outputs.empty()) {
     s.output = outputs[0].name;
     s.output_max = p.outputs[0].max;

@@ -2,8 +2,10 @@
 // The one-line progress report of a running verb on a terminal (stderr): the point, omega, the
 // tracked parameter's value, the first output's maximum and, when the verb knows the range it
 // covers, the percentage covered and the time left at the pace so far. Silent when stderr is not
-// a terminal (a log, a pipe, a batch job) or with -q.
+// a terminal (a log, a pipe, a batch job) or with -q. A --progress-file gets the updates as
+// lines whatever stderr is: `hbtrack study` shows its steps' progress from them (step_progress.hpp).
 #include <chrono>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,14 @@ struct ProgressState {
 // overwrites a longer one: "  point    42  omega 1.25  amplitude 0.8  37.5 %  ~12s left ...".
 std::string progress_text(const ProgressState& s);
 
+// "~12s left" at the pace so far; "" when too little (under 1 %) or all is done.
+std::string time_left_text(double fraction, double elapsed_s);
+
+// One update as a line of a --progress-file, "INDEX FRACTION ELAPSED_S" (fraction -1 without a
+// range), and read back: false for a line that is not one (a partly written last line).
+std::string relay_line(const ProgressState& s);
+bool parse_relay_line(const std::string& line, ProgressState& s);
+
 class Progress {
  public:
   explicit Progress(bool quiet);
@@ -71,10 +81,15 @@ class Progress {
   void update(int index, double omega, double parameter_value, int leg, const RecordedPoint& p, const std::vector<OutputDof>& outputs);
   // Ends the line, once: the warnings and the closing report that follow start on their own line.
   void finish();
+  // Also appends the updates to `path` as relay_line()s, terminal or not, quiet or not (for a
+  // parent process: hbtrack study); "" for none. Throws CaseError when it cannot be opened.
+  void relay_to(const std::string& path);
 
  private:
   void show(ProgressState s, double position, int leg, const RecordedPoint& p, const std::vector<OutputDof>& outputs);
   bool enabled_, has_range_ = false, shown_ = false;
+  std::FILE* relay_ = nullptr;
+  std::chrono::steady_clock::time_point last_relayed_{};
   Coverage coverage_;
   std::string parameter_;
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();

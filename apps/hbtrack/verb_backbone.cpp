@@ -49,6 +49,7 @@ int run_backbone(const BackboneCliOptions& o) {
   write_json_atomically(dir + "/summary.json", summary);
 
   Progress progress(o.common.quiet);
+  progress.relay_to(o.common.progress_file);
   StopRequest stop(o.time_limit);
   BackboneResult r;
   try {

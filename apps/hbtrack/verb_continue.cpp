@@ -43,6 +43,7 @@ int run_continue(const ContinueOptions& o) {
   write_json_atomically(dir + "/summary.json", summary);
 
   Progress progress(o.common.quiet);
+  progress.relay_to(o.common.progress_file);
   StopRequest stop(o.time_limit);
   const double nominal = hbm.parameters().value(parameter);
   ParameterBranchResult r;

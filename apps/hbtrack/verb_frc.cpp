@@ -104,6 +104,7 @@ int run_frc(const FrcOptions& options) {
   write_json_atomically(dir + "/summary.json", summary);
 
   Progress progress(o.quiet, c.nfrc.omega_start, c.nfrc.omega_end);
+  progress.relay_to(o.progress_file);
   StopRequest stop(options.time_limit);
   ContinuationRestart restart;
   if (resumed) restart.resume_from = &resumed->state;

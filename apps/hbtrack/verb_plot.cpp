@@ -1,15 +1,16 @@
 // `hbtrack plot DIR [DIR2 ...] [-o OUT]`: the figures of any result folder, or of several drawn
 // over each other (an NFRC, its backbone, its switched branches), made by the Python package
-// hbtrack.plot (matplotlib) from the source tree; the folder types are detected there.
+// hbtrack.plot (matplotlib; python_package.hpp says which copy of it); the folder types are
+// detected there.
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "cli_common.hpp"
+#include "python_package.hpp"
 
 namespace hbtrack::cli {
 
@@ -21,23 +22,11 @@ struct PlotOptions {
   std::string out, units, model_units, point;
   std::vector<std::string> labels;
   double zoom = -1;  // < 0: Python's default
-  bool norm = false, no_zoom = false, titles = false;
+  bool norm = false, no_zoom = false, titles = false, quiet = false;
 };
 
 int run_plot(const PlotOptions& o) {
-  // The package needs no compiled part to plot: the source folder on PYTHONPATH is enough, and
-  // it is known at build time. HBTRACK_PYTHON overrides the interpreter.
-  std::string path = HBTRACK_PYTHON_PACKAGE_DIR;
-  if (const char* existing = std::getenv("PYTHONPATH"); existing && *existing) {
-    path += ":";
-    path += existing;
-  }
-  setenv("PYTHONPATH", path.c_str(), 1);
-  setenv("MPLBACKEND", "Agg", 0);
-  const char* interpreter = std::getenv("HBTRACK_PYTHON");
-  if (!interpreter || !*interpreter) interpreter = HBTRACK_PYTHON_INTERPRETER;
-  std::vector<std::string> args{interpreter, "-m", "hbtrack.plot"};
-  args.insert(args.end(), o.dirs.begin(), o.dirs.end());
+  std::vector<std::string> args = o.dirs;
   if (!o.out.empty()) args.insert(args.end(), {"-o", o.out});
   if (!o.units.empty()) args.insert(args.end(), {"--units", o.units});
   if (!o.model_units.empty()) args.insert(args.end(), {"--model-units", o.model_units});
@@ -47,16 +36,16 @@ int run_plot(const PlotOptions& o) {
   if (o.norm) args.emplace_back("--norm");
   if (o.no_zoom) args.emplace_back("--no-zoom");
   if (o.titles) args.emplace_back("--titles");
+  if (o.quiet) args.emplace_back("--quiet");
+  ChildTask python = python_module_task("hbtrack.plot", args, "");
+  std::vector<std::string> words{python.program};
+  words.insert(words.end(), python.args.begin(), python.args.end());
   std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
+  for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
   std::fflush(nullptr);
-  execv(interpreter, argv.data());
-  std::string reason = "plot: cannot run ";
-  reason += interpreter;
-  reason += ": ";
-  reason += std::strerror(errno);
-  throw RunFailed{reason};
+  execv(python.program.c_str(), argv.data());
+  throw RunFailed{"plot: cannot run " + python.program + ": " + std::strerror(errno)};
 }
 
 void add_plot_verb(CLI::App& app, VerbList& verbs) {
@@ -76,6 +65,7 @@ void add_plot_verb(CLI::App& app, VerbList& verbs) {
   plot->add_flag("--no-zoom", options.no_zoom, "the NFRC's whole range, not zoomed on the resonance");
   plot->add_option("--point", options.point, "the Fourier figure's point: a row of branch.csv or LPk (default LP1)");
   plot->add_flag("--titles", options.titles, "titles on the figures (default none)");
+  plot->add_flag("-q,--quiet", options.quiet, "do not list the files written (errors are still reported)");
   plot->add_option("--label", options.labels, "NAME=TEXT: describe output NAME in the figures (repeatable)")->allow_extra_args(false);
   verbs.push_back({plot, [] { return run_plot(options); }});
 }

@@ -12,6 +12,8 @@
 //   simulate_isola/       time integration from the stable isola point of largest output
 //   converged/            with [study] convergence: the NFRC and tracking curves at more H, N
 //   figures/, index.md    the figures and a page with the numbers (study_report.cpp)
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -21,7 +23,9 @@
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/io/results_writer.hpp"
+#include "python_package.hpp"
 #include "result_folder.hpp"
+#include "step_progress.hpp"
 #include "study_branches.hpp"
 #include "study_comparisons.hpp"
 #include "study_curves.hpp"
@@ -127,6 +131,8 @@ class Study {
   bool run_steps(const std::vector<Step>& steps) {
     if (steps.empty()) return true;
     if (interrupted()) return stop("interrupted");
+    // On a terminal the steps' progress shows on the study's line (step_progress.hpp).
+    StepProgressRelay relay(!o_.common.quiet && isatty(STDERR_FILENO));
     std::vector<ChildTask> tasks;
     std::vector<size_t> todo;  // steps[todo[k]] is tasks[k]
     std::vector<int> codes(steps.size(), 0);
@@ -147,6 +153,10 @@ class Study {
       std::vector<std::string> args = s.args;
       for (const std::string& set : o_.common.sets) args.insert(args.end(), {"--set", set});
       args.insert(args.end(), {"-q", "-o", folder});
+      if (relay.enabled()) {
+        args.insert(args.end(), {"--progress-file", folder + "/progress.txt"});
+        relay.watch(s.folder, folder + "/progress.txt");
+      }
       ensure_directory(folder);
       tasks.push_back(hbtrack_task(args, folder + "/log.txt"));
       todo.push_back(i);
@@ -161,8 +171,12 @@ class Study {
     const std::vector<int> ran = runner_.run(tasks, [&](size_t k, int code, double seconds) {
       const Step& s = steps[todo[k]];
       ++ended;
-      if (!o_.common.quiet)
-        std::fprintf(stderr, "study:   %-26s exit %d, %.1f s (step %zu of %zu)\n", s.folder.c_str(), code, seconds, ended, todo.size());
+      relay.forget(s.folder);
+      if (!o_.common.quiet) {
+        char line[256];
+        std::snprintf(line, sizeof line, "study:   %-26s exit %d, %.1f s (step %zu of %zu)", s.folder.c_str(), code, seconds, ended, todo.size());
+        relay.say(line);
+      }
       summary_["steps"].push_back({{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}});
       save();
     });
@@ -492,9 +506,16 @@ class Study {
     stage_ = kFigures;
     if (!o_.common.quiet) std::fprintf(stderr, "study: stage %d of %d, %s: drawing\n", stage_ + 1, int{kStages}, kStageNames[stage_]);
     ensure_directory(dir_ + "/figures");
+    summary_["figures"] = json::array();
     std::vector<std::string> args{dir_};
     if (!o_.units.empty()) args.insert(args.end(), {"--units", o_.units});
-    const int code = run_child(python_script_task("plot_study.py", args, dir_ + "/figures/log.txt"));
+    int code = -1;
+    try {
+      code = run_child(python_module_task("hbtrack.study_figures", args, dir_ + "/figures/log.txt"));
+    } catch (const RunFailed& no_package) {
+      if (!o_.common.quiet) std::fprintf(stderr, "study: no figures: %s\n", no_package.reason.c_str());
+      return;
+    }
     json made = json::array();
     if (code == 0) {
       std::vector<std::string> files;

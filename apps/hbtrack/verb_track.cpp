@@ -147,6 +147,7 @@ int run_track(TrackOptions o) {
 
   const FoldScales scales = tracking_scales(hbm, c.nfrc, tracking.parameter_max - tracking.parameter_min);
   Progress progress(o.common.quiet, o.param, tracking.parameter_min, tracking.parameter_max, start_value);
+  progress.relay_to(o.common.progress_file);
   StopRequest stop(o.time_limit);
   FoldTrackingRestart restart;
   if (resumed) restart.resume_from = &resumed->state;

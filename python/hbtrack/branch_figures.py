@@ -17,6 +17,7 @@ from .label_layout import place_labels
 from .output_descriptions import output_descriptions
 from .plots import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
 from .results import output_names
+from .special_points import numbered_special_points
 
 # Zoom: the window where the response exceeds this fraction of its peak, widened by this part of
 # its width on each side; no zoom when that window already covers most of the branch.
@@ -24,31 +25,6 @@ ZOOM_FRACTION = 0.1
 ZOOM_MARGIN = 0.25
 ZOOM_USELESS = 0.7
 NORM_LABEL = r"$\Vert r(t) \Vert_\infty$"
-
-
-def numbered_special_points(special_points):
-    """The special points with a label each: per type, numbered in increasing omega.
-
-    Parameters
-    ----------
-    special_points : sequence of dict
-        summary.json's special_points (type, omega, ...).
-
-    Returns
-    -------
-    list of (label, point dict), in omega order.
-
-    Examples
-    --------
-    >>> [l for l, _ in numbered_special_points([{"type": "LP", "omega": 2.0}, {"type": "LP", "omega": 1.0}])]
-    ['LP1', 'LP2']
-    """
-    counts = {}
-    numbered = []
-    for sp in sorted(special_points, key=lambda p: p["omega"]):
-        counts[sp["type"]] = counts.get(sp["type"], 0) + 1
-        numbered.append((f"{sp['type']}{counts[sp['type']]}", sp))
-    return numbered
 
 
 def norm_of(columns, name):

@@ -16,6 +16,7 @@ import os
 import sys
 
 from .results import read_result, tracking_curve
+from .special_points import limit_point_label, numbered_limit_points
 
 
 def _load(path):
@@ -28,12 +29,13 @@ def _mm(v):
 
 
 def _limit_points(summary):
-    return [p for p in summary.get("special_points", []) if p.get("type") == "LP"]
+    """[(label, point)]: LP1, LP2, ... in omega order, as `hbtrack plot` and the paper number them."""
+    return numbered_limit_points(summary.get("special_points", []))
 
 
-def _resonance(points):
-    """The limit point of most negative leading-edge extreme: the nonlinear resonance."""
-    return min(points, key=lambda p: p.get("min_le", 0.0)) if points else None
+def _resonance(numbered):
+    """The (label, point) of most negative leading-edge extreme: the nonlinear resonance."""
+    return min(numbered, key=lambda lp: lp[1].get("min_le", 0.0)) if numbered else None
 
 
 def frequency_tables(paper, full_model, reduced):
@@ -47,11 +49,11 @@ def frequency_tables(paper, full_model, reduced):
 def nfrc_table(paper, nfrc, w1b, label):
     lps = _limit_points(nfrc)
     rows = [f"| {label} | LPs | omega (rad/s) | omega / omega_1B | min le (mm) | min te (mm) |", "|---|---|---|---|---|---|"]
-    for k, p in enumerate(lps, start=1):
-        rows.append(f"| LP{k} | | {p['omega']:.2f} | {p['omega'] / w1b:.4f} | {_mm(p['min_le'])} | {_mm(p['min_te'])} |")
-    peak = _resonance(lps)
-    if peak:
-        rows.append(f"| resonance (LP{lps.index(peak) + 1}) | {len(lps)} | {peak['omega']:.2f} | {peak['omega'] / w1b:.4f} | "
+    for label, p in lps:
+        rows.append(f"| {label} | | {p['omega']:.2f} | {p['omega'] / w1b:.4f} | {_mm(p['min_le'])} | {_mm(p['min_te'])} |")
+    if lps:
+        label, peak = _resonance(lps)
+        rows.append(f"| resonance ({label}) | {len(lps)} | {peak['omega']:.2f} | {peak['omega'] / w1b:.4f} | "
                     f"{_mm(peak['min_le'])} | {_mm(peak['min_te'])} |")
     f3 = paper["fig3"]
     rows.append(f"| paper, resonance ({f3['resonance']}) | {f3['limit_points']} | | | {_mm(f3['min_le_m'])} | {_mm(f3['min_te_m'])} |")
@@ -130,7 +132,7 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     files = []
     nfrc = read_result(os.path.join(study_dir, "nfrc"))
     # Fig. 3: the signed inward extremes of leading and trailing edge (solid: stable, dashed:
-    # unstable), limit points numbered as the tables number them (summary.json's order), their
+    # unstable), limit points numbered as the tables number them (in omega order), their
     # labels placed once the layout is final where they overlap no other text (label_layout).
     from .plots import _plot_split, _stable_masks
     fig, ax = plt.subplots(figsize=(6.5, 4))
@@ -143,10 +145,10 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     _plot_split(ax, b["omega"] / w1b, 1e3 * b["min_le"], stable, unstable, "C0", "leading edge (n1)")
     _plot_split(ax, b["omega"] / w1b, 1e3 * b["min_te"], stable, unstable, "C1", "trailing edge (n9)")
     lp_labels = []
-    for k, p in enumerate(_limit_points(nfrc["summary"]), start=1):
+    for label, p in _limit_points(nfrc["summary"]):
         for key in ("min_le", "min_te"):
             ax.plot(p["omega"] / w1b, 1e3 * p[key], "o", color="k", ms=4, zorder=5)
-        lp_labels.append((p["omega"] / w1b, 1e3 * min(p["min_le"], p["min_te"]), f"LP{k}"))
+        lp_labels.append((p["omega"] / w1b, 1e3 * min(p["min_le"], p["min_te"]), label))
     f3 = paper["fig3"]
     for value, style, label in ((f3["min_le_m"], ":", "paper, le at LP3"), (f3["min_te_m"], "-.", "paper, te at LP3")):
         ax.axhline(1e3 * value, color="C3", ls=style, lw=1, label=label)
@@ -167,7 +169,8 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
         for c in entry["curves"]:
             if "folder" in c:
                 curve = tracking_curve(read_result(os.path.join(study_dir, c["folder"])))
-                ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=f"LP{c['lp']} tracked")
+                label = limit_point_label(nfrc["summary"].get("special_points", []), c["lp"])  # c["lp"] is track's --lp
+                ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=f"{label} tracked")
         for e in entry.get("extrema", []):
             ax.plot(e["omega"] / w1b, e["value"], "v" if e["type"] == "min" else "^", color="k", ms=6)
         w_paper = paper["table2_rad_s"]["1B"]

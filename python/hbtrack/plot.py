@@ -285,6 +285,7 @@ def main(argv=None):
     parser.add_argument("--point", help="the Fourier figure's point: a row of branch.csv or LPk (default LP1)")
     parser.add_argument("--titles", action="store_true", help="titles on the figures (default none)")
     parser.add_argument("--label", action="append", default=[], metavar="NAME=TEXT", help="describe output NAME (repeatable)")
+    parser.add_argument("-q", "--quiet", action="store_true", help="do not list the files written (errors are still reported)")
     args = parser.parse_args(argv)
     try:
         files = make_figures(args.folders, args.output, args.units, args.model_units, args.titles, norm=args.norm,
@@ -292,8 +293,9 @@ def main(argv=None):
     except (ValueError, OSError, KeyError) as error:
         print(f"hbtrack plot: {error}", file=sys.stderr)
         return 2
-    for f in files:
-        print(f)
+    if not args.quiet:
+        for f in files:
+            print(f)
     return 0
 
 

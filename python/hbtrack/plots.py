@@ -13,6 +13,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from .results import output_names, tracking_curve  # noqa: E402
+from .special_points import limit_point_label  # noqa: E402
+from .view_angle import least_hidden_view  # noqa: E402
 
 OMEGA_LABEL = r"$\omega$ [rad/s]"
 MODEL_LENGTH = "model length unit"
@@ -174,11 +176,21 @@ def _extrema(track):
     return [sp for sp in track.get("special_points", []) if sp["type"] in ("min", "max")]
 
 
-def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, isolas=(), norm=False):
+def _curve_name(track, i, nfrc_special_points):
+    """"LP2 tracked" as the NFRC figure numbers its limit points (omega order) when the NFRC's
+    special points are given; else by track's --lp, "limit point 1 tracked"."""
+    lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
+    if nfrc_special_points:
+        return f"{limit_point_label(nfrc_special_points, lp)} tracked"
+    return f"limit point {lp} tracked"
+
+
+def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, isolas=(), norm=False, nfrc_special_points=None):
     """Limit-point curves in (omega, parameter, max of an output).
 
     Extrema of the parameter marked (v: min, a pair of limit points is born; ^: max, a pair
-    disappears).
+    disappears). Seen from the azimuth where the tracking curves and isolas hide each other
+    least (view_angle.least_hidden_view: no one view suits every parameter).
 
     Parameters
     ----------
@@ -194,6 +206,9 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
         Isolated branches, drawn in their own colour at their parameter value (the paper's Fig. 6).
     norm : bool, optional
         The vertical axis ||x(t)||_inf = max(|max|, |min|) rather than max.
+    nfrc_special_points : sequence of dict, optional
+        The special points of the NFRC the tracks started from: the curves are named by its
+        limit points' labels (LP1, LP2 in omega order, as its figure has them).
 
     Returns
     -------
@@ -208,10 +223,11 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
     param = _tracking_parameter(tracks[0])
     fig = plt.figure(figsize=(7, 5.5))
     ax = fig.add_subplot(projection="3d")
+    drawn = []  # the tracking curves and isolas, which the view must keep apart (view_angle.py)
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
-        lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
-        ax.plot(curve["omega"], curve[param], _response(curve, name, norm), color=f"C{i}", lw=1.4, label=f"limit point {lp} tracked")
+        drawn.append((curve["omega"], curve[param], _response(curve, name, norm)))
+        ax.plot(*drawn[-1], color=f"C{i}", lw=1.4, label=_curve_name(track, i, nfrc_special_points))
         for sp in _extrema(track):
             ax.scatter([sp["omega"]], [sp[param]], [_response(sp, name, norm)], marker="v" if sp["type"] == "min" else "^", color="k", s=30)
     for j, nfrc in enumerate(validations):
@@ -222,8 +238,9 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
     for j, isola in enumerate(isolas):
         value = isola["summary"]["options"]["parameters"][param]
         branch = isola["branch"]
-        ax.plot(branch["omega"], np.full(len(branch["omega"]), value), _response(branch, name, norm), color="C3", lw=1.1,
-                label="isolated branches" if j == 0 else None)
+        drawn.append((branch["omega"], np.full(len(branch["omega"]), value), _response(branch, name, norm)))
+        ax.plot(*drawn[-1], color="C3", lw=1.1, label="isolated branches" if j == 0 else None)
+    ax.view_init(*least_hidden_view(drawn, [ax.get_xlim3d(), ax.get_ylim3d(), ax.get_zlim3d()]))
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
     ax.set_zlabel(length_label(_response_label(name, norm), length_unit))
@@ -232,7 +249,7 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
     return fig
 
 
-def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
+def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfrc_special_points=None):
     """Limit-point curves projected on (omega, parameter).
 
     Start (o) and extrema (v min, ^ max) annotated; the limit points of the `validations` NFRCs
@@ -248,6 +265,8 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
         The model's length unit for the labels.
     at : float, optional
         A parameter value drawn as a line (isolas).
+    nfrc_special_points : sequence of dict, optional
+        As tracking_3d_figure's: the curves named LPk as the NFRC figure numbers them.
 
     Returns
     -------
@@ -264,8 +283,7 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None):
     kinds = set()
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
-        lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
-        ax.plot(curve["omega"], curve[param], color=f"C{i}", lw=1.3, label=f"limit point {lp}")
+        ax.plot(curve["omega"], curve[param], color=f"C{i}", lw=1.3, label=_curve_name(track, i, nfrc_special_points))
         start = track["summary"].get("start")
         if start:
             ax.plot([start["omega"]], [start[param]], "o", color=f"C{i}", ms=5)

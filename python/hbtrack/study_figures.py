@@ -75,8 +75,10 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
     with open(os.path.join(study_dir, "summary.json")) as f:
         summary = json.load(f)
     figures = {}
+    nominal_points = None  # the curves are named by the nominal NFRC's limit points, as its figure has them
     if os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
         figures.update(_nfrc_figures(study_dir, summary, length_unit, read))
+        nominal_points = read_result(os.path.join(study_dir, "nfrc"))["special_points"]
     for entry in summary.get("tracking", []):
         param = entry["parameter"]
         tracks = [read(os.path.join(study_dir, c["folder"])) for c in entry["curves"] if "folder" in c]
@@ -89,9 +91,11 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
                 result = read(os.path.join(study_dir, branch["folder"]))
                 result["summary"].setdefault("options", {}).setdefault("parameters", {})[param] = v["value"]
                 isolas.append(result)
-        figures[f"tracking_{param}"] = plots.tracking_plane_figure(tracks, validations=nfrcs, length_unit=length_unit)
+        figures[f"tracking_{param}"] = plots.tracking_plane_figure(tracks, validations=nfrcs, length_unit=length_unit,
+                                                                   nfrc_special_points=nominal_points)
         # The paper's Figs 6 and 11: ||r(t)||_inf, which an inward (negative) extreme dominates on a blade
-        figures[f"tracking_3d_{param}"] = plots.tracking_3d_figure(tracks, validations=nfrcs, length_unit=length_unit, isolas=isolas, norm=True)
+        figures[f"tracking_3d_{param}"] = plots.tracking_3d_figure(tracks, validations=nfrcs, length_unit=length_unit, isolas=isolas,
+                                                                   norm=True, nfrc_special_points=nominal_points)
         if nfrcs or isolas:
             figures[f"validation_{param}"] = plots.validation_figure(tracks, nfrcs + isolas, length_unit=length_unit, norm=True)
     if summary.get("tracking") and os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):

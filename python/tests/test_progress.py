@@ -1,7 +1,8 @@
 """Progress of `frc`: the callback of hbtrack.frc, and the CLI's line on a terminal (and its
-silence in a log)."""
+silence in a log); `study` relaying its steps' progress to its own line."""
 import os
 import pty
+import re
 import subprocess
 
 import numpy as np
@@ -32,10 +33,11 @@ def test_progress_callback_sees_every_point_and_can_stop(duffing_case):
         hbtrack.frc(duffing_case, progress=3)
 
 
-def run_on_a_terminal(*args):
-    """`hbtrack ARGS` with stderr a pseudo-terminal: its exit code and the updates of its line."""
+def run_on_a_terminal(*args, env=None):
+    """`hbtrack ARGS` with stderr a pseudo-terminal: its exit code and the updates of its line,
+    read as they come (a full terminal buffer would block a long run)."""
     leader, follower = pty.openpty()
-    done = subprocess.run([cli_path(), *args], stdout=subprocess.DEVNULL, stderr=follower, timeout=120)
+    process = subprocess.Popen([cli_path(), *args], stdout=subprocess.DEVNULL, stderr=follower, env=env)
     os.close(follower)
     text = b""
     while True:
@@ -47,7 +49,7 @@ def run_on_a_terminal(*args):
             break
         text += chunk
     os.close(leader)
-    return done.returncode, text.decode().split("\r")
+    return process.wait(timeout=300), text.decode().split("\r")
 
 
 def test_cli_progress_line_on_a_terminal_only(tmp_path):
@@ -74,3 +76,31 @@ def test_track_progress_line_covers_the_parameter_range_on_a_terminal_only(duffi
     assert any(" left" in u for u in updates), updates
     logged = subprocess.run([cli_path(), *track, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=120)
     assert logged.returncode == 0 and "%" not in logged.stderr and "\r" not in logged.stderr, logged.stderr
+
+
+def test_study_relays_its_steps_progress_on_a_terminal_only(tmp_path):
+    # Duffing at a 50 times finer step (about 2800 points, a second or more per NFRC): the study
+    # polls its steps' progress files 4 times a second, so each NFRC is seen running.
+    case = tmp_path / "case.toml"
+    with open(DUFFING) as f:
+        case.write_text(f.read() + '\n[study]\ntrack = [ { parameter = "amplitude", range = [0.5, 2.0] } ]\n'
+                                   'max_points = 40\nsimulate_periods = 0\n')
+    args = ["study", str(case), "--set", "continuation.step=0.0004", "--jobs", "1"]
+    # No figures: they are not what is tested here, and would double the time.
+    env = {**os.environ, "HBTRACK_PYTHON": "/bin/false"}
+    code, updates = run_on_a_terminal(*args, "-o", str(tmp_path / "tty"), env=env)
+    relayed = [u for u in updates if re.search(r"study:   nfrc \d+\.\d %", u)]
+    assert relayed, updates
+    percentages = [float(re.search(r"nfrc (\d+\.\d) %", u).group(1)) for u in relayed]
+    assert percentages == sorted(percentages) and all(0 <= p <= 100 for p in percentages), percentages
+    # In a log: the stage and step lines only, no progress.
+    logged = subprocess.run([cli_path(), *args, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=300, env=env)
+    assert logged.returncode == code, logged.stderr
+    assert "\r" not in logged.stderr and not re.search(r"study:   \S+ \d+\.\d %", logged.stderr), logged.stderr
+    assert "stage 1 of 8" in logged.stderr, logged.stderr
+    # The same results either way, and no progress file left behind.
+    for step in ("nfrc", "track_amplitude_lp1"):
+        for name in ("branch.csv", "states.csv"):
+            tty_file, log_file = tmp_path / "tty" / step / name, tmp_path / "log" / step / name
+            assert tty_file.read_bytes() == log_file.read_bytes(), (step, name)
+    assert not list((tmp_path / "tty").rglob("progress.txt"))

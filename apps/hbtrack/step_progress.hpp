@@ -1,0 +1,47 @@
+#pragma once
+// The progress of a study's running steps on the study's own status line. The steps are child
+// processes whose stderr goes to their log, so they cannot draw on the terminal: each appends its
+// progress to a file (--progress-file, progress.hpp) and this reads the last line of each a few
+// times a second and shows them as one line, "study:   nfrc 37.5 % ~12s left". Only on a
+// terminal: in a log the study writes what it always did, the steps' start and end.
+#include <condition_variable>
+#include <map>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace hbtrack::cli {
+
+// "nfrc 37.5 % ~12s left" ("point 42" without a range) from a step's progress file's last
+// complete line; "" while the file has none.
+std::string step_progress_text(const std::string& step, const std::string& file_text);
+
+class StepProgressRelay {
+ public:
+  // Shows nothing (and watches no file) unless `enabled`.
+  explicit StepProgressRelay(bool enabled);
+  ~StepProgressRelay();  // clears the status line
+  StepProgressRelay(const StepProgressRelay&) = delete;
+  StepProgressRelay& operator=(const StepProgressRelay&) = delete;
+
+  bool enabled() const { return enabled_; }
+  // Step `step` reports to `file` (DIR/progress.txt); shown from its first line on.
+  void watch(const std::string& step, const std::string& file);
+  // The step ended: its file is removed and it leaves the line.
+  void forget(const std::string& step);
+  // A line of the study's own on stderr, below the status line (which is redrawn later).
+  void say(const std::string& line);
+
+ private:
+  void loop();
+  void clear_locked();
+  bool enabled_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stopping_ = false;
+  std::map<std::string, std::string> files_;  // step: its progress file
+  size_t shown_ = 0;                           // characters of the status line on screen
+  std::thread thread_;
+};
+
+}  // namespace hbtrack::cli
