@@ -5,6 +5,7 @@ tracking, isolated branches, time integration and Craig-Bampton reduction.
     case = hbtrack.load_case("examples/duffing.toml", set={"amplitude": 2.0})
     case.continuation.step = 0.05            # options are named as in the case file and the CLI
     nfrc = hbtrack.frc(case)                 # branch columns as branch.csv, summary as summary.json
+    wide = hbtrack.frc(case, continuation={"omega_end": 2.5})   # settings for one run, case unchanged
     lp1 = hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.5, 3.0))
     hbtrack.plots.save_figure(hbtrack.plots.nfrc_figure(nfrc), "out/nfrc")   # out/nfrc.png, .pdf
 
@@ -20,14 +21,15 @@ from .cases import case_from_arrays, load_case
 from .elements import add_python_element
 from .model import normal_modes, output_harmonics, reduce
 from .results import read_result
+from .settings import with_settings
 from .timeint import simulate
 
 if _core is not None:
-    from ._hbtrack import (Case, ContinuationOptions, FoldTrackingOptions, HarmonicBalanceOptions, NfrcOptions,
+    from ._hbtrack import (Case, ContinuationOptions, ContinuationSection, FoldTrackingOptions, HarmonicBalanceOptions, NfrcOptions,
                            StabilityOptions, SteadyStateOptions)
 
 __all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "switch", "track", "isolas", "limit_point", "simulate",
-           "reduce", "normal_modes", "output_harmonics", "add_python_element", "read_result", "plots", "Case", "ContinuationOptions",
+           "with_settings", "reduce", "normal_modes", "output_harmonics", "add_python_element", "read_result", "plots", "Case", "ContinuationSection", "ContinuationOptions",
            "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
 
 

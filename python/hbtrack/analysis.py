@@ -12,27 +12,48 @@ functions. Results are dicts holding what the CLI writes to a result folder:
 
 A run that stops early (summary["stop_reason"]) still returns what it computed, as the CLI keeps
 its points; bad arguments raise ValueError naming the argument. The columns are described in
-docs/outputs.md.
+docs/outputs.md. Every computation takes the case's settings for that run as keywords
+(``continuation={...}``, ``set={...}``: hbtrack.with_settings) and ``progress=callable``.
 """
 import numpy as np
 
 from ._core import require_core
+from .cases import toml_value
+from .progress import checked_progress
+from .settings import case_with, settings_overrides
+from .starts import start_state
+
+# The case's own check of the range, which a start at omega_end breaks.
+_EMPTY_RANGE = "omega_end: must differ from omega_start"
 
 
-def frc(case, *, progress=None):
+def frc(case, *, start=None, point=None, progress=None, **settings):
     """The NFRC of `case` over its frequency range, with stability and special points.
 
-    What ``hbtrack frc CASE -o DIR`` computes, returned instead of written.
+    What ``hbtrack frc CASE -o DIR`` computes, returned instead of written; with `start`, what
+    ``hbtrack frc CASE --from DIR --point K`` computes.
 
     Parameters
     ----------
     case : hbtrack.Case
-        From :func:`hbtrack.load_case` or :func:`hbtrack.case_from_arrays`.
+        From :func:`hbtrack.load_case` or :func:`hbtrack.case_from_arrays`; not changed.
+    start : dict or array_like, optional
+        Start from a point of an earlier result instead of the linear solution at omega_start:
+        a result (frc, solve, continue, switch, an isola branch; from a computation or
+        :func:`hbtrack.read_result`), whose parameters and harmonic balance are then used, as
+        ``--from``; or a state row [omega, x0, x1, ...] of the case. The NFRC goes from the
+        point's omega towards ``continuation.omega_end``.
+    point : int, optional
+        The row of ``start["states"]`` (0-based; default the last), as ``--point``.
     progress : callable, optional
         Called after every accepted point as ``progress(fraction, point, omega)``: `fraction`
-        the part of the frequency range covered (0 to 1; a folding branch may step back),
+        the part of the frequency range covered so far (0 to 1, as the CLI's progress line),
         `point` the 0-based row, `omega` its frequency (rad/s). Return False to stop the
         continuation there (stop_reason "stopped_by_callback"); None or True go on.
+    **settings : dict, optional
+        The case's settings for this run only (`case` unchanged), as :func:`hbtrack.with_settings`
+        takes them: ``continuation={"omega_start": 0.5}``, ``harmonic_balance={...}``,
+        ``stability={...}``, ``parameters={...}`` or ``set={"continuation.step": 0.01}``.
 
     Returns
     -------
@@ -41,7 +62,13 @@ def frc(case, *, progress=None):
         phaseK_NAME per output), ``states`` (rows [omega, x0, ...]), ``stability`` ({column:
         array}, the Floquet exponents and multipliers per point; absent with stability "none"),
         ``special_points`` (list of dicts: type LP/BP/PD/NS, index, omega, located, outputs),
-        ``special_states``, ``summary`` (as summary.json) and ``kind`` = "frc".
+        ``special_states``, ``summary`` (as summary.json; with `start`, ``started_from`` =
+        {point, omega} and ``folder`` for a result read from one) and ``kind`` = "frc".
+
+    Raises
+    ------
+    ValueError
+        A bad argument, or an unknown or bad setting (naming the key and the rule).
 
     Examples
     --------
@@ -49,16 +76,41 @@ def frc(case, *, progress=None):
     >>> nfrc = hbtrack.frc(case)
     >>> nfrc["branch"]["max_x"].max()                      # the peak
     >>> [p["omega"] for p in nfrc["special_points"] if p["type"] == "LP"]
+    >>> wide = hbtrack.frc(case, continuation={"omega_end": 2.5}, harmonic_balance={"harmonics": 7})
+    >>> rest = hbtrack.frc(case, start=nfrc, point=20)     # as hbtrack frc --from DIR --point 20
     """
     core = require_core()
-    if progress is not None and not callable(progress):
-        raise ValueError(f"progress: must be callable, got {type(progress).__name__}")
-    result = core.frc(case, progress)
+    progress = checked_progress(progress)
+    overrides = settings_overrides(**settings)
+    x = None
+    if start is None:
+        if point is not None:
+            raise ValueError("point: needs start")
+    else:
+        state, row, from_result = start_state(start, point)
+        omega = float(state[0])
+        if not (np.isfinite(omega) and omega > 0):
+            raise ValueError(f"start: point {row}: omega must be > 0 and finite, got {omega}")
+        # As --from: the result's settings, then the caller's, then the point's frequency.
+        overrides = from_result + overrides + [f"continuation.omega_start={toml_value(omega)}"]
+        x = state[1:]
+    try:
+        run_case = case_with(case, overrides, "frc")
+    except ValueError as error:
+        if start is None or _EMPTY_RANGE not in str(error):
+            raise
+        raise ValueError(f"start: point {row} is at omega_end = {omega}: give the new end with "
+                         "continuation={'omega_end': VALUE}") from None
+    result = core.frc(run_case, progress, x)
+    if start is not None:
+        result["summary"]["started_from"] = {"point": row, "omega": omega}
+        if isinstance(start, dict) and "folder" in start:
+            result["summary"]["started_from"]["folder"] = start["folder"]
     result["kind"] = "frc"
     return result
 
 
-def continuation(case, *, param, omega, range):  # noqa: A002 - the CLI's --range
+def continuation(case, *, param, omega, range, progress=None, **settings):  # noqa: A002 - the CLI's --range
     """The periodic solution at a fixed frequency followed in a named parameter (``hbtrack continue``).
 
     Parameters
@@ -71,6 +123,12 @@ def continuation(case, *, param, omega, range):  # noqa: A002 - the CLI's --rang
         The fixed forcing frequency (rad/s).
     range : tuple of float
         (start, end): the parameter goes from start towards end (the case's value is not used).
+    progress : callable, optional
+        ``progress(fraction, point, value)`` after every accepted point: the part of (start, end)
+        covered and the parameter's value; return False to stop (stop_reason "stopped_by_callback").
+    **settings : dict, optional
+        The case's settings for this run only, as :func:`frc` takes them (``continuation={...}``,
+        ``set={...}``; :func:`hbtrack.with_settings`).
 
     Returns
     -------
@@ -84,17 +142,21 @@ def continuation(case, *, param, omega, range):  # noqa: A002 - the CLI's --rang
     --------
     >>> branch = hbtrack.continuation(case, param="amplitude", omega=1.2, range=(0.05, 3.0))
     >>> [p["amplitude"] for p in branch["special_points"] if p["type"] == "LP"]
+    >>> fine = hbtrack.continuation(case, param="amplitude", omega=1.2, range=(0.05, 3.0),
+    ...                             continuation={"step_max": 0.02})
     """
     try:
         start, end = (float(v) for v in range)
     except (TypeError, ValueError):
         raise ValueError(f"range: expected (LO, HI), got {range!r}") from None
-    result = require_core().continuation(case, param, float(omega), start, end)
+    progress = checked_progress(progress)
+    run_case = case_with(case, settings_overrides(**settings), "continuation")
+    result = require_core().continuation(run_case, param, float(omega), start, end, progress)
     result["kind"] = "continue"
     return result
 
 
-def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
+def backbone(case, *, mode=1, range, progress=None, **settings):  # noqa: A002 - the CLI's --range
     """The nonlinear mode of a linear mode by the extended periodic motion concept (``hbtrack backbone``).
 
     Parameters
@@ -105,6 +167,13 @@ def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
         Which linear mode, counted from 1 (default 1).
     range : tuple of float
         (LO, HI), 0 < LO < HI: the modal amplitude a goes from LO (near the linear mode) to HI.
+    progress : callable, optional
+        ``progress(fraction, point, amplitude)`` after every accepted point: the part of (LO, HI)
+        covered on a log scale (the steps are in log10 a) and a; return False to stop (stop_reason
+        "stopped_by_callback").
+    **settings : dict, optional
+        The case's settings for this run only, as :func:`frc` takes them (``continuation={...}``,
+        ``set={...}``; :func:`hbtrack.with_settings`).
 
     Returns
     -------
@@ -117,6 +186,7 @@ def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
     --------
     >>> mode = hbtrack.backbone(case, mode=1, range=(0.01, 5.0))
     >>> mode["branch"]["omega"][-1], mode["branch"]["damping_ratio"][-1]
+    >>> finer = hbtrack.backbone(case, range=(0.01, 5.0), harmonic_balance={"harmonics": 9})
     """
     if isinstance(mode, bool) or not isinstance(mode, (int, np.integer)) or mode < 1:
         raise ValueError(f"mode: must be an integer >= 1, got {mode!r}")
@@ -126,12 +196,14 @@ def backbone(case, *, mode=1, range):  # noqa: A002 - the CLI's --range
         raise ValueError(f"range: expected (LO, HI), got {range!r}") from None
     if not 0 < start < end:
         raise ValueError(f"range: must be (LO, HI) with 0 < LO < HI, got {range!r}")
-    result = require_core().backbone(case, int(mode), start, end)
+    progress = checked_progress(progress)
+    run_case = case_with(case, settings_overrides(**settings), "backbone")
+    result = require_core().backbone(run_case, int(mode), start, end, progress)
     result["kind"] = "backbone"
     return result
 
 
-def switch(case, start, *, point):
+def switch(case, start, *, point, progress=None, **settings):
     """The branch born at a BP or PD of an frc result (``hbtrack switch``).
 
     At a BP the other branch through the point (its tangent from the null space of the extended
@@ -147,6 +219,14 @@ def switch(case, start, *, point):
     point : int
         Which special point, counted from 1 in the order of ``start["special_points"]``; a BP
         or a PD.
+    progress : callable, optional
+        ``progress(fraction, point, omega)`` after every accepted point: each of the two legs counts
+        for half, by the part of the frequency range between the point and the end it heads for that
+        it has covered; `point` counts on over both legs; return False to stop (stop_reason
+        "stopped_by_callback").
+    **settings : dict, optional
+        The case's settings for this run only, as :func:`frc` takes them (``continuation={...}``,
+        ``set={...}``; :func:`hbtrack.with_settings`).
 
     Returns
     -------
@@ -163,6 +243,7 @@ def switch(case, start, *, point):
     >>> bp = 1 + [p["type"] for p in nfrc["special_points"]].index("BP")
     >>> branch = hbtrack.switch(case, nfrc, point=bp)
     >>> abs(branch["branch"]["max_x1"] - branch["branch"]["max_x2"]).max()   # asymmetric
+    >>> longer = hbtrack.switch(case, nfrc, point=bp, continuation={"max_points": 200})
     """
     if not isinstance(start, dict) or "special_points" not in start or "special_states" not in start or "states" not in start:
         raise ValueError("start: expected an frc result (from hbtrack.frc, or read_result of an frc folder)")
@@ -181,7 +262,10 @@ def switch(case, start, *, point):
         raise ValueError(f"point: special point {point}: index {row} is outside the frc result's states")
     bp = np.asarray(start["special_states"])[point - 1]
     before, after = states[max(row - 1, 0)], states[min(row + 1, len(states) - 1)]
-    result = require_core().switch(case, sp["type"], int(point), bp[0], bp[1:], before[0], before[1:], after[0], after[1:])
+    progress = checked_progress(progress)
+    run_case = case_with(case, settings_overrides(**settings), "switch")
+    result = require_core().switch(run_case, sp["type"], int(point), bp[0], bp[1:], before[0], before[1:], after[0], after[1:],
+                                   progress)
     result["kind"] = "switch"
     return result
 
@@ -216,7 +300,7 @@ def limit_point(result, lp):
     return result["special_states"][rows[lp - 1]]
 
 
-def track(case, start, *, lp, param, range, method="bordered"):  # noqa: A002 - the CLI's --range
+def track(case, start, *, lp, param, range, method="bordered", progress=None, **settings):  # noqa: A002 - the CLI's --range
     """A limit point followed in a second parameter (``hbtrack track``).
 
     Parameters
@@ -233,6 +317,13 @@ def track(case, start, *, lp, param, range, method="bordered"):  # noqa: A002 - 
         (LO, HI): leg 1 goes from the start towards LO, leg 2 towards HI.
     method : {"bordered", "extended"}, optional
         The defining system (docs/tracking.md).
+    progress : callable, optional
+        ``progress(fraction, point, value)`` after every accepted point: the part of (LO, HI)
+        covered, each leg for its share as the CLI's progress line, `point` the row and `value` the
+        parameter's; return False to stop (stop_reason "stopped_by_callback").
+    **settings : dict, optional
+        The case's settings for this run only, as :func:`frc` takes them (``continuation={...}``,
+        ``set={...}``; :func:`hbtrack.with_settings`).
 
     Returns
     -------
@@ -246,19 +337,22 @@ def track(case, start, *, lp, param, range, method="bordered"):  # noqa: A002 - 
     --------
     >>> curve = hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.1, 2.0))
     >>> curve["branch"]["amplitude"].min()                  # where the fold is born
+    >>> coarse = hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.1, 2.0), continuation={"step": 0.05})
     """
     state = limit_point(start, lp)
     try:
         low, high = (float(v) for v in range)
     except (TypeError, ValueError):
         raise ValueError(f"range: expected (LO, HI), got {range!r}") from None
-    result = require_core().track(case, state[1:], state[0], param, low, high, method)
+    progress = checked_progress(progress)
+    run_case = case_with(case, settings_overrides(**settings), "track")
+    result = require_core().track(run_case, state[1:], state[0], param, low, high, method, progress)
     result["summary"]["options"]["tracking"]["lp"] = lp
     result["kind"] = "track"
     return result
 
 
-def isolas(case, tracks, *, at):
+def isolas(case, tracks, *, at, progress=None, **settings):
     """Isolated branches at one parameter value, from limit-point tracking curves (``hbtrack isolas``).
 
     Parameters
@@ -269,6 +363,13 @@ def isolas(case, tracks, *, at):
         One or more track results of the same parameter.
     at : float
         The parameter value where the curves are cut.
+    progress : callable, optional
+        ``progress(fraction, point, omega)`` after every accepted point: per branch followed, the
+        part of the frequency range its points span so far (an isola closes inside it); `point`
+        counts on over the branches; return False to stop (stop_reason "stopped_by_callback").
+    **settings : dict, optional
+        The case's settings for this run only, as :func:`frc` takes them (``continuation={...}``,
+        ``set={...}``; :func:`hbtrack.with_settings`).
 
     Returns
     -------
@@ -281,6 +382,7 @@ def isolas(case, tracks, *, at):
     --------
     >>> found = hbtrack.isolas(case, curve, at=0.15)
     >>> sorted(found["branches"])
+    >>> hill = hbtrack.isolas(case, curve, at=0.15, stability={"method": "hill"})
     """
     if isinstance(tracks, dict):
         tracks = [tracks]
@@ -292,7 +394,9 @@ def isolas(case, tracks, *, at):
     names = {t["summary"]["options"]["tracking"]["parameter"] for t in tracks}
     if len(names) != 1:
         raise ValueError(f"tracks: the curves track different parameters: {', '.join(sorted(names))}")
-    result = require_core().isolas(case, [np.asarray(t["states"]) for t in tracks], names.pop(), float(at))
+    progress = checked_progress(progress)
+    run_case = case_with(case, settings_overrides(**settings), "isolas")
+    result = require_core().isolas(run_case, [np.asarray(t["states"]) for t in tracks], names.pop(), float(at), progress)
     result["kind"] = "isolas"
     for name, branch in result["branches"].items():
         branch["kind"], branch["label"] = "isola_branch", name

@@ -1,9 +1,11 @@
 """Time integration to the periodic steady state: `hbtrack simulate` as a function."""
 from ._core import require_core
+from .progress import checked_progress
+from .settings import case_with, settings_overrides
 
 
 def simulate(case, omega=None, *, start=None, point=None, method="newmark", steps_per_period=256,
-             max_periods=2000, record_periods=1):
+             max_periods=2000, record_periods=1, progress=None, **settings):
     """Time integration to the periodic steady state (``hbtrack simulate``).
 
     Parameters
@@ -24,6 +26,13 @@ def simulate(case, omega=None, *, start=None, point=None, method="newmark", step
         Give up after this many periods (summary["converged"] False).
     record_periods : int, optional
         Periods kept in the signals.
+    progress : callable, optional
+        ``progress(fraction, period, time)`` after every period: `fraction` the periods done
+        out of `max_periods` (a run that converges stops before 1), `period` from 0, `time` (s)
+        at its end; return False to stop (stop_reason "stopped_by_callback").
+    **settings : dict, optional
+        The case's settings for this run only, as :func:`hbtrack.frc` takes them
+        (``parameters={"amplitude": 2.0}``, ``set={...}``; :func:`hbtrack.with_settings`).
 
     Returns
     -------
@@ -36,8 +45,11 @@ def simulate(case, omega=None, *, start=None, point=None, method="newmark", step
     --------
     >>> sim = hbtrack.simulate(case, start=nfrc, point=20, steps_per_period=512)
     >>> sim["summary"]["converged"], sim["summary"]["max_x"]
+    >>> louder = hbtrack.simulate(case, 1.2, parameters={"amplitude": 2.0}, progress=lambda f, k, t: k < 500)
     """
     core = require_core()
+    progress = checked_progress(progress)
+    run_case = case_with(case, settings_overrides(**settings), "simulate")
     if (start is None) != (point is None):
         raise ValueError("point: needs start" if start is None else "start: needs point")
     state = None
@@ -49,6 +61,6 @@ def simulate(case, omega=None, *, start=None, point=None, method="newmark", step
     elif omega is None:
         raise ValueError("omega: required unless start gives the point")
     steady = core.SteadyStateOptions(max_periods=max_periods, record_periods=record_periods)
-    result = core.simulate(case, 0.0 if omega is None else float(omega), state, method, steps_per_period, steady)
+    result = core.simulate(run_case, 0.0 if omega is None else float(omega), state, method, steps_per_period, steady, progress)
     result["kind"] = "simulate"
     return result

@@ -10,9 +10,11 @@
 
 #include "bindings.hpp"
 #include "gil_release.hpp"
+#include "progress_callback.hpp"
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {
 
@@ -57,46 +59,41 @@ py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const Nfrc
   return out;
 }
 
-// progress(fraction, point, omega) after every accepted point (fraction of the omega range
-// covered); False stops the run ("stopped_by_callback"), an exception stops it and is re-raised.
-py::dict frc(const CaseDefinition& c, const py::object& progress) {
+// The NFRC over the case's range; with `start` (the unknowns at omega_start, a point of another
+// result) from that point towards omega_end, as `hbtrack frc --from`.
+py::dict frc(const CaseDefinition& c, const py::object& progress, const std::optional<Eigen::VectorXd>& start) {
   const auto t0 = Clock::now();
   HarmonicBalance hbm = make_system(c);
+  if (start && start->size() != hbm.unknowns())
+    throw CaseError("start: holds " + std::to_string(start->size()) + " unknowns, the case's harmonic balance has " +
+                    std::to_string(hbm.unknowns()) + " (a result of another case?)");
   json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}};
+  ProgressCallback callback(progress);
+  Coverage coverage = Coverage::one_way(c.nfrc.omega_start, c.nfrc.omega_end);
+  const RecordedObserver observer = [&](const BranchPoint& p, const RecordedPoint&, int index) {
+    return callback(coverage.add(p.lambda), index, p.lambda);
+  };
   NfrcResult r;
-  bool interrupted = false, stopped_by_callback = false, bad_answer = false;
-  std::optional<py::error_already_set> callback_error;
-  const double span = c.nfrc.omega_end - c.nfrc.omega_start;
   {
     GilRelease release;
-    r = compute_nfrc(hbm, c.nfrc, c.outputs, [&](const BranchPoint& p, const RecordedPoint&, int index) {
-      if ((interrupted = python_interrupted())) return false;
-      if (progress.is_none()) return true;
-      py::gil_scoped_acquire acquire;
-      try {
-        const double fraction = std::clamp((p.lambda - c.nfrc.omega_start) / span, 0.0, 1.0);
-        const py::object answer = progress(fraction, index, p.lambda);
-        stopped_by_callback = !answer.is_none() && !answer.cast<bool>();
-      } catch (py::error_already_set& e) {
-        callback_error.emplace(std::move(e));
-      } catch (const py::cast_error&) {
-        bad_answer = true;
-      }
-      return !stopped_by_callback && !callback_error && !bad_answer;
-    });
+    if (!start) {
+      r = compute_nfrc(hbm, c.nfrc, c.outputs, observer);
+    } else {
+      const double from = c.nfrc.omega_start, end = c.nfrc.omega_end;
+      r = compute_branch(hbm, c.nfrc, c.outputs, *start, from, ParameterWindow{std::min(from, end), std::max(from, end), end > from ? 1 : -1, false},
+                         observer);
+    }
   }
-  if (interrupted) throw py::error_already_set();
-  if (callback_error) throw *callback_error;
-  if (bad_answer) throw py::value_error("progress: must return None, True or False");
+  callback.rethrow();
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", r.continuation.summary.wall_s}, {"stability_s", r.stability_s}};
   py::dict out = branch_result(c, hbm, r, summary);
-  if (stopped_by_callback) out["summary"]["stop_reason"] = "stopped_by_callback";
+  callback.mark(out);
   return out;
 }
 
 // `hbtrack track` from a limit point (x, omega) of an NFRC of the same case.
 py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, const std::string& param, double parameter_min,
-               double parameter_max, const std::string& method) {
+               double parameter_max, const std::string& method, const py::object& progress) {
   const auto t0 = Clock::now();
   FoldTrackingOptions tracking;
   tracking.method = method;
@@ -120,7 +117,8 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
   summary["options"]["tracking"] = {{"parameter", param}, {"method", method}, {"range", {parameter_min, parameter_max}}};
   const FoldScales scales = tracking_scales(hbm, c.nfrc, parameter_max - parameter_min);
   FoldTrackingResult r;
-  bool interrupted = false;
+  ProgressCallback callback(progress);
+  Coverage coverage = Coverage::two_legs(parameter_min, parameter_max, start_value);  // as the CLI's line
   {
     GilRelease release;
     r = track_fold(hbm, parameter, x, omega, scales, tracking, c.outputs, [&](const FoldCurvePoint& p, int) {
@@ -128,10 +126,10 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
       std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
       row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
       states.rows.push_back(row);
-      return !(interrupted = python_interrupted());
+      return callback(coverage.add(p.parameter, p.leg), static_cast<int>(states.rows.size()) - 1, p.parameter);
     });
   }
-  if (interrupted) throw py::error_already_set();
+  callback.rethrow();
   add_tracking_summary(summary, c, r, param);
   summary["start"] = {{"omega", omega}, {param, start_value}};
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
@@ -140,6 +138,7 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
   out["states"] = states.matrix();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
+  callback.mark(out);
   return out;
 }
 
@@ -162,7 +161,8 @@ std::vector<FoldCurvePoint> curve_from_states(const Eigen::MatrixXd& states, int
 
 // `hbtrack isolas`: every crossing of the curves with param = at, and the branch through each
 // new limit point; isola_K / open_K entries as the CLI's folders.
-py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& curve_states, const std::string& param, double at) {
+py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& curve_states, const std::string& param, double at,
+                const py::object& progress) {
   const auto t0 = Clock::now();
   HarmonicBalance hbm = make_system(c);
   const int parameter = parameter_index(hbm.parameters(), param, "param");
@@ -174,10 +174,22 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
   hbm.parameters().value(parameter) = at;
   const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
   std::vector<IsolaCandidate> found;
+  // Per branch, the part of the omega range its points span (an isola closes within it); the
+  // point counts on across the branches.
+  ProgressCallback callback(progress);
+  const double omega_lo = std::min(c.nfrc.omega_start, c.nfrc.omega_end), omega_hi = std::max(c.nfrc.omega_start, c.nfrc.omega_end);
+  double low = 0, high = 0;
+  int point = 0;
+  const RecordedObserver observer = [&](const BranchPoint& p, const RecordedPoint&, int index) {
+    if (index == 0) low = high = p.lambda;
+    low = std::min(low, p.lambda), high = std::max(high, p.lambda);
+    return callback(covered_fraction(omega_lo + high - low, omega_lo, omega_hi), point++, p.lambda);
+  };
   {
     GilRelease release;
-    found = compute_isolas(hbm, parameter, at, curves, scales, c.nfrc, c.outputs);
+    found = compute_isolas(hbm, parameter, at, curves, scales, c.nfrc, c.outputs, true, observer);
   }
+  callback.rethrow();
   json crossings = json::array();
   py::dict branches;
   int isola_count = 0;
@@ -209,17 +221,18 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
   py::dict out;
   out["summary"] = to_python(summary);
   out["branches"] = branches;
+  callback.mark(out);
   return out;
 }
 
 }  // namespace
 
 void bind_analysis(py::module_& m) {
-  m.def("frc", &frc, py::arg("case"), py::arg("progress") = py::none(),
+  m.def("frc", &frc, py::arg("case"), py::arg("progress") = py::none(), py::arg("start") = py::none(),
         "NFRC with stability: {branch, states, stability, special_points, special_states, summary}");
   m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
-        py::arg("parameter_max"), py::arg("method") = "bordered", "limit point (x, omega) tracked in param");
-  m.def("isolas", &isolas, py::arg("case"), py::arg("curves"), py::arg("param"), py::arg("at"),
+        py::arg("parameter_max"), py::arg("method") = "bordered", py::arg("progress") = py::none(), "limit point (x, omega) tracked in param");
+  m.def("isolas", &isolas, py::arg("case"), py::arg("curves"), py::arg("param"), py::arg("at"), py::arg("progress") = py::none(),
         "branches through the crossings of tracking curves (their states) with param = at");
 }
 

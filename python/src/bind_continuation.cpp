@@ -4,15 +4,19 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
+#include "gil_release.hpp"
+#include "progress_callback.hpp"
 #include "hbtrack/analysis/backbone.hpp"
 #include "hbtrack/analysis/parameter_continuation.hpp"
 #include "hbtrack/io/backbone_tables.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/parameter_tables.hpp"
 #include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {
 
@@ -29,7 +33,8 @@ HarmonicBalance system_of(const CaseDefinition& c) {
   }
 }
 
-py::dict continuation(const CaseDefinition& c, const std::string& param, double omega, double start, double end) {
+// progress(fraction of [start, end] covered, point, the parameter's value).
+py::dict continuation(const CaseDefinition& c, const std::string& param, double omega, double start, double end, const py::object& progress) {
   const auto t0 = Clock::now();
   if (!(omega > 0) || !std::isfinite(omega)) throw CaseError("omega: must be > 0 and finite");
   if (!std::isfinite(start) || !std::isfinite(end) || start == end) throw CaseError("range: must be (LO, HI), finite, LO != HI");
@@ -39,13 +44,15 @@ py::dict continuation(const CaseDefinition& c, const std::string& param, double 
   summary["options"]["continue"] = parameter_continuation_options(param, omega, start, end);
   const double nominal = hbm.parameters().value(parameter);
   ParameterBranchResult r;
-  bool interrupted = false;
+  ProgressCallback callback(progress);
+  Coverage coverage = Coverage::one_way(start, end);
   {
-    py::gil_scoped_release release;
-    r = continue_in_parameter(hbm, parameter, omega, start, end, c.nfrc, c.outputs,
-                              [&](const BranchPoint&, const ParameterBranchPoint&, int) { return !(interrupted = python_interrupted()); });
+    GilRelease release;
+    r = continue_in_parameter(hbm, parameter, omega, start, end, c.nfrc, c.outputs, [&](const BranchPoint&, const ParameterBranchPoint& p, int index) {
+      return callback(coverage.add(p.parameter), index, p.parameter);
+    });
   }
-  if (interrupted) throw py::error_already_set();
+  callback.rethrow();
   hbm.parameters().value(parameter) = nominal;
   Table branch{parameter_branch_header(c, param), {}}, states{state_header(hbm.unknowns()), {}}, special{state_header(hbm.unknowns()), {}};
   for (size_t i = 0; i < r.points.size(); ++i) {
@@ -61,11 +68,13 @@ py::dict continuation(const CaseDefinition& c, const std::string& param, double 
   out["special_states"] = special.matrix();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
+  callback.mark(out);
   return out;
 }
 
-// `hbtrack backbone`: the case with every dof as unknown (the CLI's override), mode from 1.
-py::dict backbone(CaseDefinition c, int mode, double start, double end) {
+// `hbtrack backbone`: the case with every dof as unknown (the CLI's override), mode from 1;
+// progress(fraction of [log start, log end] covered, point, the modal amplitude).
+py::dict backbone(CaseDefinition c, int mode, double start, double end, const py::object& progress) {
   const auto t0 = Clock::now();
   c.harmonic_balance.condensation = "none";
   HarmonicBalance hbm = system_of(c);
@@ -77,12 +86,15 @@ py::dict backbone(CaseDefinition c, int mode, double start, double end) {
   json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}};
   summary["options"]["backbone"] = backbone_options_json(options);
   BackboneResult r;
-  bool interrupted = false;
+  ProgressCallback callback(progress);
+  Coverage coverage = Coverage::one_way(std::log10(start), std::log10(end));  // the continuation steps in log10(a)
   {
-    py::gil_scoped_release release;
-    r = compute_backbone(hbm, options, c.outputs, [&](const BranchPoint&, const BackbonePoint&, int) { return !(interrupted = python_interrupted()); });
+    GilRelease release;
+    r = compute_backbone(hbm, options, c.outputs, [&](const BranchPoint& p, const BackbonePoint& b, int index) {
+      return callback(coverage.add(p.lambda), index, b.amplitude);
+    });
   }
-  if (interrupted) throw py::error_already_set();
+  callback.rethrow();
   Table branch{backbone_header(c, hbm.basis().harmonic_numbers()), {}}, states{backbone_state_header(hbm.unknowns()), {}};
   for (size_t i = 0; i < r.points.size(); ++i) {
     branch.rows.push_back(backbone_row(r.points[i]));
@@ -95,6 +107,7 @@ py::dict backbone(CaseDefinition c, int mode, double start, double end) {
   out["states"] = states.matrix();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
+  callback.mark(out);
   return out;
 }
 
@@ -102,8 +115,8 @@ py::dict backbone(CaseDefinition c, int mode, double start, double end) {
 
 void bind_continuation(py::module_& m) {
   m.def("continuation", &continuation, py::arg("case"), py::arg("param"), py::arg("omega"), py::arg("start"), py::arg("end"),
-        "continuation in a named parameter at fixed omega: {branch, states, special_points, special_states, summary}");
-  m.def("backbone", &backbone, py::arg("case"), py::arg("mode"), py::arg("start"), py::arg("end"),
+        py::arg("progress") = py::none(), "continuation in a named parameter at fixed omega: {branch, states, special_points, special_states, summary}");
+  m.def("backbone", &backbone, py::arg("case"), py::arg("mode"), py::arg("start"), py::arg("end"), py::arg("progress") = py::none(),
         "nonlinear mode (EPMC) from the linear mode: {branch, states, special_points, summary}");
 }
 

@@ -8,16 +8,12 @@
 namespace hbtrack::python {
 
 void bind_case(py::module_& m) {
-  py::class_<CaseDefinition>(m, "Case",
+  py::class_<CaseDefinition> case_class(m, "Case",
                              "A study read from a case file: model, elements, parameters, harmonic balance, NFRC "
-                             "settings and outputs. Options are attributes named as the case file's keys.")
-      .def_readwrite("path", &CaseDefinition::path)
+                             "settings and outputs. Options are attributes named as the case file's keys.");
+  case_class.def_readwrite("path", &CaseDefinition::path)
       .def_readwrite("harmonic_balance", &CaseDefinition::harmonic_balance)
-      .def_readwrite("nfrc", &CaseDefinition::nfrc)
-      // The case file's [continuation] and [stability] sections, which the NFRC options hold.
-      .def_property(
-          "continuation", [](CaseDefinition& c) -> ContinuationOptions& { return c.nfrc.continuation; },
-          [](CaseDefinition& c, const ContinuationOptions& o) { c.nfrc.continuation = o; }, py::return_value_policy::reference_internal)
+      // The case file's [stability] section, which the NFRC options hold.
       .def_property(
           "stability", [](CaseDefinition& c) -> StabilityOptions& { return c.nfrc.stability; },
           [](CaseDefinition& c, const StabilityOptions& o) { c.nfrc.stability = o; }, py::return_value_policy::reference_internal)
@@ -60,6 +56,7 @@ void bind_case(py::module_& m) {
         text += ")";
         return text;
       });
+  bind_case_settings(m, case_class);
   m.def("load_case", &load_case, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
         "the case file at path with NAME=VALUE overrides (as hbtrack --set)");
 }

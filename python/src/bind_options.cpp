@@ -13,8 +13,6 @@
 
 namespace hbtrack::python {
 
-namespace {
-
 // ClassName(field=value, ...) with Python's repr of each value.
 std::string options_repr(const py::object& self, const std::vector<std::string>& fields) {
   std::string text = py::str(py::type::of(self).attr("__name__"));
@@ -27,6 +25,8 @@ std::string options_repr(const py::object& self, const std::vector<std::string>&
   }
   return text + ")";
 }
+
+namespace {
 
 // Binds T with its fields (readwrite), a keyword constructor that rejects unknown names,
 // __repr__, validate() when T has one, and `fields` (the names, in order).

@@ -5,14 +5,18 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
+#include "gil_release.hpp"
+#include "progress_callback.hpp"
 #include "hbtrack/analysis/branch_switching.hpp"
 #include "hbtrack/analysis/period_doubling.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {
 
@@ -30,8 +34,11 @@ HarmonicBalance system_of(const CaseDefinition& c) {
 }
 
 // type: "BP" or "PD"; (omega, x) the point; before/after its neighbours on the NFRC.
+// progress(fraction, point, omega): each of the two legs counts for half, by the part of the
+// omega range between the point and the end the leg heads for that it has covered.
 py::dict switch_branch(const CaseDefinition& period_one, const std::string& type, int point, double omega, const Eigen::VectorXd& x,
-                       double omega_before, const Eigen::VectorXd& x_before, double omega_after, const Eigen::VectorXd& x_after) {
+                       double omega_before, const Eigen::VectorXd& x_before, double omega_after, const Eigen::VectorXd& x_after,
+                       const py::object& progress) {
   const auto t0 = Clock::now();
   HarmonicBalance hbm = system_of(period_one);
   if (x.size() != hbm.unknowns() || x_before.size() != hbm.unknowns() || x_after.size() != hbm.unknowns())
@@ -46,11 +53,24 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
   json summary = {{"verb", "switch"}, {"options", options_json(c, system)}};
   summary["options"]["switch"] = {{"point", point}, {"type", type}, {"omega", omega}};
   SwitchedBranch s;
+  ProgressCallback callback(progress);
+  const double lo = std::min(c.nfrc.omega_start, c.nfrc.omega_end), hi = std::max(c.nfrc.omega_start, c.nfrc.omega_end);
+  int legs_started = 0, reported = 0;
+  Coverage coverage = Coverage::one_way(omega, omega);
+  const RecordedObserver observer = [&](const BranchPoint& p, const RecordedPoint&, int index) {
+    if (index == 0) {  // a new leg, its direction not known yet
+      ++legs_started;
+      coverage = Coverage::one_way(omega, omega);
+    }
+    if (index == 1) coverage = Coverage::one_way(omega, p.lambda > omega ? hi : lo);  // the leg's direction
+    return callback(0.5 * (std::min(legs_started, 2) - 1 + coverage.add(p.lambda)), reported++, p.lambda);
+  };
   {
-    py::gil_scoped_release release;
-    s = type == "PD" ? switch_at_period_doubling(system, hbm.basis(), c.nfrc, c.outputs, x, omega, known)
-                     : switch_at_branch_point(system, c.nfrc, c.outputs, x, omega, known);
+    GilRelease release;
+    s = type == "PD" ? switch_at_period_doubling(system, hbm.basis(), c.nfrc, c.outputs, x, omega, known, observer)
+                     : switch_at_branch_point(system, c.nfrc, c.outputs, x, omega, known, true, false, observer);
   }
+  callback.rethrow();
   Table branch{branch_header(c), {}}, states{state_header(system.unknowns()), {}}, special{state_header(system.unknowns()), {}};
   const int through = static_cast<int>(s.through.recorded.size());
   for (int i = through - 1; i >= 0; --i) {
@@ -93,6 +113,7 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
   out["special_states"] = special.matrix();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
+  callback.mark(out);
   return out;
 }
 
@@ -101,7 +122,7 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
 void bind_switch(py::module_& m) {
   m.def("switch", &switch_branch, py::arg("case"), py::arg("type"), py::arg("point"), py::arg("omega"), py::arg("x"),
         py::arg("omega_before"), py::arg("x_before"), py::arg("omega_after"), py::arg("x_after"),
-        "the branch through a BP, or the period-doubled branch of a PD: {branch, states, special_points, special_states, summary}");
+        py::arg("progress") = py::none(), "the branch through a BP, or the period-doubled branch of a PD: {branch, states, special_points, special_states, summary}");
 }
 
 }  // namespace hbtrack::python

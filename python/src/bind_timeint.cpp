@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "gil_release.hpp"
+#include "progress_callback.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/result_tables.hpp"
 #include "hbtrack/timeint/dormand_prince_integrator.hpp"
@@ -24,9 +25,9 @@ namespace {
 using nlohmann::json;
 
 // start: optional HBM state [omega, x0, x1, ...] (a row of a result's states); omega <= 0 takes
-// the start's frequency.
+// the start's frequency. progress(fraction of max_periods, period, time at its end).
 py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eigen::VectorXd>& start, const std::string& method,
-                  int steps_per_period, const SteadyStateOptions& steady_options) {
+                  int steps_per_period, const SteadyStateOptions& steady_options, const py::object& progress) {
   if (method != "newmark" && method != "dopri5") throw CaseError("method: must be newmark or dopri5, got '" + method + "'");
   SteadyStateOptions steady = steady_options;
   steady.harmonics = c.harmonic_balance.harmonics;
@@ -74,12 +75,14 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
   summary["options"]["simulation"] = simulation_options_json(method, start.has_value(), steps_per_period, steady);
   summary["options"]["simulation"].update(integrator_settings);
   SteadyStateResult r;
-  bool interrupted = false;
+  ProgressCallback callback(progress);
   {
     GilRelease release;
-    r = integrate_to_steady_state(*integrator, initial, c.outputs, steady, [&](int, double) { return !(interrupted = python_interrupted()); });
+    r = integrate_to_steady_state(*integrator, initial, c.outputs, steady, [&](int period, double) {
+      return callback(static_cast<double>(period + 1) / steady.max_periods, period, (period + 1) * equation.period());
+    });
   }
-  if (interrupted) throw py::error_already_set();
+  callback.rethrow();
   const Table signals{signals_header(c), signals_rows(r)};
   summary["omega"] = omega;
   add_simulation_summary(summary, c, r);
@@ -87,6 +90,7 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
   py::dict out;
   out["signals"] = signals.columns();
   out["summary"] = to_python(summary);
+  callback.mark(out);
   return out;
 }
 
@@ -94,7 +98,7 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
 
 void bind_timeint(py::module_& m) {
   m.def("simulate", &simulate, py::arg("case"), py::arg("omega"), py::arg("start"), py::arg("method"), py::arg("steps_per_period"),
-        py::arg("steady"), "time integration to the periodic steady state: {signals, summary}");
+        py::arg("steady"), py::arg("progress") = py::none(), "time integration to the periodic steady state: {signals, summary}");
 }
 
 }  // namespace hbtrack::python

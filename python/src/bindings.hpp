@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+namespace hbtrack {
+struct CaseDefinition;
+}
+
 namespace hbtrack::python {
 
 namespace py = pybind11;
@@ -21,6 +25,9 @@ void bind_model(py::module_& m);
 void bind_continuation(py::module_& m);
 void bind_switch(py::module_& m);
 void bind_elements(py::module_& m);
+// On the Case class: `continuation` (the case file's [continuation] section), the deprecated
+// `nfrc`, and with_overrides.
+void bind_case_settings(py::module_& m, py::class_<CaseDefinition>& case_class);
 
 // summary.json as the Python json module would read it (same keys, same numbers).
 py::object to_python(const nlohmann::json& document);
@@ -32,6 +39,9 @@ struct Table {
   py::dict columns() const;  // {column name: 1-D float array}, as branch.csv's columns
   py::array_t<double> matrix() const;  // rows x columns, as states.csv without its header
 };
+
+// ClassName(field=value, ...) with Python's repr of each field: the options classes' repr.
+std::string options_repr(const py::object& self, const std::vector<std::string>& fields);
 
 // True (and the Python error set) when Ctrl-C arrived; callable with the GIL released.
 bool python_interrupted();

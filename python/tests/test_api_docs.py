@@ -24,7 +24,11 @@ SELF_CONTAINED = ["hbtrack.arrays.is_sparse", "hbtrack.arrays.as_matrix", "hbtra
                   "hbtrack.plots.length_label", "hbtrack.plots.parameter_label", "hbtrack.plots.harmonic_signal",
                   "hbtrack.plots.harmonic_amplitudes", "hbtrack.overlay_figures.describe",
                   "hbtrack.special_points.numbered_special_points", "hbtrack.special_points.numbered_limit_points",
-                  "hbtrack.special_points.limit_point_label"]
+                  "hbtrack.special_points.limit_point_label",
+                  "hbtrack.settings.settings_overrides", "hbtrack.starts.result_overrides", "hbtrack.starts.start_state",
+                  "hbtrack.progress.checked_progress"]
+# The computations: each takes progress= and the case's settings as keywords, documented.
+COMPUTATIONS = ["frc", "continuation", "backbone", "track", "isolas", "switch", "simulate"]
 
 
 def public_functions():
@@ -65,7 +69,7 @@ def test_numpydoc_sections(name, function):
     block = re.search(r"^Parameters\n-+\n(.*?)(?=^\w+\n-+$)", doc, re.MULTILINE | re.DOTALL).group(1)
     for line in block.splitlines():
         if line and not line.startswith(" "):
-            documented.update(p.strip() for p in line.split(":")[0].split(","))
+            documented.update(p.strip().lstrip("*") for p in line.split(":")[0].split(","))
     parameters = [p for p in inspect.signature(function).parameters if p not in ("self",)]
     missing = [p for p in parameters if p not in documented]
     assert not missing, f"{name}: parameters not documented: {missing}"
@@ -82,3 +86,16 @@ def test_import_without_matplotlib():
     done = subprocess.run([sys.executable, "-c", code, DUFFING], capture_output=True, text=True, env=dict(os.environ))
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "no plots"
+
+
+@pytest.mark.parametrize("name", COMPUTATIONS)
+def test_every_computation_takes_progress_and_the_settings(name):
+    function = getattr(hbtrack, name)
+    parameters = inspect.signature(function).parameters
+    assert "progress" in parameters
+    last = list(parameters.values())[-1]
+    assert (last.name, last.kind) == ("settings", inspect.Parameter.VAR_KEYWORD)
+    doc = inspect.getdoc(function)
+    assert "**settings : dict, optional" in doc and "stopped_by_callback" in doc
+    assert re.search(r"^Examples\n-+\n(.|\n)*\b(continuation|harmonic_balance|stability|parameters)=", doc, re.MULTILINE), \
+        f"{name}: no example of the settings keywords"

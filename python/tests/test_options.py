@@ -42,10 +42,11 @@ def test_overrides_and_case_options_round_trip():
     assert case.parameters["amplitude"] == 2.0
     assert case.harmonic_balance.harmonics == 9
     assert case.continuation.step == 0.01
-    case.continuation.step = 0.03  # a reference into the case, shared with case.nfrc
-    assert case.nfrc.continuation.step == 0.03
-    case.stability.method = "monodromy"
-    assert case.nfrc.stability.method == "monodromy"
+    case.continuation.step = 0.03  # a view into the case: its arc-length options change too
+    assert case.continuation.options.step == 0.03
+    stability = case.stability
+    stability.method = "monodromy"  # a reference into the case
+    assert case.stability.method == "monodromy"
     case.set_parameter("amplitude", 1.5)
     assert case.parameters["amplitude"] == 1.5
     assert case.outputs == ["x"] and case.dof_names == ["x"]

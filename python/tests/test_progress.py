@@ -104,3 +104,53 @@ def test_study_relays_its_steps_progress_on_a_terminal_only(tmp_path):
             tty_file, log_file = tmp_path / "tty" / step / name, tmp_path / "log" / step / name
             assert tty_file.read_bytes() == log_file.read_bytes(), (step, name)
     assert not list((tmp_path / "tty").rglob("progress.txt"))
+
+
+COUPLED = os.path.join(os.path.dirname(DUFFING), "coupled_duffing.toml")
+
+
+def run_with_progress(name, case, nfrc, curve, progress):
+    """One computation of each kind on the Duffing case (coupled Duffing for switch: a BP)."""
+    if name == "continuation":
+        return hbtrack.continuation(case, param="amplitude", omega=1.2, range=(0.05, 1.0), progress=progress)
+    if name == "backbone":
+        return hbtrack.backbone(case, range=(0.01, 1.0), progress=progress)
+    if name == "track":
+        return hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.1, 2.0), progress=progress)
+    if name == "isolas":
+        return hbtrack.isolas(case, curve, at=1.5, progress=progress)
+    if name == "simulate":
+        return hbtrack.simulate(case, 1.2, max_periods=60, progress=progress)
+    coupled = hbtrack.load_case(COUPLED)
+    start = hbtrack.frc(coupled)
+    bp = 1 + [p["type"] for p in start["special_points"]].index("BP")
+    return hbtrack.switch(coupled, start, point=bp, progress=progress)
+
+
+RUNS = ["continuation", "backbone", "track", "isolas", "switch", "simulate"]
+
+
+@pytest.mark.parametrize("name", RUNS)
+def test_every_computation_reports_progress_and_can_be_stopped(name, duffing_case, duffing_frc, duffing_track):
+    seen = []
+    full = run_with_progress(name, duffing_case, duffing_frc, duffing_track, lambda *args: seen.append(args))
+    assert len(seen) > 5, seen
+    points = [p for _, p, _ in seen]
+    assert points == list(range(len(points)))  # every point once, in order, across legs and branches
+    fractions = np.array([f for f, _, _ in seen])
+    assert np.all((fractions >= 0) & (fractions <= 1)), fractions
+    if name in ("continuation", "backbone", "track"):  # one range covered to its end, never stepping back
+        assert np.all(np.diff(fractions) >= 0) and fractions[-1] == 1.0, fractions
+    if name == "continuation":
+        np.testing.assert_array_equal([v for _, _, v in seen], full["branch"]["amplitude"])
+    if name == "simulate":  # the time at the end of each period, 2 pi / omega long
+        np.testing.assert_allclose([t for _, _, t in seen], 2 * np.pi / 1.2 * (1 + np.arange(len(seen))), rtol=1e-12)
+
+    calls = []
+
+    def stop_after_three(fraction, point, value):
+        calls.append(point)
+        return point < 3
+    stopped = run_with_progress(name, duffing_case, duffing_frc, duffing_track, stop_after_three)
+    assert stopped["summary"]["stop_reason"] == "stopped_by_callback"
+    assert calls == [0, 1, 2, 3]  # not called again once it said stop, on any leg or branch

@@ -160,7 +160,7 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
 std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, double value,
                                            const std::vector<std::vector<FoldCurvePoint>>& curves, const FoldScales& scales,
                                            const NfrcOptions& options, const std::vector<OutputDof>& outputs,
-                                           bool follow_branches) {
+                                           bool follow_branches, const RecordedObserver& observer) {
   const double saved = hbm.parameters().value(parameter);
   hbm.parameters().value(parameter) = value;
   // Two more digits than the branch needs, so that its continuation starts without a Newton
@@ -205,7 +205,7 @@ std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, 
       } else if (!follow_branches) {
         cand.status = "located";
       } else {
-        cand.branch = compute_branch(hbm, options, outputs, cand.start.x, cand.start.omega, window);
+        cand.branch = compute_branch(hbm, options, outputs, cand.start.x, cand.start.omega, window, observer);
         const std::string& reason = cand.branch.continuation.summary.stop_reason;
         cand.status = reason == "closed" ? "isola" : (reason == "reached_end" || reason == "left_range") ? "open" : "failed";
       }

@@ -42,7 +42,7 @@ Eigen::VectorXd embed_in_subharmonic_basis(const FourierBasis& from, const Fouri
 
 SwitchedBranch switch_at_period_doubling(HarmonicBalance& doubled, const FourierBasis& basis, const NfrcOptions& options,
                                          const std::vector<OutputDof>& outputs, const Eigen::VectorXd& x_pd, double omega_pd,
-                                         const Eigen::VectorXd& known) {
+                                         const Eigen::VectorXd& known, const RecordedObserver& leg_observer) {
   const int q = doubled.retained_dofs(), n = static_cast<int>(x_pd.size());
   if (doubled.subharmonic() != 2) throw std::invalid_argument("switch_at_period_doubling: the system must balance harmonics of omega / 2");
   if (known.size() != n + 1) throw std::invalid_argument("switch_at_period_doubling: the known direction has the wrong size");
@@ -61,7 +61,7 @@ SwitchedBranch switch_at_period_doubling(HarmonicBalance& doubled, const Fourier
   Eigen::VectorXd first_odd;
   double largest = 0;
   std::vector<bool> rejoined;  // per leg, in the order computed: away, through
-  const RecordedObserver stop_at_rejoin = [&](const BranchPoint& p, const RecordedPoint&, int index) {
+  const RecordedObserver stop_at_rejoin = [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
     const Eigen::VectorXd odd = odd_part(p.u);
     if (index == 0) {
       first_odd = odd;
@@ -70,7 +70,8 @@ SwitchedBranch switch_at_period_doubling(HarmonicBalance& doubled, const Fourier
     }
     largest = std::max(largest, odd.norm());
     rejoined.back() = index > 0 && (odd.norm() <= 1e-6 * largest || odd.dot(first_odd) < 0);
-    return !rejoined.back();
+    if (rejoined.back()) return false;
+    return !leg_observer || leg_observer(p, rec, index);
   };
   SwitchedBranch s = switch_at_branch_point(doubled, options, outputs, x, omega_pd, direction, true, true, stop_at_rejoin);
   if (rejoined.size() > 0 && rejoined[0]) s.away.continuation.summary.stop_reason = "rejoined";

@@ -164,6 +164,8 @@ void read_parameters(const CaseReader& in, const toml::value& root, CaseDefiniti
   if (c.parameters.find("amplitude") < 0) c.parameters.set("amplitude", 1.0);
 }
 
+}  // namespace
+
 void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   if (const toml::value* h = in.find(root, "harmonic_balance")) {
     in.table(*h, "harmonic_balance");
@@ -274,6 +276,8 @@ void check_forcing_within_harmonics(const CaseReader& in, const toml::value& roo
               "harmonic " + std::to_string(order) + " is not in the list harmonic_balance.harmonics (it would be dropped)");
   }
 }
+
+namespace {
 
 // An output's description labels an axis: longer text would not fit beside it.
 constexpr size_t kLongestDescription = 80;
@@ -389,6 +393,8 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
   }
 }
 
+}  // namespace
+
 // Applies "NAME=VALUE" overrides to the parsed TOML document.
 void apply_overrides(const CaseReader& in, toml::value& root, const std::vector<std::string>& overrides) {
   for (const std::string& o : overrides) {
@@ -479,8 +485,6 @@ void apply_overrides(const CaseReader& in, toml::value& root, const std::vector<
   }
   (void)in;
 }
-
-}  // namespace
 
 CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides) {
   const std::string text = read_bounded_file(path, kMaxCaseFileBytes, "a TOML case file");

@@ -118,4 +118,12 @@ int dof_index(const CaseReader& in, const StructuralModel& m, const toml::value&
 // A property: a number, a parameter name, or {parameter = "mu", scale = 1, offset = 0}.
 ParameterBinding binding(const CaseReader& in, const CaseDefinition& c, const toml::value& v, const std::string& field);
 
+// The case file's readers of its settings, shared by load_case and with_overrides
+// (case_settings.cpp): the [harmonic_balance], [continuation] and [stability] sections onto c,
+// the checks of those settings against the model, and `--set NAME=VALUE` onto a document.
+void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition& c);
+void check_stability_supported(const CaseReader& in, const toml::value& root, const CaseDefinition& c);
+void check_forcing_within_harmonics(const CaseReader& in, const toml::value& root, const CaseDefinition& c);
+void apply_overrides(const CaseReader& in, toml::value& root, const std::vector<std::string>& overrides);
+
 }  // namespace hbtrack

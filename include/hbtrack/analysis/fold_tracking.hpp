@@ -108,9 +108,11 @@ struct IsolaCandidate {
 // onto the limit point, and the branch through each new one followed within the options' omega
 // range until it closes. Stability as options.stability. With follow_branches false only the
 // limit points are located (the cheap check that a validation NFRC's LPs lie on the curves).
+// `observer` sees the points of every branch followed (index 0 starts a branch).
 std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, double value,
                                            const std::vector<std::vector<FoldCurvePoint>>& curves,
                                            const FoldScales& scales, const NfrcOptions& options,
-                                           const std::vector<OutputDof>& outputs, bool follow_branches = true);
+                                           const std::vector<OutputDof>& outputs, bool follow_branches = true,
+                                           const RecordedObserver& observer = {});
 
 }  // namespace hbtrack

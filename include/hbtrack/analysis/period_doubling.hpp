@@ -27,8 +27,9 @@ Eigen::VectorXd embed_in_subharmonic_basis(const FourierBasis& from, const Fouri
 // from the PD (a PD bubble spans a few of an NFRC's steps). Each stops where it rejoins the
 // period-T branch (stop_reason "rejoined": its odd harmonics vanish or change sign; beyond lies
 // the same branch shifted by T): `through` at this PD, `away` at the band's other PD.
+// `leg_observer` sees the legs' points until they rejoin, as switch_at_branch_point's does.
 SwitchedBranch switch_at_period_doubling(HarmonicBalance& doubled, const FourierBasis& basis, const NfrcOptions& options,
                                          const std::vector<OutputDof>& outputs, const Eigen::VectorXd& x_pd, double omega_pd,
-                                         const Eigen::VectorXd& known);
+                                         const Eigen::VectorXd& known, const RecordedObserver& leg_observer = {});
 
 }  // namespace hbtrack

@@ -59,6 +59,12 @@ struct CaseDefinition {
 // (`harmonic_balance.harmonics=10`), applied before the case is read.
 CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// A copy of `c` with "NAME=VALUE" overrides of its settings: named parameters and the
+// [harmonic_balance], [continuation] and [stability] keys, read by the case file's own reader
+// (same keys, defaults and errors as `--set`); `c` itself, and its model, are unchanged. An
+// override of another section (model, elements, ...) is refused: load_case changes those.
+CaseDefinition with_overrides(const CaseDefinition& c, const std::vector<std::string>& overrides);
+
 // The index of the parameter a user named in `field` (a flag, a keyword argument); a CaseError
 // "FIELD: unknown parameter 'NAME' (the case has: ...)" when the case has none of that name.
 int parameter_index(const ParameterSet& parameters, const std::string& name, const std::string& field);
