@@ -16,7 +16,7 @@
 
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/input_file.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
+#include "hbtrack/io/mat_file.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "test_support.hpp"
 

@@ -1,4 +1,5 @@
-#include "hbtrack/io/matrix_readers.hpp"
+#include "hbtrack/io/mat_file.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 
 #include <gtest/gtest.h>
 #include <matio.h>

@@ -8,7 +8,7 @@
 
 #include "cli_common.hpp"
 #include "hbtrack/io/blade_sections_reader.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "hbtrack/model/blade_generator.hpp"
 #include "hbtrack/model/blade_mode_classifier.hpp"

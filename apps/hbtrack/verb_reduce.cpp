@@ -7,7 +7,8 @@
 
 #include "cli_common.hpp"
 #include "hbtrack/io/calculix_reader.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
+#include "hbtrack/io/mat_file.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 #include "hbtrack/io/results_writer.hpp"
 #include "hbtrack/model/craig_bampton.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
