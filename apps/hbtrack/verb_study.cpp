@@ -20,7 +20,7 @@
 
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "result_folder.hpp"
 #include "study_branches.hpp"
 #include "study_comparisons.hpp"

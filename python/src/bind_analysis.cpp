@@ -12,7 +12,7 @@
 #include "gil_release.hpp"
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 
 namespace hbtrack::python {
 
