@@ -1,6 +1,6 @@
 // libFuzzer target: the Matrix Market reader, sparse and dense.
 #include "fuzz_support.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = hbtrack::fuzz::write_input(data, size, ".mtx");

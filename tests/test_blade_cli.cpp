@@ -12,8 +12,8 @@
 #include <random>
 #include <sstream>
 
-#include "hbtrack/io/matrix_readers.hpp"
 #include "cli_support.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 #include "test_support.hpp"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 #include "hbtrack/model/damping.hpp"
 #include "test_support.hpp"
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 #include "test_support.hpp"
 
 using namespace hbtrack;

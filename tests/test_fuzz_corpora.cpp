@@ -17,7 +17,8 @@
 #include "hbtrack/io/calculix_input_nodes.hpp"
 #include "hbtrack/io/calculix_reader.hpp"
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
+#include "hbtrack/io/mat_file.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

@@ -16,8 +16,8 @@
 
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/input_file.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/io/mat_file.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

@@ -10,7 +10,7 @@
 
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/result_tables.hpp"  // options_json, branch rows: shared with the Python module
+#include "hbtrack/results/result_tables.hpp"  // options_json, branch rows: shared with the Python module
 #include "interruption.hpp"
 #include "progress.hpp"
 

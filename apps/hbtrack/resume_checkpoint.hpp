@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 
 namespace hbtrack::cli {
 

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 
 namespace hbtrack::cli {
 

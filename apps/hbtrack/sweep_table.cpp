@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "cli_common.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {

@@ -5,8 +5,8 @@
 
 #include "cli_common.hpp"
 #include "hbtrack/analysis/backbone.hpp"
-#include "hbtrack/io/backbone_tables.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/backbone_tables.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "result_folder.hpp"
 #include "stop_request.hpp"
 

@@ -9,13 +9,13 @@
 
 #include "cli_common.hpp"
 #include "hbtrack/io/blade_sections_reader.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 #include "hbtrack/model/blade_generator.hpp"
 #include "hbtrack/model/blade_mode_classifier.hpp"
 #include "hbtrack/model/calculix_deck.hpp"
 #include "hbtrack/model/section_blade.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "node_table.hpp"
 
 namespace hbtrack::cli {

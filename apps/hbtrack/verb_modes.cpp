@@ -4,8 +4,8 @@
 #include <numbers>
 
 #include "cli_common.hpp"
-#include "hbtrack/io/results_writer.hpp"
 #include "hbtrack/model/damping.hpp"
+#include "hbtrack/results/results_writer.hpp"
 
 namespace hbtrack::cli {
 

@@ -9,10 +9,11 @@
 #include "cli_common.hpp"
 #include "hbtrack/io/calculix_input_nodes.hpp"
 #include "hbtrack/io/calculix_reader.hpp"
-#include "hbtrack/io/matrix_readers.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/io/mat_file.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 #include "hbtrack/model/craig_bampton.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "node_table.hpp"
 
 namespace hbtrack::cli {

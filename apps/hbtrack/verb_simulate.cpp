@@ -13,13 +13,13 @@
 
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
-#include "result_folder.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "hbtrack/timeint/dormand_prince_integrator.hpp"
 #include "hbtrack/timeint/equation_of_motion.hpp"
 #include "hbtrack/timeint/initial_state.hpp"
 #include "hbtrack/timeint/newmark_integrator.hpp"
 #include "hbtrack/timeint/steady_state.hpp"
+#include "result_folder.hpp"
 
 namespace hbtrack::cli {
 

@@ -22,7 +22,7 @@
 
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "python_package.hpp"
 #include "result_folder.hpp"
 #include "step_progress.hpp"

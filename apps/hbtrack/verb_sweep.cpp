@@ -12,7 +12,7 @@
 
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "result_folder.hpp"
 #include "sweep_definition.hpp"
 #include "sweep_table.hpp"

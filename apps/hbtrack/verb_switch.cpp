@@ -9,7 +9,7 @@
 #include "cli_common.hpp"
 #include "hbtrack/analysis/branch_switching.hpp"
 #include "hbtrack/analysis/period_doubling.hpp"
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {

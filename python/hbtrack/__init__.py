@@ -18,7 +18,7 @@ import importlib
 from ._core import core as _core
 from .analysis import backbone, continuation, frc, isolas, limit_point, switch, track
 from .cases import case_from_arrays, load_case
-from .elements import add_python_element
+from .elements import add_python_element, element_types
 from .model import normal_modes, output_harmonics, reduce
 from .results import read_result
 from .settings import with_settings
@@ -29,7 +29,7 @@ if _core is not None:
                            StabilityOptions, SteadyStateOptions)
 
 __all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "switch", "track", "isolas", "limit_point", "simulate",
-           "with_settings", "reduce", "normal_modes", "output_harmonics", "add_python_element", "read_result", "plots", "Case", "ContinuationSection", "ContinuationOptions",
+           "with_settings", "reduce", "normal_modes", "output_harmonics", "add_python_element", "element_types", "read_result", "plots", "Case", "ContinuationSection", "ContinuationOptions",
            "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
 
 

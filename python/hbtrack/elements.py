@@ -1,4 +1,14 @@
-"""Elements written in Python.
+"""The element catalogue, one helper per element type, and elements written in Python.
+
+`element_types()` lists the element types a case file may name, with their keys and properties
+(unit, range, default, doc) as the case reader checks them. For each type there is a function of
+that name here that writes the element's ``[[elements]]`` table (its signature and docstring come
+from the catalogue: ``help(hbtrack.elements.tip_contact)``):
+
+    spring = hbtrack.elements.cubic_spring(["x"], cubic_stiffness=0.1)
+    case = hbtrack.case_from_arrays(M, K, ["x"], elements=[spring], ...)
+
+Elements written in Python:
 
     def cubic(x, v):                       # x, v: (N, k) samples of the element's dofs over a period
         return 0.1 * x**3, 0.3 * x[:, :, None]**2     # forces (N, k) and d f_i/d x_j as (N, k, k)
@@ -12,7 +22,39 @@ does not return are central differences (2k more calls each, step `step` relativ
 signal's size), which cost accuracy: Newton then converges linearly. Parameters live in the
 callable (a closure or an object); they are not case parameters and cannot be tracked.
 """
-from ._core import require_core
+from ._core import core, require_core
+from ._element_helpers import element_helpers
+
+
+def element_types():
+    """The element types a case file may name (``[[elements]]``), from hbtrack's element catalogue.
+
+    Parameters
+    ----------
+    None
+
+    Returns
+    -------
+    dict
+        {type: {"summary": the force law in one line, "dofs": the names of the dofs it takes
+        ([] for any number), "weighted": whether it acts along d = w.x (`weights`), "keys":
+        {name: {"kind", "values" or "range", "default", "doc"}} (the keys that decide how it is
+        built: law, friction, sliders, ...), "variants": [{"choices": {key: value},
+        "properties": {name: {"unit", "range", "default", "doc"}}}]}}. Units are the model's:
+        F force, L length, s time, 1 none; a range is "" (any), "> 0", ">= 0", "!= 0", "> -1"
+        or ">= 1"; a default None means required.
+
+    Examples
+    --------
+    >>> types = hbtrack.element_types()
+    >>> types["regularized_contact"]["variants"][0]["properties"]["width"]["range"]
+    '> 0'
+    """
+    return require_core().element_types()
+
+
+if core is not None:  # without the compiled part there is no catalogue to build them from
+    globals().update(element_helpers(core.element_types()))
 
 
 def add_python_element(case, dofs, force, *, uses_velocity=False, step=1e-6):

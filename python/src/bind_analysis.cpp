@@ -13,7 +13,7 @@
 #include "progress_callback.hpp"
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 #include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {

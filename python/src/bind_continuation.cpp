@@ -12,10 +12,10 @@
 #include "progress_callback.hpp"
 #include "hbtrack/analysis/backbone.hpp"
 #include "hbtrack/analysis/parameter_continuation.hpp"
-#include "hbtrack/io/backbone_tables.hpp"
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/parameter_tables.hpp"
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/backbone_tables.hpp"
+#include "hbtrack/results/parameter_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 #include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {

@@ -1,5 +1,6 @@
-// Elements defined in Python: a callable gets the time samples of the element's displacements
-// and velocities (numpy arrays, N x k) and returns the forces (N x k), optionally with their
+// The element catalogue (the types a case file may name, their keys and properties), and elements
+// defined in Python: a callable gets the time samples of the element's displacements and
+// velocities (numpy arrays, N x k) and returns the forces (N x k), optionally with their
 // derivatives; central differences stand in for the derivatives it does not return.
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
@@ -8,6 +9,7 @@
 #include <stdexcept>
 
 #include "bindings.hpp"
+#include "hbtrack/elements/element_catalog.hpp"
 #include "hbtrack/elements/nonlinear_element.hpp"
 #include "hbtrack/io/case_file.hpp"
 
@@ -125,9 +127,61 @@ class PythonElement final : public NonlinearElement {
   double step_;
 };
 
+py::dict key_dict(const ElementKey& key) {
+  static const char* kinds[] = {"choice", "integer", "integer_rows", "property_rows"};
+  py::dict out;
+  out["kind"] = kinds[static_cast<int>(key.kind)];
+  if (key.kind == ElementKey::Kind::choice) out["values"] = key.values;
+  if (key.kind == ElementKey::Kind::integer || key.kind == ElementKey::Kind::integer_rows) out["range"] = py::make_tuple(key.min, key.max);
+  if (key.fallback.empty())
+    out["default"] = py::none();
+  else if (key.kind == ElementKey::Kind::integer)
+    out["default"] = std::stoi(key.fallback);
+  else
+    out["default"] = key.fallback;
+  out["doc"] = key.doc;
+  return out;
+}
+
+py::dict property_dict(const PropertySpec& p) {
+  py::dict out;
+  out["unit"] = p.unit;
+  out["range"] = to_string(p.range);
+  out["default"] = p.fallback ? py::object(py::float_(*p.fallback)) : py::object(py::none());
+  out["doc"] = p.doc;
+  return out;
+}
+
+// {type: {summary, dofs, weighted, keys, variants: [{choices, properties}]}} from the catalogue.
+py::dict element_types() {
+  py::dict out;
+  for (const ElementType& type : element_catalog()) {
+    py::dict t, keys;
+    t["summary"] = type.summary;
+    t["dofs"] = type.dof_names;
+    t["weighted"] = type.weighted;
+    for (const ElementKey& key : type.keys) keys[py::str(key.name)] = key_dict(key);
+    t["keys"] = keys;
+    py::list variants;
+    for (const ElementSetup& setup : element_variants(type)) {
+      py::dict variant, properties;
+      variant["choices"] = setup.choices;
+      for (const PropertySpec& p : type.build(setup).properties) properties[py::str(p.name)] = property_dict(p);
+      variant["properties"] = properties;
+      variants.append(variant);
+    }
+    t["variants"] = variants;
+    out[py::str(type.type)] = t;
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_elements(py::module_& m) {
+  m.def("element_types", &element_types,
+        "The element catalogue: {type: {summary, dofs, weighted, keys, variants: [{choices, properties}]}} "
+        "(see hbtrack.element_types)");
   m.def(
       "add_python_element",
       [](CaseDefinition& c, const std::vector<std::string>& dofs, py::object force, bool uses_velocity, double step) {

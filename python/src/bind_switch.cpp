@@ -15,7 +15,7 @@
 #include "hbtrack/analysis/branch_switching.hpp"
 #include "hbtrack/analysis/period_doubling.hpp"
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 #include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {

@@ -11,7 +11,7 @@
 #include "gil_release.hpp"
 #include "progress_callback.hpp"
 #include "hbtrack/io/case_file.hpp"
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 #include "hbtrack/timeint/dormand_prince_integrator.hpp"
 #include "hbtrack/timeint/equation_of_motion.hpp"
 #include "hbtrack/timeint/initial_state.hpp"

@@ -1,6 +1,7 @@
 #include "case_reader.hpp"
 
-#include "hbtrack/io/matrix_readers.hpp"
+#include "hbtrack/io/mat_file.hpp"
+#include "hbtrack/io/matrix_market.hpp"
 
 namespace hbtrack {
 

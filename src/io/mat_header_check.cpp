@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "matrix_file_limits.hpp"
+
 namespace hbtrack {
 namespace {
 
@@ -57,7 +59,7 @@ class MatHeaderCheck {
 
  private:
   static constexpr std::uint32_t kMatrix = 14;
-  static constexpr std::uint64_t kMaxSparseDimension = 5'000'000;  // matrix_readers.cpp's kMaxDimension
+  static constexpr std::uint64_t kMaxSparseDimension = matrix_file::kMaxDimension;
   static constexpr std::uint32_t kCompressed = 15;
   static constexpr std::uint64_t kMaxZlibRatio = 1032;
   // From a matrix element's tag: its tag (8), the array flags (8 + 8), the dims tag's type (4).

@@ -1,9 +1,9 @@
-#include "hbtrack/io/continuation_state_file.hpp"
+#include "hbtrack/results/continuation_state_file.hpp"
 
 #include <fstream>
 #include <stdexcept>
 
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 
 namespace hbtrack {
 

@@ -1,4 +1,4 @@
-#include "hbtrack/io/results_writer.hpp"
+#include "hbtrack/results/results_writer.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

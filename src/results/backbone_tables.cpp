@@ -1,8 +1,8 @@
-#include "hbtrack/io/backbone_tables.hpp"
+#include "hbtrack/results/backbone_tables.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 
 namespace hbtrack {
 

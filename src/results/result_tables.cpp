@@ -1,4 +1,4 @@
-#include "hbtrack/io/result_tables.hpp"
+#include "hbtrack/results/result_tables.hpp"
 
 #include <algorithm>
 #include <array>
