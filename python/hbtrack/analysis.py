@@ -2,7 +2,8 @@
 functions. Results are dicts holding what the CLI writes to a result folder:
 
     branch          {column: 1-D array}, the columns and numbers of branch.csv
-    states          2-D array, the rows of states.csv (omega or leg, omega, parameter; then x0, x1, ...)
+    states          2-D array: omega (or leg, omega, parameter), then the harmonic-balance unknowns
+    dof_states      {column: array}, states.csv: every dof's harmonics (docs/outputs.md)
     stability       {column: 1-D array}, stability.csv (frc and isola branches, with stability on)
     special_points  list of dicts, as summary.json's special_points
     special_states  2-D array, special_states.csv (frc only)
@@ -19,7 +20,7 @@ import numpy as np
 from ._core import require_core
 
 
-def frc(case, *, progress=None):
+def frc(case, *, progress=None, element_forces=False):
     """The NFRC of `case` over its frequency range, with stability and special points.
 
     What ``hbtrack frc CASE -o DIR`` computes, returned instead of written.
@@ -33,6 +34,8 @@ def frc(case, *, progress=None):
         the part of the frequency range covered (0 to 1; a folding branch may step back),
         `point` the 0-based row, `omega` its frequency (rad/s). Return False to stop the
         continuation there (stop_reason "stopped_by_callback"); None or True go on.
+    element_forces : bool, optional
+        Also return ``element_forces`` (as ``frc --element-forces`` writes element_forces.csv).
 
     Returns
     -------
@@ -41,7 +44,9 @@ def frc(case, *, progress=None):
         phaseK_NAME per output), ``states`` (rows [omega, x0, ...]), ``stability`` ({column:
         array}, the Floquet exponents and multipliers per point; absent with stability "none"),
         ``special_points`` (list of dicts: type LP/BP/PD/NS, index, omega, located, outputs),
-        ``special_states``, ``summary`` (as summary.json) and ``kind`` = "frc".
+        ``special_states``, ``dof_states``, ``dof_special_states`` ({column: array}: every dof's
+        harmonics, as states.csv and special_states.csv), ``element_forces`` ({column: array},
+        when asked), ``summary`` (as summary.json) and ``kind`` = "frc".
 
     Examples
     --------
@@ -53,7 +58,7 @@ def frc(case, *, progress=None):
     core = require_core()
     if progress is not None and not callable(progress):
         raise ValueError(f"progress: must be callable, got {type(progress).__name__}")
-    result = core.frc(case, progress)
+    result = core.frc(case, progress, bool(element_forces))
     result["kind"] = "frc"
     return result
 
