@@ -15,6 +15,13 @@
 
 namespace hbtrack::test {
 
+// An empty folder for one test's results, per process (ctest runs tests in parallel processes).
+inline std::filesystem::path fresh_temp_dir(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
 struct CliRun {
   int exit_code;
   std::string err;  // everything the command wrote to stderr

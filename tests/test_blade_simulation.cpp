@@ -12,6 +12,7 @@
 #include "cli_support.hpp"
 #include "hbtrack/hbm/harmonic_balance.hpp"
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -64,7 +65,8 @@ TEST(BladeSimulation, NewmarkStaysOnTheHbmOrbitAtTheContactResonance) {
   const hbtrack::CaseDefinition c = hbtrack::load_case(blade, window);
   hbtrack::HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const std::vector<double>& state = states[last];
-  const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(state.data() + 1, static_cast<Eigen::Index>(state.size() - 1));
+  const std::vector<std::string> state_header = hbtrack::test::csv_header(dir / "hbm" / "states.csv");
+  const Eigen::VectorXd x = hbtrack::unknowns_from_state(hbm, {state_header.begin() + 1, state_header.end()}, {state.begin() + 1, state.end()});
   ASSERT_EQ(x.size(), hbm.unknowns());
   const Eigen::VectorXd full = hbm.expand(x, state[0]);
   const int n = static_cast<int>(c.model.dof_names.size()), harmonics = c.harmonic_balance.harmonics;

@@ -1,6 +1,5 @@
 // `hbtrack export DIR --format h5`: a result folder as one HDF5 file, read back with HDF5's C API
-// as any reader would (h5py, h5read): the columns as branch.csv prints them, the state unknowns as
-// one matrix, the special points and summary.json; and bad input refused in one line.
+// as any reader would (h5py, h5read): the columns as branch.csv and states.csv print them, the special points and summary.json; and bad input refused in one line.
 // (The .mat format is read back with scipy in python/tests/test_export.py.)
 #include <gtest/gtest.h>
 #include <hdf5.h>
@@ -106,13 +105,13 @@ TEST(ExportCli, H5HoldsTheTablesSpecialPointsAndSummaryAsTheFolderDoes) {
     EXPECT_EQ(omega[i], branch[i].at("omega")) << "row " << i;
     EXPECT_EQ(max_x[i], branch[i].at("max_x")) << "row " << i;
   }
-  // states.csv: omega, x0, x1, ... gathered as one rows x unknowns matrix.
+  // states.csv: every column (omega, x_h0, x_c1, x_s1, ...) one dataset, as branch.csv's.
   const auto states = hbtrack::test::csv_records(folder / "states.csv");
-  const size_t unknowns = hbtrack::test::csv_header(folder / "states.csv").size() - 1;
-  std::vector<hsize_t> dims;
-  const std::vector<double> x = read_doubles(file, "states/x", &dims);
-  ASSERT_EQ(dims, (std::vector<hsize_t>{states.size(), unknowns}));
-  EXPECT_EQ(x[unknowns + 1], states[1].at("x1"));
+  for (const char* name : {"x_h0", "x_c1", "x_s3"}) {
+    const std::vector<double> column = read_doubles(file, std::string("states/") + name);
+    ASSERT_EQ(column.size(), states.size()) << name;
+    EXPECT_EQ(column[1], states[1].at(name)) << name;
+  }
 
   const json summary = json::parse(std::ifstream(folder / "summary.json"));
   const std::vector<std::string> summary_json = read_strings(file, "summary_json");

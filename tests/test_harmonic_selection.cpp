@@ -255,7 +255,7 @@ TEST(HarmonicSelection, TheCliNamesTheColumnsByTheHarmonicsBalanced) {
   const std::vector<std::string> expected{"omega", "stable", "max_x", "min_x", "h1_x", "h3_x", "h5_x", "h7_x",
                                           "phase1_x", "phase3_x", "phase5_x", "phase7_x"};
   EXPECT_EQ(header, expected);
-  EXPECT_EQ(test::csv_header(out / "states.csv").size(), 9u);  // omega and 8 unknowns
+  EXPECT_EQ(test::csv_header(out / "states.csv").size(), 9u);  // omega and x's 8 coefficients (x_c1, x_s1, ..., x_s7)
   std::ifstream summary(out / "summary.json");
   const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("\"harmonics\": [\n"), std::string::npos) << "the list as given in options.harmonic_balance";

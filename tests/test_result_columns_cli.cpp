@@ -52,8 +52,8 @@ std::map<std::string, size_t> column_index(const std::vector<std::string>& heade
   return index;
 }
 
-// Duffing at H = 7: one dof, so states.csv holds its coefficients [a0, a1, b1, ..., a7, b7]
-// directly (nothing condensed), and it folds, so the branch has stable and unstable points.
+// Duffing at H = 7: one dof x, so states.csv holds its harmonics x_h0, x_c1, x_s1, ..., x_c7,
+// x_s7 (nothing condensed), and it folds, so the branch has stable and unstable points.
 class ResultColumns : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -81,19 +81,27 @@ TEST_F(ResultColumns, HistoricalColumnsComeFirstThenEveryHarmonicAndPhase) {
 TEST_F(ResultColumns, MagnitudesAndPhasesAreThoseOfTheStatesCoefficients) {
   const auto branch = csv_numbers(out_ / "branch.csv"), states = csv_numbers(out_ / "states.csv");
   const auto col = column_index(csv_header(out_ / "branch.csv"));
+  std::vector<std::string> state_columns{"omega", "x_h0"};
+  for (int k = 1; k <= kHarmonics; ++k)
+    for (const char* part : {"x_c", "x_s"}) {
+      std::string name = part;
+      name += std::to_string(k);
+      state_columns.push_back(name);
+    }
+  ASSERT_EQ(csv_header(out_ / "states.csv"), state_columns);
   ASSERT_EQ(branch.size(), states.size());
   ASSERT_GT(branch.size(), 20u);
   for (size_t i = 0; i < branch.size(); ++i) {
     const auto& b = branch[i];
-    const auto& s = states[i];  // omega, a0, a1, b1, ..., a7, b7
+    const auto& s = states[i];  // omega, the mean, a1, b1, ..., a7, b7
     ASSERT_EQ(s.size(), 2u + 2 * kHarmonics);
     EXPECT_EQ(b[col.at("omega")], s[0]);
     // Both files print 17 digits of the same doubles: the same formulas agree to round-off
     // (4 ulps of the largest coefficient, for hypot and atan2 of identical inputs).
     const double scale = std::abs(b[col.at("max_x")]) + std::abs(b[col.at("min_x")]);
     const double tolerance = 4 * std::numeric_limits<double>::epsilon() * scale;
-    EXPECT_NEAR(b[col.at("h0_x")], 0.5 * s[1], tolerance) << "row " << i;
-    double largest = std::abs(0.5 * s[1]);
+    EXPECT_NEAR(b[col.at("h0_x")], s[1], tolerance) << "both the mean, row " << i;
+    double largest = std::abs(s[1]);
     for (int k = 1; k <= kHarmonics; ++k) largest = std::max(largest, std::hypot(s[static_cast<size_t>(2 * k)], s[static_cast<size_t>(2 * k + 1)]));
     for (int k = 1; k <= kHarmonics; ++k) {
       const double a = s[static_cast<size_t>(2 * k)], bk = s[static_cast<size_t>(2 * k + 1)];

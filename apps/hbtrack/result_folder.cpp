@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "hbtrack/results/state_columns.hpp"
+
 namespace hbtrack::cli {
 
 namespace {
@@ -82,17 +84,34 @@ nlohmann::json read_summary(const std::string& dir) {
   }
 }
 
-HbmState read_hbm_state(const std::string& path, long point) {
-  const CsvTable t = read_csv_table(path);
-  if (t.header.size() < 2 || t.header[0] != "omega") throw CaseError(path + ":1: expected the header omega,x0,x1,...");
+namespace {
+// A state table of `path` whose row `point` exists.
+CsvTable read_state_table(const std::string& path, long point) {
+  CsvTable t = read_csv_table(path);
+  if (t.header.size() < 2 || t.header[0] != "omega") throw CaseError(path + ":1: expected the header omega, then the dofs' harmonics");
   if (point < 0 || point >= static_cast<long>(t.rows.size()))
     throw CaseError("--point: " + std::to_string(point) + " is beyond the last point of " + path + " (" + std::to_string(t.rows.size()) +
                     " points, from 0)");
-  const std::vector<double>& row = t.rows[static_cast<size_t>(point)];
-  HbmState s;
-  s.omega = row[0];
-  s.x = Eigen::Map<const Eigen::VectorXd>(row.data() + 1, static_cast<Eigen::Index>(row.size() - 1));
-  return s;
+  return t;
+}
+}  // namespace
+
+HbmState read_hbm_state(const std::string& path, long point, const HarmonicBalance& hbm) {
+  const CsvTable t = read_state_table(path, point);
+  return {t.rows[static_cast<size_t>(point)][0], read_unknowns(t, static_cast<size_t>(point), 1, hbm)};
+}
+
+double read_state_omega(const std::string& path, long point) { return read_state_table(path, point).rows[static_cast<size_t>(point)][0]; }
+
+Eigen::VectorXd read_unknowns(const CsvTable& table, size_t row, size_t first, const HarmonicBalance& hbm) {
+  const std::vector<std::string> columns(table.header.begin() + static_cast<long>(first), table.header.end());
+  const std::vector<double>& cells = table.rows[row];
+  const std::vector<double> values(cells.begin() + static_cast<long>(std::min(first, cells.size())), cells.end());
+  try {
+    return unknowns_from_state(hbm, columns, values);
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(table.path + ":1: " + e.what());
+  }
 }
 
 std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinition& plain) {

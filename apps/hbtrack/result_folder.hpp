@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/hbm/harmonic_balance.hpp"
 #include "hbtrack/io/case_file.hpp"
 
 namespace hbtrack::cli {
@@ -30,12 +31,18 @@ struct ResultFolderContents {
 };
 ResultFolderContents list_result_folder(const std::string& dir);
 
-// Row `point` (0-based, as in branch.csv) of a table whose columns are omega, x0, x1, ...
+// Row `point` (0-based, as in branch.csv) of a table whose columns are omega, then the dof
+// columns (hbtrack/results/state_columns.hpp) or, as written before them, the unknowns x0, x1, ...:
+// the unknowns of `hbm` (x in the unknown layout as it is: the caller checks its size).
 struct HbmState {
   double omega = 0;
   Eigen::VectorXd x;
 };
-HbmState read_hbm_state(const std::string& path, long point);
+HbmState read_hbm_state(const std::string& path, long point, const HarmonicBalance& hbm);
+// Its omega alone (before the case's system is built: `frc --from` starts its range there).
+double read_state_omega(const std::string& path, long point);
+// The unknowns of `hbm` from the columns `first` on of row `row` of `table`, either layout.
+Eigen::VectorXd read_unknowns(const CsvTable& table, size_t row, size_t first, const HarmonicBalance& hbm);
 
 // The settings DIR/summary.json records (parameters, harmonic balance), as case overrides: the
 // case then rebuilds the harmonic balance system whose unknowns the folder's states hold.

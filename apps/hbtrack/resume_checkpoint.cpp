@@ -13,6 +13,7 @@ using nlohmann::json;
 
 json branch_settings(json options) {
   options.erase("case");
+  options["harmonic_balance"].erase("retained_dofs");  // follows from the rest; absent from older checkpoints
   options["continuation"].erase("max_points");
   options["continuation"].erase("wall_time_limit");
   return options;

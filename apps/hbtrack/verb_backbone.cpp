@@ -7,6 +7,7 @@
 #include "hbtrack/analysis/backbone.hpp"
 #include "hbtrack/results/backbone_tables.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "result_folder.hpp"
 #include "stop_request.hpp"
 
@@ -45,7 +46,7 @@ int run_backbone(const BackboneCliOptions& o) {
   summary["options"]["backbone"] = backbone_options_json(options);
   ensure_directory(dir);
   CsvAppender branch(dir + "/branch.csv", backbone_header(c, hbm.basis().harmonic_numbers()));
-  CsvAppender states(dir + "/states.csv", backbone_state_header(hbm.unknowns()));
+  CsvAppender states(dir + "/states.csv", dof_state_header(hbm));
   write_json_atomically(dir + "/summary.json", summary);
 
   Progress progress(o.common.quiet);
@@ -55,7 +56,7 @@ int run_backbone(const BackboneCliOptions& o) {
   try {
     r = compute_backbone(hbm, options, c.outputs, [&](const BranchPoint& p, const BackbonePoint& point, int index) {
       branch.append(backbone_row(point));
-      states.append(backbone_state_row(point, p.u, hbm.unknowns()));
+      states.append(dof_state_row(hbm, point.omega, point.amplitude * p.u.head(hbm.unknowns())));
       progress.update(index, point.omega, point.recorded, c.outputs);
       return !stop.requested();
     });

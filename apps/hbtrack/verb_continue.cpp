@@ -7,6 +7,7 @@
 #include "hbtrack/analysis/parameter_continuation.hpp"
 #include "hbtrack/results/parameter_tables.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "result_folder.hpp"
 #include "stop_request.hpp"
 
@@ -39,7 +40,7 @@ int run_continue(const ContinueOptions& o) {
   summary["options"]["continue"] = parameter_continuation_options(o.param, omega, start, end);
   ensure_directory(dir);
   CsvAppender branch(dir + "/branch.csv", parameter_branch_header(c, o.param));
-  CsvAppender states(dir + "/states.csv", state_header(hbm.unknowns()));
+  CsvAppender states(dir + "/states.csv", dof_state_header(hbm));
   write_json_atomically(dir + "/summary.json", summary);
 
   Progress progress(o.common.quiet);
@@ -51,7 +52,7 @@ int run_continue(const ContinueOptions& o) {
     r = continue_in_parameter(hbm, parameter, omega, start, end, c.nfrc, c.outputs,
                               [&](const BranchPoint& p, const ParameterBranchPoint& point, int index) {
                                 branch.append(parameter_branch_row(point));
-                                states.append(state_row(omega, p.u));
+                                states.append(dof_state_row(hbm, omega, p.u));
                                 progress.update(index, p.lambda, point.recorded, c.outputs);
                                 return !stop.requested();
                               });
@@ -68,8 +69,8 @@ int run_continue(const ContinueOptions& o) {
   add_parameter_branch_summary(summary, c, hbm, r, parameter);
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};
-  CsvAppender special_states(dir + "/special_states.csv", state_header(hbm.unknowns()));
-  for (const auto& sp : r.continuation.special_points) special_states.append(state_row(omega, sp.u));
+  CsvAppender special_states(dir + "/special_states.csv", dof_state_header(hbm));
+  for (const auto& sp : r.continuation.special_points) special_states.append(dof_state_row(hbm, omega, sp.u));
   write_json_atomically(dir + "/summary.json", summary);
   if (!r.continuation.success())
     throw RunFailed{"continuation stopped: " + stop_reason + " after " + std::to_string(s.points) + " points (kept in " + dir + ")"};

@@ -11,7 +11,9 @@
 #include "failure_advice.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/results/continuation_state_file.hpp"
+#include "hbtrack/results/element_force_table.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "result_folder.hpp"
 #include "resume_checkpoint.hpp"
 #include "stop_request.hpp"
@@ -28,6 +30,7 @@ struct FrcOptions {
   std::string from;       // a result folder whose point starts the NFRC
   std::string point;      // its row in states.csv (0-based; default: the last)
   double time_limit = 0;  // seconds, 0 for none
+  bool element_forces = false;  // element_forces.csv: every element's force per point
 };
 
 // The case as the NFRC from a point of another result sees it: that result's parameters and
@@ -38,7 +41,7 @@ CaseDefinition case_from_point(const FrcOptions& options, HbmState& start, long&
   const std::string states = options.from + "/states.csv";
   const long rows = static_cast<long>(read_csv_table(states).rows.size());
   row = options.point.empty() ? rows - 1 : parse_integer("--point", options.point, 0);
-  start = read_hbm_state(states, row);
+  start.omega = read_state_omega(states, row);  // the unknowns once the case's system is built
   if (!(start.omega > 0) || !std::isfinite(start.omega))
     throw CaseError(states + ": point " + std::to_string(row) + ": omega must be > 0 and finite");
   char omega[64];
@@ -72,6 +75,7 @@ int run_frc(const FrcOptions& options) {
   long start_row = -1;
   const CaseDefinition c = options.from.empty() ? load_case(o.case_path, o.sets) : case_from_point(options, start, start_row);
   HarmonicBalance hbm = make_system(c);
+  if (!options.from.empty()) start = read_hbm_state(options.from + "/states.csv", start_row, hbm);
   if (!options.from.empty() && start.x.size() != hbm.unknowns())
     throw CaseError(options.from + "/states.csv: holds " + std::to_string(start.x.size()) + " unknowns, the case's harmonic balance has " +
                     std::to_string(hbm.unknowns()) + " (results of another case?)");
@@ -85,7 +89,7 @@ int run_frc(const FrcOptions& options) {
   const int rows_kept = resumed ? resumed->state.points : 0;
   // A resumed run appends to its CSVs; a folder that does not fit its checkpoint is bad input.
   CsvAppender branch = open_result_csv(dir + "/branch.csv", branch_header(c), resumed.has_value(), rows_kept);
-  CsvAppender states = open_result_csv(dir + "/states.csv", state_header(hbm.unknowns()), resumed.has_value(), rows_kept);
+  CsvAppender states = open_result_csv(dir + "/states.csv", dof_state_header(hbm), resumed.has_value(), rows_kept);
   // stability.csv: several rows per point (its Floquet exponents), so resumed by point index.
   std::optional<CsvAppender> stability;
   if (c.nfrc.stability.enabled()) {
@@ -99,6 +103,8 @@ int run_frc(const FrcOptions& options) {
       }
     }
   }
+  std::optional<CsvAppender> forces;
+  if (options.element_forces) forces.emplace(open_result_csv(dir + "/element_forces.csv", element_force_header(hbm), resumed.has_value(), rows_kept));
   int point = rows_kept;
   if (resumed) summary["resumed_at_point"] = rows_kept;
   write_json_atomically(dir + "/summary.json", summary);
@@ -112,7 +118,8 @@ int run_frc(const FrcOptions& options) {
   restart.on_state = [&](const ContinuationState& state) { write_continuation_state(dir + "/checkpoint.json", state, settings); };
   const RecordedObserver record = [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
     branch.append(branch_row(rec));
-    states.append(state_row(p.lambda, p.u));
+    states.append(dof_state_row(hbm, p.lambda, p.u));
+    if (forces) forces->append(element_force_row(hbm, p.lambda, p.u));
     if (stability)
       for (const auto& row : stability_rows(point, rec)) stability->append(row);
     ++point;
@@ -134,8 +141,8 @@ int run_frc(const FrcOptions& options) {
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};
   // The state of each special point, in summary order: `track` starts from a limit point's.
-  CsvAppender special_states(dir + "/special_states.csv", state_header(hbm.unknowns()));
-  for (const auto& sp : r.continuation.special_points) special_states.append(state_row(sp.lambda, sp.u));
+  CsvAppender special_states(dir + "/special_states.csv", dof_state_header(hbm));
+  for (const auto& sp : r.continuation.special_points) special_states.append(dof_state_row(hbm, sp.lambda, sp.u));
   std::vector<std::string> warnings =
       special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start));
   for (std::string& w : unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
@@ -190,8 +197,8 @@ int run_solve(const CommonOptions& o, double omega) {
     }
     CsvAppender branch(o.out_dir + "/branch.csv", branch_header(c));
     branch.append(branch_row(rec));
-    CsvAppender states(o.out_dir + "/states.csv", state_header(hbm.unknowns()));
-    states.append(state_row(omega, s.x));
+    CsvAppender states(o.out_dir + "/states.csv", dof_state_header(hbm));
+    states.append(dof_state_row(hbm, omega, s.x));
     add_outputs(summary, c, s.recorded);
   }
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
@@ -215,6 +222,8 @@ void add_frc_verbs(CLI::App& app, VerbList& verbs) {
                   "start from a point of this frc/solve/continue result (its parameters and harmonic balance), towards omega_end")
       ->type_name("DIR");
   frc->add_option("--point", frc_options.point, "row of DIR/states.csv to start from (0-based; default the last)")->type_name("INT");
+  frc->add_flag("--element-forces", frc_options.element_forces,
+                "also write element_forces.csv: each nonlinear element's force harmonics, max and min per point");
   add_time_limit_option(frc, frc_options.time_limit);
   verbs.push_back({frc, [] { return run_frc(frc_options); }});
   CLI::App* solve = app.add_subcommand("solve", "one periodic solution at a fixed frequency");

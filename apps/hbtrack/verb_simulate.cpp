@@ -75,7 +75,7 @@ int run_simulate(const SimulateOptions& o) {
   double omega = omega_flag.value_or(0.0);
   Eigen::VectorXd orbit;  // harmonics of every dof of the start orbit
   if (!o.from.empty()) {
-    const HbmState s = read_hbm_state(o.from + "/states.csv", point);
+    const HbmState s = read_hbm_state(o.from + "/states.csv", point, hbm);
     if (s.x.size() != hbm.unknowns())
       throw CaseError(o.from + "/states.csv: holds " + std::to_string(s.x.size()) + " unknowns, the case's harmonic balance has " +
                       std::to_string(hbm.unknowns()) + " (results of another case?)");

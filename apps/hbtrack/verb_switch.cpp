@@ -10,6 +10,7 @@
 #include "hbtrack/analysis/branch_switching.hpp"
 #include "hbtrack/analysis/period_doubling.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -53,12 +54,12 @@ int run_switch(const SwitchOptions& o) {
     c.harmonic_balance = period_doubled_options(period_one.harmonic_balance);
   }
   HarmonicBalance system = make_system(c);
-  const HbmState bp = read_hbm_state(o.from + "/special_states.csv", point - 1);
+  const HbmState bp = read_hbm_state(o.from + "/special_states.csv", point - 1, hbm);
   const long row = sp.value("index", -1L);
   const long rows = static_cast<long>(read_csv_table(o.from + "/states.csv").rows.size());
   if (row < 0 || row >= rows) throw CaseError(path + ": special point " + std::to_string(point) + ": index out of the branch");
-  const HbmState before = read_hbm_state(o.from + "/states.csv", std::max(row - 1, 0L));
-  const HbmState after = read_hbm_state(o.from + "/states.csv", std::min(row + 1, rows - 1));
+  const HbmState before = read_hbm_state(o.from + "/states.csv", std::max(row - 1, 0L), hbm);
+  const HbmState after = read_hbm_state(o.from + "/states.csv", std::min(row + 1, rows - 1), hbm);
   if (bp.x.size() != hbm.unknowns() || before.x.size() != hbm.unknowns())
     throw CaseError(o.from + ": its states hold " + std::to_string(bp.x.size()) + " unknowns, the case has " + std::to_string(hbm.unknowns()) +
                     " (results of another case?)");
@@ -82,19 +83,19 @@ int run_switch(const SwitchOptions& o) {
   }
   // One piece: the `through` leg reversed, then the `away` leg without its first point (shared).
   CsvAppender branch(dir + "/branch.csv", branch_header(c));
-  CsvAppender states(dir + "/states.csv", state_header(system.unknowns()));
+  CsvAppender states(dir + "/states.csv", dof_state_header(system));
   const int through = static_cast<int>(s.through.recorded.size());
   for (int i = through - 1; i >= 0; --i) {
     branch.append(branch_row(s.through.recorded[static_cast<size_t>(i)]));
-    states.append(state_row(s.through.continuation.points[static_cast<size_t>(i)].lambda, s.through.continuation.points[static_cast<size_t>(i)].u));
+    states.append(dof_state_row(system, s.through.continuation.points[static_cast<size_t>(i)].lambda, s.through.continuation.points[static_cast<size_t>(i)].u));
   }
   const int shift = through > 0 ? through - 1 : 0;  // row of the away leg's point i: shift + i
   for (size_t i = through > 0 ? 1 : 0; i < s.away.recorded.size(); ++i) {
     branch.append(branch_row(s.away.recorded[i]));
-    states.append(state_row(s.away.continuation.points[i].lambda, s.away.continuation.points[i].u));
+    states.append(dof_state_row(system, s.away.continuation.points[i].lambda, s.away.continuation.points[i].u));
   }
   json points = json::array();
-  CsvAppender special_states(dir + "/special_states.csv", state_header(system.unknowns()));
+  CsvAppender special_states(dir + "/special_states.csv", dof_state_header(system));
   for (const auto* leg : {&s.through, &s.away})
     for (const auto& p : leg->continuation.special_points) {
       const int index = leg == &s.through ? through - 1 - p.index : shift + p.index;
@@ -102,7 +103,7 @@ int run_switch(const SwitchOptions& o) {
       j["parameters"] = summary["options"]["parameters"];
       add_outputs(j, c, record_point(system, p.u, p.lambda, c.outputs));
       points.push_back(j);
-      special_states.append(state_row(p.lambda, p.u));
+      special_states.append(dof_state_row(system, p.lambda, p.u));
     }
   const auto& a = s.away.continuation.summary;
   const auto& b = s.through.continuation.summary;

@@ -12,6 +12,7 @@
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/results/continuation_state_file.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "result_folder.hpp"
 #include "resume_checkpoint.hpp"
 #include "stop_request.hpp"
@@ -64,7 +65,7 @@ CaseDefinition case_as_in(const CommonOptions& o, const std::string& dir) {
 }
 
 // The starting limit point: the lp-th (from 1) LP of DIR/summary.json and its state.
-HbmState starting_fold(const std::string& dir, long lp) {
+HbmState starting_fold(const std::string& dir, long lp, const HarmonicBalance& hbm) {
   const json summary = read_summary(dir);
   const std::string path = dir + "/summary.json";
   if (!summary.contains("special_points") || !summary["special_points"].is_array())
@@ -78,7 +79,7 @@ HbmState starting_fold(const std::string& dir, long lp) {
     for (const auto& sp : special) count += sp.value("type", "") == "LP";
     throw CaseError("--lp: " + std::to_string(lp) + " is beyond the " + std::to_string(count) + " limit points of " + path);
   }
-  return read_hbm_state(dir + "/special_states.csv", row);
+  return read_hbm_state(dir + "/special_states.csv", row, hbm);
 }
 
 // After a failed tracking run: the elements whose law the fold systems cannot differentiate, the
@@ -122,7 +123,7 @@ int run_track(TrackOptions o) {
   const double start_value = hbm.parameters().value(parameter);
   if (!(tracking.parameter_min <= start_value && start_value <= tracking.parameter_max))
     throw CaseError("--range: must contain " + o.param + " = " + std::to_string(start_value) + " of the limit point");
-  const HbmState start = starting_fold(o.from, lp);
+  const HbmState start = starting_fold(o.from, lp, hbm);
   if (start.x.size() != hbm.unknowns())
     throw CaseError(o.from + "/special_states.csv: holds " + std::to_string(start.x.size()) + " unknowns, the case has " +
                     std::to_string(hbm.unknowns()) + " (results of another case?)");
@@ -139,7 +140,7 @@ int run_track(TrackOptions o) {
   lock_result_folder(dir);
   const int rows_kept = resumed ? resumed->state.curve_points : 0;
   std::vector<std::string> state_cols{"leg", "omega", o.param};
-  for (int i = 0; i < hbm.unknowns(); ++i) state_cols.push_back("x" + std::to_string(i));
+  for (const std::string& column : dof_state_columns(hbm)) state_cols.push_back(column);
   CsvAppender branch = open_result_csv(dir + "/branch.csv", tracking_header(c, o.param), resumed.has_value(), rows_kept);
   CsvAppender states = open_result_csv(dir + "/states.csv", state_cols, resumed.has_value(), rows_kept);
   if (resumed) summary["resumed_at_point"] = rows_kept;
@@ -160,7 +161,8 @@ int run_track(TrackOptions o) {
         [&](const FoldCurvePoint& p, int index) {
           branch.append(tracking_row(p));
           std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
-          row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
+          const std::vector<double> dofs = dof_state_values(hbm, p.x, p.omega, parameter, p.parameter);
+          row.insert(row.end(), dofs.begin(), dofs.end());
           states.append(row);
           progress.update(index, p.omega, p.parameter, p.leg, p.recorded, c.outputs);
           return !stop.requested();
@@ -200,20 +202,22 @@ int run_track(TrackOptions o) {
 }
 
 // The points of a tracking result folder, as curve points (outputs are not needed).
-std::vector<FoldCurvePoint> read_tracking_curve(const std::string& dir, const std::string& parameter, int unknowns) {
+std::vector<FoldCurvePoint> read_tracking_curve(const std::string& dir, const std::string& parameter, const HarmonicBalance& hbm) {
   const CsvTable t = read_csv_table(dir + "/states.csv");
   const int leg = t.column("leg"), omega = t.column("omega"), gamma = t.column(parameter);
-  const int first_x = t.column("x0");
-  if (static_cast<int>(t.header.size()) - first_x != unknowns)
+  const int first_x = std::max({leg, omega, gamma}) + 1;  // the dofs' harmonics (or x0, x1, ...) follow the leading columns
+  const int unknowns = hbm.unknowns();
+  if (is_unknown_layout({t.header.begin() + first_x, t.header.end()}) && static_cast<int>(t.header.size()) - first_x != unknowns)
     throw CaseError(t.path + ":1: holds " + std::to_string(t.header.size() - static_cast<size_t>(first_x)) + " unknowns, the case has " +
                     std::to_string(unknowns) + " (results of another case?)");
   std::vector<FoldCurvePoint> curve;
-  for (const auto& row : t.rows) {
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    const std::vector<double>& row = t.rows[i];
     FoldCurvePoint p;
     p.leg = static_cast<int>(row[static_cast<size_t>(leg)]);
     p.omega = row[static_cast<size_t>(omega)];
     p.parameter = row[static_cast<size_t>(gamma)];
-    p.x = Eigen::Map<const Eigen::VectorXd>(row.data() + first_x, unknowns);
+    p.x = read_unknowns(t, i, static_cast<size_t>(first_x), hbm);
     curve.push_back(std::move(p));
   }
   return curve;
@@ -235,7 +239,7 @@ int run_isolas(const IsolaOptions& o) {
   HarmonicBalance hbm = make_system(c);
   const int parameter = parameter_index(hbm.parameters(), parameter_name, "--param");
   std::vector<std::vector<FoldCurvePoint>> curves;
-  for (const std::string& dir : o.from) curves.push_back(read_tracking_curve(dir, parameter_name, hbm.unknowns()));
+  for (const std::string& dir : o.from) curves.push_back(read_tracking_curve(dir, parameter_name, hbm));
   double lo = value, hi = value;
   for (const auto& curve : curves)
     for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
@@ -261,14 +265,14 @@ int run_isolas(const IsolaOptions& o) {
       const std::string dir = o.common.out_dir + "/" + name;
       ensure_directory(dir);
       CsvAppender branch(dir + "/branch.csv", branch_header(c));
-      CsvAppender states(dir + "/states.csv", state_header(hbm.unknowns()));
+      CsvAppender states(dir + "/states.csv", dof_state_header(hbm));
       std::optional<CsvAppender> stability;
       if (c.nfrc.stability.enabled()) stability.emplace(dir + "/stability.csv", stability_header());
       for (size_t i = 0; i < f.branch.recorded.size(); ++i) {
         branch.append(branch_row(f.branch.recorded[i]));
         if (stability)
           for (const auto& row : stability_rows(static_cast<int>(i), f.branch.recorded[i])) stability->append(row);
-        states.append(state_row(f.branch.continuation.points[i].lambda, f.branch.continuation.points[i].u));
+        states.append(dof_state_row(hbm, f.branch.continuation.points[i].lambda, f.branch.continuation.points[i].u));
       }
       const auto& s = f.branch.continuation.summary;
       j["folder"] = name;

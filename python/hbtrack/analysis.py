@@ -2,7 +2,8 @@
 functions. Results are dicts holding what the CLI writes to a result folder:
 
     branch          {column: 1-D array}, the columns and numbers of branch.csv
-    states          2-D array, the rows of states.csv (omega or leg, omega, parameter; then x0, x1, ...)
+    states          2-D array: omega (or leg, omega, parameter), then the harmonic-balance unknowns
+    dof_states      {column: array}, states.csv: every dof's harmonics (docs/outputs.md)
     stability       {column: 1-D array}, stability.csv (frc and isola branches, with stability on)
     special_points  list of dicts, as summary.json's special_points
     special_states  2-D array, special_states.csv (frc only)
@@ -27,7 +28,7 @@ from .starts import start_state
 _EMPTY_RANGE = "omega_end: must differ from omega_start"
 
 
-def frc(case, *, start=None, point=None, progress=None, **settings):
+def frc(case, *, start=None, point=None, progress=None, element_forces=False, **settings):
     """The NFRC of `case` over its frequency range, with stability and special points.
 
     What ``hbtrack frc CASE -o DIR`` computes, returned instead of written; with `start`, what
@@ -50,6 +51,8 @@ def frc(case, *, start=None, point=None, progress=None, **settings):
         the part of the frequency range covered so far (0 to 1, as the CLI's progress line),
         `point` the 0-based row, `omega` its frequency (rad/s). Return False to stop the
         continuation there (stop_reason "stopped_by_callback"); None or True go on.
+    element_forces : bool, optional
+        Also return ``element_forces`` (as ``frc --element-forces`` writes element_forces.csv).
     **settings : dict, optional
         The case's settings for this run only (`case` unchanged), as :func:`hbtrack.with_settings`
         takes them: ``continuation={"omega_start": 0.5}``, ``harmonic_balance={...}``,
@@ -62,8 +65,10 @@ def frc(case, *, start=None, point=None, progress=None, **settings):
         phaseK_NAME per output), ``states`` (rows [omega, x0, ...]), ``stability`` ({column:
         array}, the Floquet exponents and multipliers per point; absent with stability "none"),
         ``special_points`` (list of dicts: type LP/BP/PD/NS, index, omega, located, outputs),
-        ``special_states``, ``summary`` (as summary.json; with `start`, ``started_from`` =
-        {point, omega} and ``folder`` for a result read from one) and ``kind`` = "frc".
+        ``special_states``, ``dof_states``, ``dof_special_states`` ({column: array}: every dof's
+        harmonics, as states.csv and special_states.csv), ``element_forces`` ({column: array},
+        when asked), ``summary`` (as summary.json; with `start`, ``started_from`` = {point, omega}
+        and ``folder`` for a result read from one) and ``kind`` = "frc".
 
     Raises
     ------
@@ -101,7 +106,7 @@ def frc(case, *, start=None, point=None, progress=None, **settings):
             raise
         raise ValueError(f"start: point {row} is at omega_end = {omega}: give the new end with "
                          "continuation={'omega_end': VALUE}") from None
-    result = core.frc(run_case, progress, x)
+    result = core.frc(run_case, progress, x, bool(element_forces))
     if start is not None:
         result["summary"]["started_from"] = {"point": row, "omega": omega}
         if isinstance(start, dict) and "folder" in start:

@@ -535,4 +535,5 @@ def state_harmonics(result, point, largest=4):
     blocks[rows] = selected
     first = np.hypot(blocks[1], blocks[2]) if harmonics >= 1 else np.abs(blocks[0])
     keep = sorted(np.argsort(first)[::-1][:largest])
-    return {f"retained dof {k + 1}": blocks[:, k] for k in keep}
+    names = result["summary"]["options"]["harmonic_balance"].get("retained_dofs")  # absent before the dof columns
+    return {(names[k] if names else f"retained dof {k + 1}"): blocks[:, k] for k in keep}

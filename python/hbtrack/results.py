@@ -103,9 +103,12 @@ def read_result(folder):
     -------
     dict
         ``kind``, ``folder``, ``summary`` (summary.json), ``special_points``, and as present:
-        ``branch``, ``signals``, ``stability`` ({column: array} of branch.csv, signals.csv,
-        stability.csv), ``states``, ``special_states`` (2-D arrays); an isolas result holds its
-        branches (isola_K/, open_K/) under ``branches``.
+        ``branch``, ``signals``, ``stability``, ``element_forces`` ({column: array} of
+        branch.csv, signals.csv, stability.csv, element_forces.csv), ``states``, ``special_states`` (2-D arrays: the leading columns, then
+        the harmonic balance unknowns, as the API holds them), ``dof_states``,
+        ``dof_special_states`` ({column: array} of the files as written: every dof's harmonics,
+        docs/outputs.md; absent for folders written before those columns); an isolas result
+        holds its branches (isola_K/, open_K/) under ``branches``.
 
     Examples
     --------
@@ -117,18 +120,125 @@ def read_result(folder):
         summary = json.load(f)
     result = {"kind": kind, "folder": folder, "summary": summary,
               "special_points": summary.get("special_points", [])}
-    for name, key in (("branch.csv", "branch"), ("signals.csv", "signals"), ("stability.csv", "stability")):
+    for name, key in (("branch.csv", "branch"), ("signals.csv", "signals"), ("stability.csv", "stability"),
+                      ("element_forces.csv", "element_forces")):
         path = os.path.join(folder, name)
         if os.path.exists(path):
             result[key] = read_columns(path)
     for name, key in (("states.csv", "states"), ("special_states.csv", "special_states")):
         path = os.path.join(folder, name)
         if os.path.exists(path):
-            result[key] = read_table(path)[1]
+            header, rows = read_table(path)
+            result[key] = state_unknowns(header, rows, summary)
+            if not is_unknown_layout(header):
+                result["dof_" + key] = {column: rows[:, j] for j, column in enumerate(header)}
     if kind == "isolas":
         result["branches"] = {c["folder"]: read_result(os.path.join(folder, c["folder"]))
                               for c in summary.get("crossings", []) if "folder" in c}
     return result
+
+
+def _leading_columns(header):
+    """How many columns precede the state: omega, or leg, omega and the tracked parameter."""
+    return 3 if header and header[0] == "leg" else 1
+
+
+def is_unknown_layout(header):
+    """Whether a states.csv header is the layout written before the dof columns (x0, x1, ...).
+
+    Parameters
+    ----------
+    header : list of str
+        The columns of states.csv or special_states.csv.
+
+    Returns
+    -------
+    bool
+        True for ``omega, x0, x1, ...`` (the unknowns, the mean as a0 with x = a0/2 + ...).
+
+    Examples
+    --------
+    >>> is_unknown_layout(["omega", "x0", "x1"])
+    True
+    """
+    lead = _leading_columns(header)
+    return len(header) > lead and header[lead] == "x0"
+
+
+def harmonic_label(k, subharmonic=1):
+    """The name of basis harmonic k in result columns: its multiple of omega, k / nu ("3", "0.5")."""
+    if subharmonic <= 1 or k % subharmonic == 0:
+        return str(k if subharmonic <= 1 else k // subharmonic)
+    return "%.6g" % (k / subharmonic)
+
+
+def unknown_columns(summary):
+    """The states.csv columns of the harmonic balance unknowns, in the unknowns' order.
+
+    The unknowns are harmonic-major over the retained dofs: per harmonic balanced (the mean
+    ``NAME_h0``, then ``NAME_cK``, ``NAME_sK``), the retained dofs in model order.
+
+    Parameters
+    ----------
+    summary : dict
+        summary.json of the result (``options.harmonic_balance``: harmonics, subharmonic,
+        retained_dofs).
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> unknown_columns(read_result("out/duffing")["summary"])[:3]
+    ['x_h0', 'x_c1', 'x_s1']
+    """
+    hb = summary["options"]["harmonic_balance"]
+    listed = hb["harmonics"]
+    listed = list(range(listed + 1)) if isinstance(listed, int) else listed
+    nu = hb.get("subharmonic", 1)
+    suffixes = [s for k in listed for s in (["h0"] if k == 0 else ["c" + harmonic_label(k, nu), "s" + harmonic_label(k, nu)])]
+    return [f"{name}_{suffix}" for suffix in suffixes for name in hb["retained_dofs"]]
+
+
+def state_unknowns(header, rows, summary):
+    """A state table as the API holds it: the leading columns, then the harmonic balance unknowns.
+
+    Reads both layouts of states.csv: the dof columns (``NAME_h0``, ``NAME_cK``, ``NAME_sK`` of
+    every dof, the mean stored as the mean) and the earlier ``x0, x1, ...`` (the unknowns
+    themselves, returned as they are).
+
+    Parameters
+    ----------
+    header : list of str
+        The file's columns.
+    rows : numpy.ndarray
+        Its rows.
+    summary : dict
+        The folder's summary.json.
+
+    Returns
+    -------
+    numpy.ndarray
+        rows x (leading columns + unknowns); the mean as a0 = 2 NAME_h0, so the rows restart an
+        analysis exactly.
+
+    Examples
+    --------
+    >>> header, rows = read_table("out/duffing/states.csv")
+    >>> states = state_unknowns(header, rows, summary)
+    """
+    if is_unknown_layout(header):
+        return rows
+    lead = _leading_columns(header)
+    position = {column: j for j, column in enumerate(header)}
+    columns = unknown_columns(summary)
+    missing = [c for c in columns if c not in position]
+    if missing:
+        raise ValueError(f"states: no column {missing[0]} (results of another case or harmonic balance?)")
+    unknowns = rows[:, [position[c] for c in columns]].copy()
+    unknowns[:, [i for i, c in enumerate(columns) if c.endswith("_h0")]] *= 2.0  # the mean is a0 / 2
+    return np.hstack([rows[:, :lead], unknowns])
 
 
 def tracking_curve(result):

@@ -132,6 +132,9 @@ def scale_lengths(result, factor):
                 states = np.array(result[key], dtype=float)
                 states[:, first:] *= factor
                 scaled[key] = states
+            if "dof_" + key in result:  # every dof's harmonics: lengths after the leading columns
+                columns = result["dof_" + key]
+                scaled["dof_" + key] = {c: v if j < first else v * factor for j, (c, v) in enumerate(columns.items())}
     if "signals" in result:
         scaled["signals"] = _scale_columns(result["signals"], factor, extra=outputs)
     scaled["special_points"] = [_scale_columns(sp, factor) for sp in result.get("special_points", [])]

@@ -13,7 +13,9 @@
 #include "progress_callback.hpp"
 #include "hbtrack/analysis/fold_tracking.hpp"
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/results/element_force_table.hpp"
 #include "hbtrack/results/result_tables.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {
@@ -34,15 +36,23 @@ HarmonicBalance make_system(const CaseDefinition& c) {
   }
 }
 
-// A branch as `frc` writes it: branch.csv columns, states.csv rows, the summary's special points
-// with their states (special_states.csv).
-py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r, json summary) {
+// A branch as `frc` writes it: branch.csv columns, the unknowns of each point (states), the
+// summary's special points with their states; every dof's harmonics as states.csv and
+// special_states.csv hold them (dof_states, dof_special_states); element_forces.csv on request.
+py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r, json summary, bool element_forces = false) {
   Table branch{branch_header(c), {}}, states{state_header(hbm.unknowns()), {}}, special{state_header(hbm.unknowns()), {}};
+  Table dof_states{dof_state_header(hbm), {}}, dof_special{dof_state_header(hbm), {}}, forces{element_force_header(hbm), {}};
   for (size_t i = 0; i < r.recorded.size(); ++i) {
+    const BranchPoint& p = r.continuation.points[i];
     branch.rows.push_back(branch_row(r.recorded[i]));
-    states.rows.push_back(state_row(r.continuation.points[i].lambda, r.continuation.points[i].u));
+    states.rows.push_back(state_row(p.lambda, p.u));
+    dof_states.rows.push_back(dof_state_row(hbm, p.lambda, p.u));
+    if (element_forces) forces.rows.push_back(element_force_row(hbm, p.lambda, p.u));
   }
-  for (const auto& sp : r.continuation.special_points) special.rows.push_back(state_row(sp.lambda, sp.u));
+  for (const auto& sp : r.continuation.special_points) {
+    special.rows.push_back(state_row(sp.lambda, sp.u));
+    dof_special.rows.push_back(dof_state_row(hbm, sp.lambda, sp.u));
+  }
   add_nfrc_summary(summary, c, hbm, r);
   py::dict out;
   if (c.nfrc.stability.enabled()) {  // stability.csv: the Floquet exponents of every point
@@ -54,6 +64,9 @@ py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const Nfrc
   out["branch"] = branch.columns();
   out["states"] = states.matrix();
   out["special_states"] = special.matrix();
+  out["dof_states"] = dof_states.columns();
+  out["dof_special_states"] = dof_special.columns();
+  if (element_forces) out["element_forces"] = forces.columns();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
   return out;
@@ -61,7 +74,7 @@ py::dict branch_result(const CaseDefinition& c, HarmonicBalance& hbm, const Nfrc
 
 // The NFRC over the case's range; with `start` (the unknowns at omega_start, a point of another
 // result) from that point towards omega_end, as `hbtrack frc --from`.
-py::dict frc(const CaseDefinition& c, const py::object& progress, const std::optional<Eigen::VectorXd>& start) {
+py::dict frc(const CaseDefinition& c, const py::object& progress, const std::optional<Eigen::VectorXd>& start, bool element_forces) {
   const auto t0 = Clock::now();
   HarmonicBalance hbm = make_system(c);
   if (start && start->size() != hbm.unknowns())
@@ -86,7 +99,7 @@ py::dict frc(const CaseDefinition& c, const py::object& progress, const std::opt
   }
   callback.rethrow();
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", r.continuation.summary.wall_s}, {"stability_s", r.stability_s}};
-  py::dict out = branch_result(c, hbm, r, summary);
+  py::dict out = branch_result(c, hbm, r, summary, element_forces);
   callback.mark(out);
   return out;
 }
@@ -113,6 +126,8 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
 
   Table branch{tracking_header(c, param), {}}, states{{"leg", "omega", param}, {}};
   for (const std::string& column : state_header(hbm.unknowns())) if (column != "omega") states.header.push_back(column);
+  Table dof_states{{"leg", "omega", param}, {}};
+  for (const std::string& column : dof_state_columns(hbm)) dof_states.header.push_back(column);
   json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}};
   summary["options"]["tracking"] = {{"parameter", param}, {"method", method}, {"range", {parameter_min, parameter_max}}};
   const FoldScales scales = tracking_scales(hbm, c.nfrc, parameter_max - parameter_min);
@@ -126,6 +141,9 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
       std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
       row.insert(row.end(), p.x.data(), p.x.data() + p.x.size());
       states.rows.push_back(row);
+      std::vector<double> dofs{static_cast<double>(p.leg), p.omega, p.parameter};
+      for (double value : dof_state_values(hbm, p.x, p.omega, parameter, p.parameter)) dofs.push_back(value);
+      dof_states.rows.push_back(std::move(dofs));
       return callback(coverage.add(p.parameter, p.leg), static_cast<int>(states.rows.size()) - 1, p.parameter);
     });
   }
@@ -136,6 +154,7 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
   py::dict out;
   out["branch"] = branch.columns();
   out["states"] = states.matrix();
+  out["dof_states"] = dof_states.columns();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
   callback.mark(out);
@@ -228,8 +247,9 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
 }  // namespace
 
 void bind_analysis(py::module_& m) {
-  m.def("frc", &frc, py::arg("case"), py::arg("progress") = py::none(), py::arg("start") = py::none(),
-        "NFRC with stability: {branch, states, stability, special_points, special_states, summary}");
+  m.def("frc", &frc, py::arg("case"), py::arg("progress") = py::none(), py::arg("start") = py::none(), py::arg("element_forces") = false,
+        "NFRC with stability: {branch, states, dof_states, stability, special_points, special_states, dof_special_states, summary}"
+        " and element_forces when asked");
   m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
         py::arg("parameter_max"), py::arg("method") = "bordered", py::arg("progress") = py::none(), "limit point (x, omega) tracked in param");
   m.def("isolas", &isolas, py::arg("case"), py::arg("curves"), py::arg("param"), py::arg("at"), py::arg("progress") = py::none(),

@@ -81,3 +81,50 @@ def test_api_returns_the_stability_table_of_the_cli(duffing_frc, duffing_frc_cli
     for name, values in cli.items():
         np.testing.assert_allclose(duffing_frc["stability"][name], values, rtol=1e-12,
                                    atol=1e-12 * np.abs(values).max(), err_msg=name)
+
+
+def _coefficients(columns, name, harmonics):
+    """[mean, a1, b1, ..., aH, bH] of dof `name` from the columns of states.csv."""
+    return np.array([columns[f"{name}_h0"]] + [columns[f"{name}_{p}{k}"] for k in range(1, harmonics + 1) for p in "cs"])
+
+
+def test_branch_columns_recomputed_from_the_dof_columns_of_states_csv(two_dof):
+    # x1 is recovered from the condensation, x2 is the retained contact dof: both are columns of
+    # states.csv, and branch.csv's magnitudes and phases are theirs.
+    case, result = two_dof
+    branch, columns = result["branch"], result["dof_states"]
+    harmonics = case.harmonic_balance.harmonics
+    assert list(columns)[:4] == ["omega", "x1_h0", "x1_c1", "x1_s1"]
+    np.testing.assert_array_equal(columns["omega"], branch["omega"])
+    for name in ("x1", "x2"):
+        c = _coefficients(columns, name, harmonics)  # rows: coefficients, columns: points
+        magnitudes = np.vstack([c[0], np.hypot(c[1::2], c[2::2])])
+        # Both files print 17 digits of doubles computed by the same expansion: round-off, 1e-13 of
+        # the point's largest harmonic (the recovery sums over the condensed dofs).
+        tolerance = 1e-13 * np.abs(magnitudes).max(axis=0)
+        for k in range(harmonics + 1):
+            np.testing.assert_array_less(np.abs(branch[f"h{k}_{name}"] - magnitudes[k]), tolerance + 1e-300, err_msg=f"h{k}_{name}")
+        for k in range(1, harmonics + 1):
+            phase = branch[f"phase{k}_{name}"]
+            resolved = magnitudes[k] > 1e-11 * np.abs(magnitudes).max(axis=0)  # else the phase is reported as 0
+            # a_k cos + b_k sin = h_k cos(k w t - phase_k): at t = 0 and at k w t = pi/2.
+            np.testing.assert_allclose((magnitudes[k] * np.cos(phase))[resolved], c[2 * k - 1][resolved], rtol=0, atol=10 * tolerance.max())
+            np.testing.assert_allclose((magnitudes[k] * np.sin(phase))[resolved], c[2 * k][resolved], rtol=0, atol=10 * tolerance.max())
+
+
+def test_a_folder_with_the_earlier_unknown_columns_reads_as_the_new_one(two_dof, tmp_path):
+    # The layout before the dof columns: omega, x0, x1, ... the unknowns (x2's [a0, a1, b1, ...],
+    # x2 the only retained dof), the mean as a0 = 2 x2_h0. read_result gives the same states.
+    case, result = two_dof
+    columns = result["dof_states"]
+    old = np.column_stack([columns["omega"], _coefficients(columns, "x2", case.harmonic_balance.harmonics).T])
+    old[:, 1] *= 2.0
+    folder = tmp_path / "old"
+    folder.mkdir()
+    for name in ("summary.json", "branch.csv", "special_states.csv"):
+        (folder / name).write_bytes(open(os.path.join(result["folder"], name), "rb").read())
+    header = "omega," + ",".join(f"x{i}" for i in range(old.shape[1] - 1))
+    np.savetxt(folder / "states.csv", old, delimiter=",", header=header, comments="", fmt="%.17g")
+    earlier = hbtrack.read_result(str(folder))
+    assert "dof_states" not in earlier
+    np.testing.assert_array_equal(earlier["states"], result["states"])  # the same doubles: a0 = 2 (a0 / 2) exactly

@@ -34,6 +34,8 @@ def assert_same_special_points(api, cli):
 def test_duffing_frc_matches_cli(duffing_frc, duffing_frc_cli):
     assert_same_columns(duffing_frc["branch"], duffing_frc_cli["branch"])
     np.testing.assert_allclose(duffing_frc["states"], duffing_frc_cli["states"], rtol=RELATIVE, atol=1e-300)
+    assert_same_columns(duffing_frc["dof_states"], duffing_frc_cli["dof_states"])
+    assert_same_columns(duffing_frc["dof_special_states"], duffing_frc_cli["dof_special_states"])
     assert_same_special_points(duffing_frc["special_points"], duffing_frc_cli["special_points"])
     assert [sp["type"] for sp in duffing_frc["special_points"]].count("LP") == 2  # README: both folds
     for key in ("stop_reason", "points", "newton_iterations", "failed_steps", "options", "outputs"):
@@ -123,3 +125,14 @@ def test_duffing_backbone_matches_cli(results_dir):
     assert_same_columns(api["branch"], cli["branch"])
     np.testing.assert_allclose(api["states"], cli["states"], rtol=RELATIVE, atol=1e-300)
     assert api["summary"]["linear_mode"] == pytest.approx(cli["summary"]["linear_mode"], rel=RELATIVE)
+
+
+def test_element_forces_match_cli(results_dir):
+    case_set = {"continuation.omega_end": 1.0}
+    api = hbtrack.frc(hbtrack.load_case(DUFFING, set=case_set), element_forces=True)
+    folder = str(results_dir / "duffing_element_forces")
+    run_cli("frc", DUFFING, "--element-forces", "-o", folder, *set_flags(case_set))
+    cli = read_result(folder)
+    assert list(cli["element_forces"])[:3] == ["omega", "element0_x_h0", "element0_x_c1"]
+    assert_same_columns(api["element_forces"], cli["element_forces"])
+    assert "element_forces" not in hbtrack.frc(hbtrack.load_case(DUFFING, set=case_set))

@@ -15,6 +15,10 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
                            {"samples", hbm.basis().samples()},
                            {"condensation", hbm.condensation_method()},
                            {"unknowns", hbm.unknowns()}};
+  // The dofs whose harmonics are the unknowns (states.csv has every dof's: a reader picks these).
+  json retained = json::array();
+  for (int dof : hbm.retained()) retained.push_back(hbm.model().dof_names[static_cast<size_t>(dof)]);
+  harmonic_balance["retained_dofs"] = retained;
   // A selection or a subharmonic basis: the list as given, and nu (states.csv holds, per listed
   // harmonic k, a_k then b_k over the retained dofs; k is a multiple of omega / nu).
   if (!c.harmonic_balance.harmonic_list.empty()) harmonic_balance["harmonics"] = c.harmonic_balance.harmonic_list;

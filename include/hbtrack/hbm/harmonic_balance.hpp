@@ -94,6 +94,10 @@ class HarmonicBalance {
   Eigen::VectorXd rest_linearized_solution(double omega);
   // Nonlinear force harmonics on the retained dofs (unknown layout), Lanczos filter included.
   Eigen::VectorXd nonlinear_forces(const Eigen::VectorXd& x, double omega);
+  // Each element's force over one period at the solution x (unknown layout): N x k samples on its
+  // k local dofs at the AFT's instants tau_i = 2 pi i / N, before the Lanczos filter (the law's
+  // force itself; harmonic_balance_element_forces.cpp).
+  std::vector<Eigen::MatrixXd> element_force_samples(const Eigen::VectorXd& x, double omega);
   // Products of w with the nonlinear forces' derivatives, from one set of time samples and
   // without forming a q x q matrix (about one residual evaluation):
   // jacobian_transpose_w = J_nl(x, omega)^T w, J_nl = d f_nl/dx the nonlinear forces' part of
