@@ -71,6 +71,8 @@ void StepProgressRelay::forget(const std::string& step) {
   if (!enabled_) return;
   std::lock_guard lock(mutex_);
   if (const auto it = files_.find(step); it != files_.end()) {
+    // Its last progress shows once more: a step shorter than the poll would otherwise never show.
+    if (const std::string text = step_progress_text(step, read_tail(it->second)); !text.empty()) draw_locked("study:   " + text);
     std::error_code ignored;
     std::filesystem::remove(it->second, ignored);
     files_.erase(it);
@@ -95,15 +97,17 @@ void StepProgressRelay::loop() {
     std::string line;
     for (const auto& [step, file] : files_)
       if (const std::string text = step_progress_text(step, read_tail(file)); !text.empty()) line += (line.empty() ? "" : ", ") + text;
-    if (line.empty()) continue;
-    line = "study:   " + line;
-    // Padded over a longer line before it; the terminal's width is not known, so it may wrap.
-    const size_t width = line.size();
-    if (width < shown_) line += std::string(shown_ - width, ' ');
-    std::fprintf(stderr, "\r%s", line.c_str());
-    std::fflush(stderr);
-    shown_ = width;
+    if (!line.empty()) draw_locked("study:   " + line);
   }
+}
+
+void StepProgressRelay::draw_locked(std::string line) {
+  // Padded over a longer line before it; the terminal's width is not known, so it may wrap.
+  const size_t width = line.size();
+  if (width < shown_) line += std::string(shown_ - width, ' ');
+  std::fprintf(stderr, "\r%s", line.c_str());
+  std::fflush(stderr);
+  shown_ = width;
 }
 
 }  // namespace hbtrack::cli

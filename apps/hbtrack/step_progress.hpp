@@ -27,7 +27,8 @@ class StepProgressRelay {
   bool enabled() const { return enabled_; }
   // Step `step` reports to `file` (DIR/progress.txt); shown from its first line on.
   void watch(const std::string& step, const std::string& file);
-  // The step ended: its file is removed and it leaves the line.
+  // The step ended: its last progress is drawn once (a step shorter than the poll shows too), its
+  // file is removed and it leaves the line.
   void forget(const std::string& step);
   // A line of the study's own on stderr, below the status line (which is redrawn later).
   void say(const std::string& line);
@@ -35,6 +36,7 @@ class StepProgressRelay {
  private:
   void loop();
   void clear_locked();
+  void draw_locked(std::string line);  // the status line, replacing what is shown
   bool enabled_;
   std::mutex mutex_;
   std::condition_variable wake_;

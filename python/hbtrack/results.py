@@ -166,7 +166,25 @@ def is_unknown_layout(header):
 
 
 def harmonic_label(k, subharmonic=1):
-    """The name of basis harmonic k in result columns: its multiple of omega, k / nu ("3", "0.5")."""
+    """The name of basis harmonic k in result columns: its multiple of omega, k / nu ("3", "0.5").
+
+    Parameters
+    ----------
+    k : int
+        The harmonic of the basis (0 the mean), in multiples of omega / nu.
+    subharmonic : int, optional
+        nu, the basis' subharmonic order (1: harmonics of omega; 2 on a period-doubled branch).
+
+    Returns
+    -------
+    str
+        k / nu as the column names write it: an integer, or a decimal for a subharmonic.
+
+    Examples
+    --------
+    >>> harmonic_label(3), harmonic_label(1, subharmonic=2), harmonic_label(4, subharmonic=2)
+    ('3', '0.5', '2')
+    """
     if subharmonic <= 1 or k % subharmonic == 0:
         return str(k if subharmonic <= 1 else k // subharmonic)
     return "%.6g" % (k / subharmonic)

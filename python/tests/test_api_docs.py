@@ -26,7 +26,7 @@ SELF_CONTAINED = ["hbtrack.arrays.is_sparse", "hbtrack.arrays.as_matrix", "hbtra
                   "hbtrack.special_points.numbered_special_points", "hbtrack.special_points.numbered_limit_points",
                   "hbtrack.special_points.limit_point_label",
                   "hbtrack.settings.settings_overrides", "hbtrack.starts.result_overrides", "hbtrack.starts.start_state",
-                  "hbtrack.progress.checked_progress"]
+                  "hbtrack.progress.checked_progress", "hbtrack.results.harmonic_label"]
 # The computations: each takes progress= and the case's settings as keywords, documented.
 COMPUTATIONS = ["frc", "continuation", "backbone", "track", "isolas", "switch", "simulate"]
 
