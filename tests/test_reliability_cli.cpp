@@ -146,7 +146,7 @@ namespace {
 // isola at point 42, the second a maximum (239) and a minimum (348). Half a second in Release.
 std::vector<std::string> nltva_track_args(const std::string& from) {
   return {"track", hbtrack::test::source_path("examples/nltva.toml"), "-q", "--set", "continuation.step=0.01", "--set",
-          "continuation.step_max=0.01", "--from", from, "--lp", "1", "--param", "amplitude", "--range", "0.01:0.4"};
+          "continuation.step_max=0.01", "--from", from, "--lp", "2", "--param", "amplitude", "--range", "0.01:0.4"};
 }
 
 // Runs `args -o dir`, sends SIGINT once `rows` curve points are on disk, returns the exit code.
@@ -213,6 +213,14 @@ TEST(Reliability, InterruptedTrackResumesToTheSameCurveInEitherLeg) {
   const CliRun extended = run_cli(command_line(args) + " --method extended --resume " + other.string());
   EXPECT_EQ(extended.exit_code, 2);
   EXPECT_NE(extended.err.find("checkpoint.json was computed with other settings"), std::string::npos) << extended.err;
+  // A run written when --lp counted in the NFRC's order (no lp_order) is not resumed: its --lp may
+  // name another limit point now.
+  nlohmann::json before_lp_order = summary_of(other);
+  before_lp_order["options"]["tracking"].erase("lp_order");
+  std::ofstream(other / "summary.json") << before_lp_order.dump();
+  const CliRun old_order = run_cli(command_line(args) + " --resume " + other.string());
+  EXPECT_EQ(old_order.exit_code, 2);
+  EXPECT_NE(old_order.err.find("options.tracking.lp_order missing"), std::string::npos) << old_order.err;
   const CliRun no_from = run_cli("track " + hbtrack::test::source_path("examples/nltva.toml") + " -q --lp 1 -o " + other.string());
   EXPECT_EQ(no_from.exit_code, 2);
   EXPECT_NE(no_from.err.find("--from is required (or --resume DIR)"), std::string::npos) << no_from.err;

@@ -35,10 +35,11 @@ fs::path duffing_frc() {
   return dir;
 }
 
-TEST(TrackCli, FollowsTheFirstLimitPointInAmplitudeToItsCusp) {
+// LP2 is the upper fold (numbered in increasing omega), met first by the upward sweep.
+TEST(TrackCli, FollowsTheUpperLimitPointInAmplitudeToItsCusp) {
   const fs::path out = fs::temp_directory_path() / ("hbtrack_track_" + std::to_string(getpid()));
   fs::remove_all(out);
-  const CliRun r = run_cli("track " + kDuffing + " --from " + duffing_frc().string() + " --lp 1 --param amplitude --range 0.25:2 -o " +
+  const CliRun r = run_cli("track " + kDuffing + " --from " + duffing_frc().string() + " --lp 2 --param amplitude --range 0.25:2 -o " +
                            out.string() + " -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json s = read_json(out / "summary.json");
@@ -50,6 +51,7 @@ TEST(TrackCli, FollowsTheFirstLimitPointInAmplitudeToItsCusp) {
   EXPECT_EQ(s["special_points"][0]["type"], "min");
   EXPECT_TRUE(s["special_points"][0]["located"].get<bool>());
   EXPECT_NEAR(s["start"]["omega"].get<double>(), 1.2696, 1e-3);
+  EXPECT_EQ(s["options"]["tracking"]["lp_order"], "omega");
   // The historical columns first, then h0_x, h2_x .. h7_x and phase1_x .. phase7_x (H = 7).
   const std::vector<std::string> expected{"leg", "omega", "amplitude", "max_x", "min_x", "h1_x", "h0_x"};
   const std::vector<std::string> header = csv_header(out / "branch.csv");
@@ -260,7 +262,7 @@ TEST(TrackCli, ATinyClosedCurveClosesOnceAndACappedLegIsNotCompleted) {
   std::ofstream(case_file) << toml;
   const std::string nfrc = " --set 'stability.method=\"none\"'";
   ASSERT_EQ(run_cli("frc " + case_file + nfrc + " -q -o " + (base / "frc").string()).exit_code, 0);
-  const std::string track = "track " + case_file + " --from " + (base / "frc").string() + " --lp 1 --param amplitude --range 0.2:3 -q -o ";
+  const std::string track = "track " + case_file + " --from " + (base / "frc").string() + " --lp 2 --param amplitude --range 0.2:3 -q -o ";  // the upper fold
   const CliRun r = run_cli(track + (base / "track").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json loop = read_json((base / "track" / "summary.json").string());

@@ -37,8 +37,9 @@ NfrcDigest digest_nfrc(const std::string& folder, const std::vector<std::string>
   d.status = s.value("stop_reason", "");
   d.points = s.value("points", 0L);
   const std::string first = outputs.empty() ? "" : "max_" + outputs.front();
-  for (const auto& sp : s.value("special_points", json::array()))
-    if (sp.value("type", "") == "LP") d.limit_points.emplace_back(sp.value("omega", NAN), first.empty() ? NAN : sp.value(first, NAN));
+  const json special = s.value("special_points", json::array());
+  for (size_t row : limit_point_rows(special))  // lpK as track_lpK: in increasing omega
+    d.limit_points.emplace_back(special[row].value("omega", NAN), first.empty() ? NAN : special[row].value(first, NAN));
   try {
     const CsvTable b = read_csv_table(folder + "/branch.csv");
     for (const std::string& name : outputs) {

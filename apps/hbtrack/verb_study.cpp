@@ -200,8 +200,7 @@ class Study {
     stage_ = kNominal;
     if (!run_steps({{"nfrc", {"frc", o_.common.case_path}, true}})) return false;
     const json s = read_summary(dir_ + "/nfrc");
-    for (const auto& sp : s["special_points"])
-      if (sp.value("type", "") == "LP") limit_points_.push_back(sp);
+    for (size_t row : limit_point_rows(s["special_points"])) limit_points_.push_back(s["special_points"][row]);  // LP1 lowest omega
     summary_["nfrc"] = {{"points", s["points"]}, {"special_points", s["special_points"]}, {"limit_points", limit_points_.size()},
                         {"stop_reason", s.value("stop_reason", "")}, {"wall_s", s["timings"]["wall_s"]}};
     return true;
@@ -474,12 +473,13 @@ class Study {
     for (const StudyTrack& t : tracked_)
       for (const auto& curve : entries_[t.parameter]["curves"]) {
         if (!curve.contains("folder")) continue;
-        // The refined NFRC's limit point nearest this curve's starting one (1-based).
+        // The refined NFRC's limit point nearest this curve's starting one (1-based, omega order).
         const double omega = curve.value("omega", 0.0);
-        int lp = 0, k = 0;
+        const json refined_points = refined.value("special_points", json::array());
+        size_t lp = 0;
         double best = 1e300;
-        for (const auto& sp : refined.value("special_points", json::array()))
-          if (sp.value("type", "") == "LP" && (++k, std::abs(sp.value("omega", 0.0) - omega) < best)) best = std::abs(sp.value("omega", 0.0) - omega), lp = k;
+        for (size_t k = 0; const size_t row : limit_point_rows(refined_points))
+          if (++k, std::abs(refined_points[row].value("omega", 0.0) - omega) < best) best = std::abs(refined_points[row].value("omega", 0.0) - omega), lp = k;
         if (lp == 0) continue;
         const std::string folder = "converged/" + curve.value("folder", std::string());
         steps.push_back({folder,

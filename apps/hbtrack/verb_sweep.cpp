@@ -117,10 +117,8 @@ class Sweep {
     const std::string range = number_text(tracking_->min, 17) + ":" + number_text(tracking_->max, 17);
     for (size_t i = 0; i < grid_.tasks.size(); ++i) {
       if (!finished_result(nfrc_folder(i))) continue;
-      int lp = 0;
-      for (const auto& sp : read_summary(nfrc_folder(i)).value("special_points", json::array())) {
-        if (sp.value("type", "") != "LP") continue;
-        ++lp;
+      const size_t count = limit_point_rows(read_summary(nfrc_folder(i)).value("special_points", json::array())).size();
+      for (size_t lp = 1; lp <= count; ++lp) {  // --lp K: the K-th in increasing omega
         tasks.push_back({i, folder(i) + "/track_lp" + std::to_string(lp),
                          with_sets({"track", o_.common.case_path, "--from", nfrc_folder(i), "--lp", std::to_string(lp), "--param", tracking_->parameter,
                                     "--range", range},

@@ -38,6 +38,10 @@ void take_options_of_stopped_run(TrackOptions& o) {
   if (!summary.contains("options") || !summary["options"].contains("tracking") || !summary["options"]["tracking"].is_object())
     throw CaseError("--resume: " + o.resume + "/summary.json: options.tracking missing (is it a track result?)");
   const json& t = summary["options"]["tracking"];
+  // Before lp_order, --lp counted in summary.json's order: the same number may name another LP.
+  if (!t.contains("lp_order"))
+    throw CaseError("--resume: " + o.resume + "/summary.json: options.tracking.lp_order missing: written when --lp counted limit points "
+                    "in the NFRC's order, not in increasing omega; run the tracking again");
   try {
     if (o.from.empty()) o.from = t.at("from").get<std::string>();
     if (o.lp.empty()) o.lp = std::to_string(t.at("lp").get<long>());
@@ -64,22 +68,17 @@ CaseDefinition case_as_in(const CommonOptions& o, const std::string& dir) {
   return load_case(o.case_path, overrides);
 }
 
-// The starting limit point: the lp-th (from 1) LP of DIR/summary.json and its state.
+// The starting limit point: LP `lp` (from 1, in increasing omega as the figures number them) of
+// DIR/summary.json and its state.
 HbmState starting_fold(const std::string& dir, long lp, const HarmonicBalance& hbm) {
   const json summary = read_summary(dir);
   const std::string path = dir + "/summary.json";
   if (!summary.contains("special_points") || !summary["special_points"].is_array())
     throw CaseError(path + ": special_points missing (is --from a frc result?)");
-  long seen = 0, row = -1;
-  const json& special = summary["special_points"];
-  for (size_t i = 0; i < special.size() && row < 0; ++i)
-    if (special[i].value("type", "") == "LP" && ++seen == lp) row = static_cast<long>(i);
-  if (row < 0) {
-    long count = 0;
-    for (const auto& sp : special) count += sp.value("type", "") == "LP";
-    throw CaseError("--lp: " + std::to_string(lp) + " is beyond the " + std::to_string(count) + " limit points of " + path);
-  }
-  return read_hbm_state(dir + "/special_states.csv", row, hbm);
+  const std::vector<size_t> rows = limit_point_rows(summary["special_points"]);
+  if (static_cast<size_t>(lp) > rows.size())
+    throw CaseError("--lp: " + std::to_string(lp) + " is beyond the " + std::to_string(rows.size()) + " limit points of " + path);
+  return read_hbm_state(dir + "/special_states.csv", static_cast<long>(rows[lp - 1]), hbm);
 }
 
 // After a failed tracking run: the elements whose law the fold systems cannot differentiate, the
@@ -131,7 +130,7 @@ int run_track(TrackOptions o) {
 
   const std::string& dir = o.common.out_dir;
   json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
-  summary["options"]["tracking"] = {{"from", o.from}, {"lp", lp}, {"parameter", o.param}, {"method", o.method},
+  summary["options"]["tracking"] = {{"from", o.from}, {"lp", lp}, {"lp_order", "omega"}, {"parameter", o.param}, {"method", o.method},
                                     {"range", {tracking.parameter_min, tracking.parameter_max}}};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedTracking> resumed;
@@ -320,7 +319,7 @@ void add_track_verbs(CLI::App& app, VerbList& verbs) {
   t->get_option("--output")->required(false);  // --resume DIR names the folder instead
   // Required unless --resume DIR, which takes them from the stopped run (checked in run_track).
   t->add_option("--from", track.from, "frc result folder holding the limit point");
-  t->add_option("--lp", track.lp, "which limit point of --from, counting from 1");
+  t->add_option("--lp", track.lp, "which limit point of --from: LP K counts from 1 in increasing omega, as the figures number them");
   t->add_option("--param", track.param, "the parameter to vary (a name of the case's [parameters], or amplitude)");
   t->add_option("--range", track.range, "LO:HI, the parameter's interval");
   t->add_option("--method", track.method, "bordered (minimally augmented, default) or extended (the paper's system)");

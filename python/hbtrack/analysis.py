@@ -283,7 +283,9 @@ def limit_point(result, lp):
     result : dict
         An frc result (:func:`frc` or :func:`hbtrack.read_result` of an frc folder).
     lp : int
-        Which limit point, counted from 1 in the order of ``result["special_points"]``.
+        Which limit point: LP `lp`, counted from 1 in increasing omega (as the figures and
+        ``hbtrack track --lp`` number them, whatever order ``result["special_points"]`` lists
+        them in).
 
     Returns
     -------
@@ -300,6 +302,7 @@ def limit_point(result, lp):
     if isinstance(lp, bool) or not isinstance(lp, (int, np.integer)) or lp < 1:
         raise ValueError(f"lp: must be an integer >= 1, got {lp!r}")
     rows = [i for i, sp in enumerate(result["special_points"]) if sp["type"] == "LP"]
+    rows.sort(key=lambda i: result["special_points"][i]["omega"])  # stable: ties keep their order
     if lp > len(rows):
         raise ValueError(f"lp: {lp} is beyond the {len(rows)} limit points of the frc result")
     return result["special_states"][rows[lp - 1]]
@@ -315,7 +318,8 @@ def track(case, start, *, lp, param, range, method="bordered", progress=None, **
     start : dict
         An frc result of `case`.
     lp : int
-        Which of its limit points (from 1).
+        Which of its limit points: LP `lp`, from 1 in increasing omega (as the figures number
+        them).
     param : str
         The named parameter to vary ("amplitude", "mu", "clearance", ...).
     range : tuple of float
@@ -352,7 +356,7 @@ def track(case, start, *, lp, param, range, method="bordered", progress=None, **
     progress = checked_progress(progress)
     run_case = case_with(case, settings_overrides(**settings), "track")
     result = require_core().track(run_case, state[1:], state[0], param, low, high, method, progress)
-    result["summary"]["options"]["tracking"]["lp"] = lp
+    result["summary"]["options"]["tracking"].update(lp=lp, lp_order="omega")
     result["kind"] = "track"
     return result
 

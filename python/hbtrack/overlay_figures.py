@@ -54,7 +54,9 @@ def describe(result):
         c = options["continue"]
         what = f"{c['parameter']} from {c['range'][0]:g} to {c['range'][1]:g} at ω = {c['omega']:g}"
     elif kind == "track":
-        what = f"limit point {options['tracking'].get('lp', '')} tracked in {options['tracking']['parameter']}".replace("  ", " ")
+        t = options["tracking"]
+        start = f"LP{t['lp']}" if t.get("lp_order") == "omega" else f"limit point {t.get('lp', '')}".rstrip()
+        what = f"{start} tracked in {t['parameter']}"
     elif kind == "isola_branch":
         what = "isolated branch"
     elif kind == "isolas":

@@ -16,7 +16,7 @@ import os
 import sys
 
 from .results import read_result, tracking_curve
-from .special_points import limit_point_label, numbered_limit_points
+from .special_points import numbered_limit_points, tracked_limit_point_label
 
 
 def _load(path):
@@ -168,8 +168,9 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
         fig, ax = plt.subplots(figsize=(6.5, 4))
         for c in entry["curves"]:
             if "folder" in c:
-                curve = tracking_curve(read_result(os.path.join(study_dir, c["folder"])))
-                label = limit_point_label(nfrc["summary"].get("special_points", []), c["lp"])  # c["lp"] is track's --lp
+                track = read_result(os.path.join(study_dir, c["folder"]))
+                curve = tracking_curve(track)
+                label = tracked_limit_point_label(nfrc["summary"].get("special_points", []), track["summary"]["options"]["tracking"])
                 ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=f"{label} tracked")
         for e in entry.get("extrema", []):
             ax.plot(e["omega"] / w1b, e["value"], "v" if e["type"] == "min" else "^", color="k", ms=6)

@@ -13,7 +13,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from .results import output_names, tracking_curve  # noqa: E402
-from .special_points import limit_point_label  # noqa: E402
+from .special_points import tracked_limit_point_label  # noqa: E402
 from .view_angle import least_hidden_view  # noqa: E402
 
 OMEGA_LABEL = r"$\omega$ [rad/s]"
@@ -179,9 +179,10 @@ def _extrema(track):
 def _curve_name(track, i, nfrc_special_points):
     """"LP2 tracked" as the NFRC figure numbers its limit points (omega order) when the NFRC's
     special points are given; else by track's --lp, "limit point 1 tracked"."""
-    lp = track["summary"]["options"]["tracking"].get("lp", i + 1)
+    options = track["summary"]["options"]["tracking"]
+    lp = options.get("lp", i + 1)
     if nfrc_special_points:
-        return f"{limit_point_label(nfrc_special_points, lp)} tracked"
+        return f"{tracked_limit_point_label(nfrc_special_points, options)} tracked"
     return f"limit point {lp} tracked"
 
 

@@ -1,7 +1,9 @@
 """The names of special points, one numbering for every figure and table: per type, in increasing
 omega (LP1 is the limit point of lowest frequency, as the paper numbers them), whatever order
 the continuation met them in. summary.json lists them in that order, which is reversed on a
-sweep downward (rotor 67), and `hbtrack track --lp K` counts in it: limit_point_label translates.
+sweep downward (rotor 67). `hbtrack track --lp K` counts in omega order too (its summary says
+options.tracking.lp_order = "omega"); tracking results written before that counted in
+summary.json's order, which limit_point_label translates.
 """
 
 
@@ -50,16 +52,19 @@ def numbered_limit_points(special_points):
     return [(label, sp) for label, sp in numbered_special_points(special_points) if sp["type"] == "LP"]
 
 
-def limit_point_label(special_points, lp):
-    """The label of the limit point that `hbtrack track --lp LP` starts from (the lp-th LP of
-    summary.json, from 1), in the omega-order numbering.
+def limit_point_label(special_points, lp, lp_order="summary"):
+    """The label of the limit point that `hbtrack track --lp LP` started from.
 
     Parameters
     ----------
     special_points : sequence of dict
         summary.json's special_points of the NFRC tracked from.
     lp : int
-        The track's --lp.
+        The track's --lp (its summary's options.tracking.lp).
+    lp_order : {"summary", "omega"}, optional
+        The track summary's options.tracking.lp_order: "omega" (hbtrack from 2026-11-26: LP K is
+        the K-th in increasing omega) or, absent from older results, "summary" (the lp-th LP of
+        summary.json).
 
     Returns
     -------
@@ -70,8 +75,36 @@ def limit_point_label(special_points, lp):
     --------
     >>> limit_point_label([{"type": "LP", "omega": 2.0}, {"type": "LP", "omega": 1.0}], 1)
     'LP2'
+    >>> limit_point_label([{"type": "LP", "omega": 2.0}, {"type": "LP", "omega": 1.0}], 1, "omega")
+    'LP1'
     """
     lps = [sp for sp in special_points if sp["type"] == "LP"]
     if not 1 <= lp <= len(lps):
         return "LP?"
+    if lp_order == "omega":
+        return f"LP{lp}"
     return next(label for label, sp in numbered_limit_points(special_points) if sp is lps[lp - 1])
+
+
+def tracked_limit_point_label(special_points, tracking_options):
+    """The label of a tracking result's starting limit point from its summary's
+    options.tracking (its lp and, when written, lp_order).
+
+    Parameters
+    ----------
+    special_points : sequence of dict
+        summary.json's special_points of the NFRC tracked from.
+    tracking_options : dict
+        The track summary's options["tracking"].
+
+    Returns
+    -------
+    str
+        "LPk"; "LP?" when the NFRC has fewer limit points.
+
+    Examples
+    --------
+    >>> tracked_limit_point_label([{"type": "LP", "omega": 2.0}, {"type": "LP", "omega": 1.0}], {"lp": 2, "lp_order": "omega"})
+    'LP2'
+    """
+    return limit_point_label(special_points, tracking_options.get("lp", 0), tracking_options.get("lp_order", "summary"))

@@ -64,5 +64,11 @@ def test_tables_and_the_nfrc_figure_name_the_limit_points_alike(tmp_path):
     assert sorted(tabled) == sorted(drawn) == ["LP1", "LP2"]
     for name, omega in tabled.items():
         assert abs(drawn[name] - omega) <= 0.005, (name, drawn, tabled)  # the table prints omega to 2 decimals
-    # The tracking curve started with `track --lp 1` (the first listed, the higher omega) is LP2.
+    # A tracking result written before lp_order, started with `track --lp 1` (then the first
+    # listed, the higher omega), is LP2; since then --lp 1 and limit_point(nfrc, 1) are LP1.
     assert limit_point_label(nfrc["special_points"], 1) == "LP2" and tabled["LP2"] > tabled["LP1"]
+    assert limit_point_label(nfrc["special_points"], 1, "omega") == "LP1"
+    assert hbtrack.limit_point(nfrc, 1)[0] == min(listed) and hbtrack.limit_point(nfrc, 2)[0] == max(listed)
+    track = hbtrack.track(hbtrack.load_case(str(case)), nfrc, lp=1, param="amplitude", range=(0.1, 2.0))
+    assert track["summary"]["options"]["tracking"]["lp_order"] == "omega"
+    assert abs(track["branch"]["omega"][0] - min(listed)) < 1e-9 * min(listed)  # the curve starts at LP1
