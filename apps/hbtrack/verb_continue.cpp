@@ -70,7 +70,8 @@ int run_continue(const ContinueOptions& o) {
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};
   CsvAppender special_states(dir + "/special_states.csv", dof_state_header(hbm));
-  for (const auto& sp : r.continuation.special_points) special_states.append(dof_state_row(hbm, omega, sp.u));
+  // At each point's own parameter value: the condensed dofs' recovery depends on it.
+  for (const auto& sp : r.continuation.special_points) special_states.append(dof_state_row(hbm, omega, sp.u, parameter, sp.lambda));
   write_json_atomically(dir + "/summary.json", summary);
   if (!r.continuation.success())
     throw RunFailed{"continuation stopped: " + stop_reason + " after " + std::to_string(s.points) + " points (kept in " + dir + ")"};

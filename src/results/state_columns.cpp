@@ -60,11 +60,20 @@ std::vector<std::string> dof_state_header(const HarmonicBalance& hbm) {
   return header;
 }
 
-std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x) {
+namespace {
+std::vector<double> row_at(double omega, const std::vector<double>& values) {
   std::vector<double> row{omega};
-  const std::vector<double> values = dof_state_values(hbm, x, omega);
   row.insert(row.end(), values.begin(), values.end());
   return row;
+}
+}  // namespace
+
+std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x) {
+  return row_at(omega, dof_state_values(hbm, x, omega));
+}
+
+std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x, int parameter, double value) {
+  return row_at(omega, dof_state_values(hbm, x, omega, parameter, value));
 }
 
 bool is_unknown_layout(const std::vector<std::string>& columns) { return !columns.empty() && columns.front() == "x0"; }

@@ -30,6 +30,8 @@ std::vector<double> dof_state_values(HarmonicBalance& hbm, const Eigen::VectorXd
 // states.csv of a branch: omega, then the dof columns.
 std::vector<std::string> dof_state_header(const HarmonicBalance& hbm);
 std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x);
+// The same at a point of a branch in parameter `parameter` (hbtrack continue), at its `value`.
+std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x, int parameter, double value);
 
 // True for the layout written before the dof columns: x0, x1, ... the unknowns themselves, the
 // mean as a0 (x = a0/2 + ...).
