@@ -16,6 +16,7 @@
 #include "hbtrack/results/backbone_tables.hpp"
 #include "hbtrack/results/parameter_tables.hpp"
 #include "hbtrack/results/result_tables.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {
@@ -55,17 +56,25 @@ py::dict continuation(const CaseDefinition& c, const std::string& param, double 
   callback.rethrow();
   hbm.parameters().value(parameter) = nominal;
   Table branch{parameter_branch_header(c, param), {}}, states{state_header(hbm.unknowns()), {}}, special{state_header(hbm.unknowns()), {}};
+  Table dof_states{dof_state_header(hbm), {}}, dof_special{dof_state_header(hbm), {}};  // as states.csv, special_states.csv
   for (size_t i = 0; i < r.points.size(); ++i) {
+    const BranchPoint& p = r.continuation.points[i];
     branch.rows.push_back(parameter_branch_row(r.points[i]));
-    states.rows.push_back(state_row(omega, r.continuation.points[i].u));
+    states.rows.push_back(state_row(omega, p.u));
+    dof_states.rows.push_back(dof_state_row(hbm, omega, p.u, parameter, p.lambda));
   }
-  for (const auto& sp : r.continuation.special_points) special.rows.push_back(state_row(omega, sp.u));
+  for (const auto& sp : r.continuation.special_points) {
+    special.rows.push_back(state_row(omega, sp.u));
+    dof_special.rows.push_back(dof_state_row(hbm, omega, sp.u, parameter, sp.lambda));
+  }
   add_parameter_branch_summary(summary, c, hbm, r, parameter);
   summary["timings"] = {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}, {"continuation_s", r.continuation.summary.wall_s}};
   py::dict out;
   out["branch"] = branch.columns();
   out["states"] = states.matrix();
   out["special_states"] = special.matrix();
+  out["dof_states"] = dof_states.columns();
+  out["dof_special_states"] = dof_special.columns();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
   callback.mark(out);
@@ -96,15 +105,19 @@ py::dict backbone(CaseDefinition c, int mode, double start, double end, const py
   }
   callback.rethrow();
   Table branch{backbone_header(c, hbm.basis().harmonic_numbers()), {}}, states{backbone_state_header(hbm.unknowns()), {}};
+  Table dof_states{dof_state_header(hbm), {}};  // as states.csv: the physical motion, a times the mode's unknowns
   for (size_t i = 0; i < r.points.size(); ++i) {
-    branch.rows.push_back(backbone_row(r.points[i]));
-    states.rows.push_back(backbone_state_row(r.points[i], r.continuation.points[i].u, hbm.unknowns()));
+    const BackbonePoint& p = r.points[i];
+    branch.rows.push_back(backbone_row(p));
+    states.rows.push_back(backbone_state_row(p, r.continuation.points[i].u, hbm.unknowns()));
+    dof_states.rows.push_back(dof_state_row(hbm, p.omega, p.amplitude * r.continuation.points[i].u.head(hbm.unknowns())));
   }
   add_backbone_summary(summary, c, hbm, r);
   summary["timings"] = {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}, {"continuation_s", r.continuation.summary.wall_s}};
   py::dict out;
   out["branch"] = branch.columns();
   out["states"] = states.matrix();
+  out["dof_states"] = dof_states.columns();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
   callback.mark(out);
@@ -115,9 +128,9 @@ py::dict backbone(CaseDefinition c, int mode, double start, double end, const py
 
 void bind_continuation(py::module_& m) {
   m.def("continuation", &continuation, py::arg("case"), py::arg("param"), py::arg("omega"), py::arg("start"), py::arg("end"),
-        py::arg("progress") = py::none(), "continuation in a named parameter at fixed omega: {branch, states, special_points, special_states, summary}");
+        py::arg("progress") = py::none(), "continuation in a named parameter at fixed omega: {branch, states, dof_states, special_points, special_states, dof_special_states, summary}");
   m.def("backbone", &backbone, py::arg("case"), py::arg("mode"), py::arg("start"), py::arg("end"), py::arg("progress") = py::none(),
-        "nonlinear mode (EPMC) from the linear mode: {branch, states, special_points, summary}");
+        "nonlinear mode (EPMC) from the linear mode: {branch, states, dof_states, special_points, summary}");
 }
 
 }  // namespace hbtrack::python

@@ -16,6 +16,7 @@
 #include "hbtrack/analysis/period_doubling.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/results/result_tables.hpp"
+#include "hbtrack/results/state_columns.hpp"
 #include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::python {
@@ -72,17 +73,16 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
   }
   callback.rethrow();
   Table branch{branch_header(c), {}}, states{state_header(system.unknowns()), {}}, special{state_header(system.unknowns()), {}};
+  Table dof_states{dof_state_header(system), {}}, dof_special{dof_state_header(system), {}};  // as states.csv, special_states.csv
+  const auto add_point = [&](const RecordedPoint& recorded, const BranchPoint& p) {
+    branch.rows.push_back(branch_row(recorded));
+    states.rows.push_back(state_row(p.lambda, p.u));
+    dof_states.rows.push_back(dof_state_row(system, p.lambda, p.u));
+  };
   const int through = static_cast<int>(s.through.recorded.size());
-  for (int i = through - 1; i >= 0; --i) {
-    const auto k = static_cast<size_t>(i);
-    branch.rows.push_back(branch_row(s.through.recorded[k]));
-    states.rows.push_back(state_row(s.through.continuation.points[k].lambda, s.through.continuation.points[k].u));
-  }
+  for (int i = through - 1; i >= 0; --i) add_point(s.through.recorded[static_cast<size_t>(i)], s.through.continuation.points[static_cast<size_t>(i)]);
   const int shift = through > 0 ? through - 1 : 0;  // row of the away leg's point i: shift + i
-  for (size_t i = through > 0 ? 1 : 0; i < s.away.recorded.size(); ++i) {
-    branch.rows.push_back(branch_row(s.away.recorded[i]));
-    states.rows.push_back(state_row(s.away.continuation.points[i].lambda, s.away.continuation.points[i].u));
-  }
+  for (size_t i = through > 0 ? 1 : 0; i < s.away.recorded.size(); ++i) add_point(s.away.recorded[i], s.away.continuation.points[i]);
   json points = json::array();
   for (const auto* leg : {&s.through, &s.away})
     for (const auto& p : leg->continuation.special_points) {
@@ -94,6 +94,7 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
       add_outputs(j, c, record_point(system, p.u, p.lambda, c.outputs));
       points.push_back(j);
       special.rows.push_back(state_row(p.lambda, p.u));
+      dof_special.rows.push_back(dof_state_row(system, p.lambda, p.u));
     }
   const auto& a = s.away.continuation.summary;
   const auto& b = s.through.continuation.summary;
@@ -111,6 +112,8 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
   out["branch"] = branch.columns();
   out["states"] = states.matrix();
   out["special_states"] = special.matrix();
+  out["dof_states"] = dof_states.columns();
+  out["dof_special_states"] = dof_special.columns();
   out["summary"] = to_python(summary);
   out["special_points"] = out["summary"]["special_points"];
   callback.mark(out);
@@ -122,7 +125,7 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
 void bind_switch(py::module_& m) {
   m.def("switch", &switch_branch, py::arg("case"), py::arg("type"), py::arg("point"), py::arg("omega"), py::arg("x"),
         py::arg("omega_before"), py::arg("x_before"), py::arg("omega_after"), py::arg("x_after"),
-        py::arg("progress") = py::none(), "the branch through a BP, or the period-doubled branch of a PD: {branch, states, special_points, special_states, summary}");
+        py::arg("progress") = py::none(), "the branch through a BP, or the period-doubled branch of a PD: {branch, states, dof_states, special_points, special_states, dof_special_states, summary}");
 }
 
 }  // namespace hbtrack::python
