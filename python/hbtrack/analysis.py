@@ -22,7 +22,7 @@ from ._core import require_core
 from .cases import toml_value
 from .progress import checked_progress
 from .settings import case_with, settings_overrides
-from .starts import start_state
+from .starts import result_overrides, start_state
 
 # The case's own check of the range, which a start at omega_end breaks.
 _EMPTY_RANGE = "omega_end: must differ from omega_start"
@@ -141,7 +141,10 @@ def continuation(case, *, param, omega, range, progress=None, **settings):  # no
         ``branch`` ({column: array}: omega, PARAM, stable, max_NAME, min_NAME, h1_NAME, then
         hK_NAME and phaseK_NAME per output), ``states`` (rows [omega, x0, ...]),
         ``special_points`` (LPs in the parameter, located; BP, PD, NS), ``special_states``,
-        ``summary`` (as summary.json) and ``kind`` = "continue".
+        ``dof_states``, ``dof_special_states`` ({column: array}: omega, then every dof's
+        harmonics NAME_h0, NAME_cK, NAME_sK, the condensed dofs recovered at each point's value
+        of PARAM; as states.csv and special_states.csv), ``summary`` (as summary.json) and
+        ``kind`` = "continue".
 
     Examples
     --------
@@ -185,7 +188,10 @@ def backbone(case, *, mode=1, range, progress=None, **settings):  # noqa: A002 -
     dict
         ``branch`` ({column: array}: amplitude, omega, damping_ratio, xi, then per output
         max_NAME, min_NAME and h0_NAME .. hH_NAME, h0 the mean), ``states`` (rows [omega, x0,
-        ...]), ``special_points``, ``summary`` (as summary.json) and ``kind`` = "backbone".
+        ...]: the motion, a times the mode's unknowns), ``dof_states`` ({column: array}: omega,
+        then every dof's harmonics NAME_h0, NAME_cK, NAME_sK of that motion, as states.csv),
+        ``special_points`` (no special states: the CLI writes none for a backbone), ``summary``
+        (as summary.json) and ``kind`` = "backbone".
 
     Examples
     --------
@@ -218,9 +224,11 @@ def switch(case, start, *, point, progress=None, **settings):
     Parameters
     ----------
     case : hbtrack.Case
-        The case `start` was computed on (its parameters and harmonics).
+        The case `start` was computed on.
     start : dict
-        An frc result (:func:`frc` or :func:`hbtrack.read_result` of an frc folder).
+        An frc result (:func:`frc` or :func:`hbtrack.read_result` of an frc folder); its
+        parameters and harmonic balance (harmonics, subharmonic, samples, condensation) are
+        used, as ``switch --from``, before the keywords' settings.
     point : int
         Which special point, counted from 1 in the order of ``start["special_points"]``; a BP
         or a PD.
@@ -237,9 +245,11 @@ def switch(case, start, *, point, progress=None, **settings):
     -------
     dict
         As :func:`frc` returns (``branch`` with stability, ``states``, ``special_points``,
-        ``special_states``, ``summary`` with ``options.switch`` = {point, type, omega} and
-        ``legs``), ``kind`` = "switch". At a PD the harmonics are multiples of omega / 2:
-        ``branch`` has ``h0.5_NAME``, ``h1_NAME``, ``h1.5_NAME``, ...
+        ``special_states``, ``dof_states`` and ``dof_special_states`` ({column: array}: every
+        dof's harmonics NAME_h0, NAME_cK, NAME_sK, as states.csv and special_states.csv),
+        ``summary`` with ``options.switch`` = {point, type, omega} and ``legs``), ``kind`` =
+        "switch". At a PD the harmonics are multiples of omega / 2: ``branch`` has
+        ``h0.5_NAME``, ``h1_NAME``, ``h1.5_NAME``, ..., ``dof_states`` NAME_c0.5, NAME_s0.5, ...
 
     Examples
     --------
@@ -268,7 +278,8 @@ def switch(case, start, *, point, progress=None, **settings):
     bp = np.asarray(start["special_states"])[point - 1]
     before, after = states[max(row - 1, 0)], states[min(row + 1, len(states) - 1)]
     progress = checked_progress(progress)
-    run_case = case_with(case, settings_overrides(**settings), "switch")
+    # As switch --from: the frc result's parameters and harmonic balance, then the caller's.
+    run_case = case_with(case, result_overrides(start) + settings_overrides(**settings), "switch")
     result = require_core().switch(run_case, sp["type"], int(point), bp[0], bp[1:], before[0], before[1:], after[0], after[1:],
                                    progress)
     result["kind"] = "switch"
@@ -316,7 +327,9 @@ def track(case, start, *, lp, param, range, method="bordered", progress=None, **
     case : hbtrack.Case
         The case `start` was computed on.
     start : dict
-        An frc result of `case`.
+        An frc result of `case` (computed or :func:`hbtrack.read_result`); its parameters and
+        harmonic balance (harmonics, subharmonic, samples, condensation) are used, as ``track
+        --from``, before the keywords' settings: the tracked parameter starts at the result's value.
     lp : int
         Which of its limit points: LP `lp`, from 1 in increasing omega (as the figures number
         them).
@@ -354,7 +367,8 @@ def track(case, start, *, lp, param, range, method="bordered", progress=None, **
     except (TypeError, ValueError):
         raise ValueError(f"range: expected (LO, HI), got {range!r}") from None
     progress = checked_progress(progress)
-    run_case = case_with(case, settings_overrides(**settings), "track")
+    # As track --from: the frc result's parameters and harmonic balance, then the caller's.
+    run_case = case_with(case, result_overrides(start) + settings_overrides(**settings), "track")
     result = require_core().track(run_case, state[1:], state[0], param, low, high, method, progress)
     result["summary"]["options"]["tracking"].update(lp=lp, lp_order="omega")
     result["kind"] = "track"

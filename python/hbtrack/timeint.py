@@ -2,6 +2,7 @@
 from ._core import require_core
 from .progress import checked_progress
 from .settings import case_with, settings_overrides
+from .starts import start_state
 
 
 def simulate(case, omega=None, *, start=None, point=None, method="newmark", steps_per_period=256,
@@ -15,7 +16,10 @@ def simulate(case, omega=None, *, start=None, point=None, method="newmark", step
     omega : float, optional
         Forcing frequency in rad/s, to start from rest; not needed with `start`.
     start : dict, optional
-        A result (frc, solve, a branch of isolas) of the same case to start from ...
+        A result of `case` to start from (frc, solve, continue, switch, an isola branch; from a
+        computation or :func:`hbtrack.read_result`), whose parameters and harmonic balance
+        (harmonics, subharmonic, samples, condensation) are then used, as ``--from``; the
+        keywords below still win over them ...
     point : int, optional
         ... at this row of its ``states`` (0-based).
     method : {"newmark", "dopri5"}, optional
@@ -49,17 +53,15 @@ def simulate(case, omega=None, *, start=None, point=None, method="newmark", step
     """
     core = require_core()
     progress = checked_progress(progress)
-    run_case = case_with(case, settings_overrides(**settings), "simulate")
     if (start is None) != (point is None):
         raise ValueError("point: needs start" if start is None else "start: needs point")
-    state = None
+    state, from_result = None, []
     if start is not None:
-        states = start["states"]
-        if not 0 <= point < len(states):
-            raise ValueError(f"point: must be a row of start's states, 0 to {len(states) - 1}, got {point}")
-        state = states[point]
+        state, _, from_result = start_state(start, point)
     elif omega is None:
         raise ValueError("omega: required unless start gives the point")
+    # As simulate --from: the start's parameters and harmonic balance, then the caller's.
+    run_case = case_with(case, from_result + settings_overrides(**settings), "simulate")
     steady = core.SteadyStateOptions(max_periods=max_periods, record_periods=record_periods)
     result = core.simulate(run_case, 0.0 if omega is None else float(omega), state, method, steps_per_period, steady, progress)
     result["kind"] = "simulate"
