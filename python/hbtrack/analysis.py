@@ -383,7 +383,8 @@ def isolas(case, tracks, *, at, progress=None, **settings):
     case : hbtrack.Case
         The case the curves were tracked on.
     tracks : dict or list of dict
-        One or more track results of the same parameter.
+        One or more track results of the same parameter. The branches are computed with the
+        first one's parameters and harmonic balance (as ``isolas --from``), then `settings`.
     at : float
         The parameter value where the curves are cut.
     progress : callable, optional
@@ -418,7 +419,8 @@ def isolas(case, tracks, *, at, progress=None, **settings):
     if len(names) != 1:
         raise ValueError(f"tracks: the curves track different parameters: {', '.join(sorted(names))}")
     progress = checked_progress(progress)
-    run_case = case_with(case, settings_overrides(**settings), "isolas")
+    # As `isolas --from`: the first curve's parameters and harmonic balance, then the caller's.
+    run_case = case_with(case, result_overrides(tracks[0]) + settings_overrides(**settings), "isolas")
     result = require_core().isolas(run_case, [np.asarray(t["states"]) for t in tracks], names.pop(), float(at), progress)
     result["kind"] = "isolas"
     for name, branch in result["branches"].items():

@@ -1,4 +1,4 @@
-"""track, switch and simulate from a result run on that result's parameters and harmonic balance,
+"""track, switch, simulate and isolas from a result run on that result's parameters and harmonic balance,
 as their `--from DIR` does (the keywords still win): a start computed at a non-default amplitude
 or number of harmonics is followed on the system it was computed on, not on the case's.
 
@@ -126,3 +126,20 @@ def test_simulate_from_a_result_is_simulate_from_its_folder(start, request, resu
     else:
         # The orbit it starts from has the result's harmonics: the mean, then cos and sin of 1..3.
         assert len(api["summary"]["start"]["harmonics_x"]) == 2 * FEW_HARMONICS + 1
+
+
+def test_isolas_run_on_the_first_curves_system_as_isolas_from(results_dir, few_harmonics, duffing_case):
+    _, folder = few_harmonics
+    track_dir, isolas_dir = str(results_dir / "track_h3_for_isolas"), str(results_dir / "isolas_h3")
+    low, high = TRACK["range"]
+    run_cli("track", DUFFING, "--from", folder["folder"], "--lp", "1", "--param", "amplitude", "--range", f"{low}:{high}", "-o", track_dir)
+    run_cli("isolas", DUFFING, "--from", track_dir, "--at", "1.5", "-o", isolas_dir)
+    cli = read_result(isolas_dir)
+    api = hbtrack.isolas(duffing_case, read_result(track_dir), at=1.5)
+    # The curve's 3 harmonics, not the case's 7 (whose states the curve's rows do not fit).
+    assert api["summary"]["options"]["harmonic_balance"] == cli["summary"]["options"]["harmonic_balance"]
+    assert api["summary"]["options"]["harmonic_balance"]["harmonics"] == FEW_HARMONICS
+    assert [c["status"] for c in api["summary"]["crossings"]] == [c["status"] for c in cli["summary"]["crossings"]]
+    assert len(cli["summary"]["crossings"]) > 0
+    for a, c in zip(api["summary"]["crossings"], cli["summary"]["crossings"]):
+        assert a["omega"] == pytest.approx(c["omega"], rel=RELATIVE)
