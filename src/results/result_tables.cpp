@@ -41,13 +41,13 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
             {"target_iterations", co.target_iterations},
             {"tolerance", co.tolerance},
             {"max_angle", co.max_angle},
-            {"predictor", co.predictor},
-            {"corrector", co.corrector},
+            {"predictor", to_string(co.predictor)},
+            {"corrector", to_string(co.corrector)},
             {"wall_time_limit", co.wall_time_limit},
             {"locate", co.locate},
             {"reuse_factorization", co.reuse_factorization},
             {"contraction", co.contraction}}},
-          {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", c.nfrc.stability.hill_solver}, {"cross_check", c.nfrc.stability.cross_check}}}};
+          {"stability", {{"method", to_string(c.nfrc.stability.method)}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", to_string(c.nfrc.stability.hill_solver)}, {"cross_check", to_string(c.nfrc.stability.cross_check)}}}};
 }
 
 json outputs_json(const CaseDefinition& c) {
