@@ -52,6 +52,7 @@ TEST(Choices, EveryValueRoundTripsThroughItsName) {
   EXPECT_EQ(round_trip_names<HillSolver>(), (std::vector<std::string>{"auto", "dense", "arnoldi"}));
   EXPECT_EQ(round_trip_names<CrossCheck>(), (std::vector<std::string>{"auto", "off"}));
   EXPECT_EQ(round_trip_names<TrackingMethod>(), (std::vector<std::string>{"bordered", "extended"}));
+  EXPECT_EQ(round_trip_names<IntegrationMethod>(), (std::vector<std::string>{"newmark", "dopri5"}));
 }
 
 TEST(Choices, TheNamedParsersAgreeWithTheTables) {
@@ -62,6 +63,7 @@ TEST(Choices, TheNamedParsersAgreeWithTheTables) {
   EXPECT_EQ(parse_hill_solver("arnoldi"), HillSolver::arnoldi);
   EXPECT_EQ(parse_cross_check("off"), CrossCheck::off);
   EXPECT_EQ(parse_tracking_method("extended"), TrackingMethod::extended);
+  EXPECT_EQ(parse_integration_method("dopri5"), IntegrationMethod::dopri5);
 }
 
 // The messages the case file, the CLI and Python report (tests/test_case_file.cpp and
@@ -74,6 +76,7 @@ TEST(Choices, AnUnknownNameNamesTheFieldAndEveryAllowedName) {
   EXPECT_EQ(error_for<HillSolver>("qr"), "stability.hill_solver: must be auto, dense or arnoldi, got 'qr'");
   EXPECT_EQ(error_for<CrossCheck>("on"), "stability.cross_check: must be auto or off, got 'on'");
   EXPECT_EQ(error_for<TrackingMethod>("minimal"), "tracking method: must be bordered or extended, got 'minimal'");
+  EXPECT_EQ(error_for<IntegrationMethod>("rk4"), "method: must be newmark or dopri5, got 'rk4'");
   // Names are exact: no case folding, no surrounding blanks.
   EXPECT_NE(error_for<Predictor>("Tangent"), "no error");
   EXPECT_NE(error_for<Predictor>(" tangent"), "no error");

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
 #include <utility>
 
 #include "artefact_warnings.hpp"
@@ -114,11 +113,7 @@ int run_track(TrackOptions o) {
   tracking.parameter_min = parse_number("--range", o.range.substr(0, colon));
   tracking.parameter_max = parse_number("--range", o.range.substr(colon + 1));
   if (!(tracking.parameter_min < tracking.parameter_max)) throw CaseError("--range: must be LO:HI with LO < HI, got '" + o.range + "'");
-  try {
-    tracking.method = parse_choice<TrackingMethod>(o.method, "--method");
-  } catch (const std::invalid_argument& e) {
-    throw CaseError(e.what());
-  }
+  tracking.method = parse_flag_choice<TrackingMethod>("--method", o.method);
 
   const CaseDefinition c = case_as_in(o.common, o.from);
   HarmonicBalance hbm = make_system(c);

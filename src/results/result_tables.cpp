@@ -260,8 +260,8 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   summary["outputs"] = outputs_json(c);
 }
 
-json simulation_options_json(const std::string& method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady) {
-  return {{"method", method},
+json simulation_options_json(IntegrationMethod method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady) {
+  return {{"method", to_string(method)},
           {"initial_state", from_hbm ? "hbm" : "rest"},
           {"steps_per_period", steps_per_period},
           {"max_periods", steady.max_periods},

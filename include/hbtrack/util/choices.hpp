@@ -19,6 +19,7 @@ enum class StabilityMethod { hill, monodromy, shooting, none };
 enum class HillSolver { automatic, dense, arnoldi };   // see stability/hill.hpp
 enum class CrossCheck { automatic, off };              // see StabilityOptions::cross_check
 enum class TrackingMethod { bordered, extended };      // minimally augmented | the paper's system
+enum class IntegrationMethod { newmark, dopri5 };      // simulate: HHT-alpha | Dormand-Prince
 
 template <class Choice>
 struct ChoiceName {
@@ -73,6 +74,13 @@ struct ChoiceTable<TrackingMethod> {
                                                          {TrackingMethod::extended, "extended"}};
 };
 
+template <>
+struct ChoiceTable<IntegrationMethod> {
+  static constexpr std::string_view field = "method";  // not in the case file: the argument's name
+  static constexpr ChoiceName<IntegrationMethod> names[] = {{IntegrationMethod::newmark, "newmark"},
+                                                            {IntegrationMethod::dopri5, "dopri5"}};
+};
+
 template <class Choice>
 concept NamedChoice = requires { ChoiceTable<Choice>::names; };
 
@@ -103,5 +111,6 @@ inline StabilityMethod parse_stability_method(const std::string& name) { return 
 inline HillSolver parse_hill_solver(const std::string& name) { return parse_choice<HillSolver>(name); }
 inline CrossCheck parse_cross_check(const std::string& name) { return parse_choice<CrossCheck>(name); }
 inline TrackingMethod parse_tracking_method(const std::string& name) { return parse_choice<TrackingMethod>(name); }
+inline IntegrationMethod parse_integration_method(const std::string& name) { return parse_choice<IntegrationMethod>(name); }
 
 }  // namespace hbtrack
