@@ -104,8 +104,8 @@ TEST(Continuation, FollowsAFoldAndFlagsBothLimitPoints) {
     for (const char* corrector : {"pseudo_arclength", "hypersphere"}) {
       CubicFold problem;
       ContinuationOptions o;
-      o.predictor = predictor;
-      o.corrector = corrector;
+      o.predictor = parse_predictor(predictor);
+      o.corrector = parse_corrector(corrector);
       o.step = 0.02;
       o.step_max = 0.05;
       // Start on the lower branch at lambda = 1 (u ~ -1.32), go towards lambda = -1.
@@ -136,7 +136,7 @@ TEST(Continuation, ResumingFromASavedStateRepeatsTheRunExactly) {
   // Secant predictor: the resumed run also needs the point before the last one.
   CubicFold problem;
   ContinuationOptions o;
-  o.predictor = "secant";
+  o.predictor = Predictor::secant;
   o.step_max = 0.05;
   const ParameterWindow window{-1.0, 1.0, -1, false};
   std::vector<ContinuationState> states;

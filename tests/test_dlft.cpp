@@ -60,7 +60,7 @@ HarmonicBalanceOptions options(const std::string& condensation, int samples = 12
   HarmonicBalanceOptions o;
   o.harmonics = 5;
   o.samples = samples;
-  o.condensation = condensation;
+  o.condensation = parse_condensation(condensation);
   return o;
 }
 

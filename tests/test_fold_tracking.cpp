@@ -33,7 +33,7 @@ struct Duffing {
   // Located limit points of the NFRC at the current amplitude: (omega, state).
   std::vector<SpecialPoint> limit_points() {
     NfrcOptions o = c.nfrc;
-    o.stability.method = "none";
+    o.stability.method = StabilityMethod::none;
     std::vector<SpecialPoint> lps;
     for (const SpecialPoint& sp : compute_nfrc(hbm, o, {}).continuation.special_points)
       if (sp.type == "LP" && sp.located) lps.push_back(sp);
@@ -41,7 +41,7 @@ struct Duffing {
   }
   FoldTrackingResult track(const SpecialPoint& lp, double lo, double hi, const std::string& method) {
     FoldTrackingOptions o;
-    o.method = method;
+    o.method = parse_tracking_method(method);
     o.parameter_min = lo;
     o.parameter_max = hi;
     o.continuation = c.nfrc.continuation;

@@ -137,7 +137,7 @@ TEST(FrictionalContact, AftJacobianMatchesFiniteDifferences) {
   HarmonicBalanceOptions options;
   options.harmonics = 3;
   options.samples = 64;
-  options.condensation = "none";
+  options.condensation = Condensation::none;
   HarmonicBalance hbm(m, ElementList{contact({0, 1})}, ParameterSet(), options);
   for (double an : {0.1, 0.4}) {
     VectorXd x = VectorXd::Zero(hbm.unknowns());

@@ -44,7 +44,7 @@ HarmonicBalance variant_model(const Variant& v) {
   HarmonicBalanceOptions o;
   o.harmonics = 4;
   o.samples = 64;
-  o.condensation = v.condensation;
+  o.condensation = parse_condensation(v.condensation);
   return HarmonicBalance(f.model, f.elements, f.parameters, o);
 }
 
@@ -160,7 +160,7 @@ TEST(HarmonicBalance, AutoCondensationPicksModalOnlyForProportionalDampingAndFew
   EXPECT_EQ(HarmonicBalance(gen.model, friction_only, gen.parameters, o).condensation_method(), "schur");
   // Every element: 6 nonlinear dofs of 9, too many for a well-conditioned receptance inverse.
   EXPECT_EQ(HarmonicBalance(prop.model, prop.elements, prop.parameters, o).condensation_method(), "schur");
-  o.condensation = "modal";
+  o.condensation = Condensation::modal;
   EXPECT_THROW(HarmonicBalance(gen.model, gen.elements, gen.parameters, o), std::invalid_argument);
 }
 
@@ -174,7 +174,7 @@ TEST(HarmonicBalance, CondensedAndFullSystemsGiveTheSameSolution) {
       HarmonicBalanceOptions o;
       o.harmonics = 5;
       o.samples = 128;
-      o.condensation = method;
+      o.condensation = parse_condensation(method);
       HarmonicBalance hbm(f.model, f.elements, f.parameters, o);
       NfrcProblem problem(hbm, 0.1, 1.0, 1.0);
       VectorXd x = hbm.linear_solution(omega);

@@ -70,7 +70,7 @@ HarmonicBalance selected_model(const Selection& s) {
   o.select(s.harmonics);
   o.subharmonic = s.subharmonic;
   o.samples = 64;
-  o.condensation = s.condensation;
+  o.condensation = parse_condensation(s.condensation);
   return HarmonicBalance(f.model, f.elements, f.parameters, o);
 }
 

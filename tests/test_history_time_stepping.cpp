@@ -182,7 +182,7 @@ HarmonicBalance jenkins_oscillator() {
   m.forcing.push_back({1, VectorXd::Constant(1, 0.1), VectorXd::Zero(1)});
   auto e = std::make_shared<ElasticDryFriction>();
   e->weights = VectorXd::Ones(1);
-  return HarmonicBalance(m, {with_properties(e, {0}, {1.0, 0.1})}, ParameterSet(), HarmonicBalanceOptions{21, 4096, "none", {}, 1});
+  return HarmonicBalance(m, {with_properties(e, {0}, {1.0, 0.1})}, ParameterSet(), HarmonicBalanceOptions{21, 4096, Condensation::none, {}, 1});
 }
 
 // Multipliers of the time integrator's own map over one period, by central differences of
@@ -242,7 +242,7 @@ TEST(HistoryTimeStepping, MonodromyMultipliersMatchTheTimeIntegratorsFlow) {
       for (int j = 0; j < 3; ++j) nearest = std::min(nearest, std::abs(r.multipliers(i) - flow(j)));
       EXPECT_LT(nearest, 1e-3) << "omega " << omega << " multiplier " << r.multipliers(i);
     }
-    const FloquetResult hill = hill_floquet(hbm, s.x, omega, "dense");
+    const FloquetResult hill = hill_floquet(hbm, s.x, omega, HillSolver::dense);
     std::printf("[ measured ] omega %.1f: largest Floquet exponent real part: monodromy %.4f, Hill %.4f\n", omega, r.max_real, hill.max_real);
   }
 }
@@ -259,7 +259,7 @@ TEST(HistoryTimeStepping, ThreeOscillatorsMonodromyVerdictsAreTheSimulations) {
   // runs the monodromy matrix and Newmark with sliders under the sanitizers.
   if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   CaseDefinition c = load_case(test::source_path("examples/three_oscillators_jenkins.toml"));
-  c.nfrc.stability.method = "none";
+  c.nfrc.stability.method = StabilityMethod::none;
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const NfrcResult nfrc = compute_nfrc(hbm, c.nfrc, c.outputs);
   const auto& points = nfrc.continuation.points;
@@ -275,7 +275,7 @@ TEST(HistoryTimeStepping, ThreeOscillatorsMonodromyVerdictsAreTheSimulations) {
   for (const size_t index : {stays, leaves}) {
     const BranchPoint& p = points[index];
     const FloquetResult monodromy = monodromy_floquet(hbm, p.u, p.lambda, 2000);
-    const FloquetResult hill = hill_floquet(hbm, p.u, p.lambda, "auto");
+    const FloquetResult hill = hill_floquet(hbm, p.u, p.lambda, HillSolver::automatic);
     const VectorXd full = hbm.expand(p.u, p.lambda);
     EquationOfMotion eom(c.model, c.elements, hbm.parameters(), p.lambda);
     MotionState start = state_from_harmonics(full, n, h, p.lambda);

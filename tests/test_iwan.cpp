@@ -166,7 +166,7 @@ TEST(Iwan, AftJacobianMatchesFiniteDifferencesInMicroAndMacroSlip) {
   HarmonicBalanceOptions options;
   options.harmonics = 3;
   options.samples = 64;
-  options.condensation = "none";
+  options.condensation = Condensation::none;
   HarmonicBalance hbm(m, ElementList{e}, ParameterSet(), options);
   for (double a : {0.3, 5.0}) {  // micro-slip, macro-slip
     VectorXd x = VectorXd::Zero(hbm.unknowns());

@@ -139,7 +139,7 @@ HarmonicBalance two_jenkins_model(int harmonics, int samples) {
   HarmonicBalanceOptions options;
   options.harmonics = harmonics;
   options.samples = samples;
-  options.condensation = "none";
+  options.condensation = Condensation::none;
   return HarmonicBalance(m, elements, ParameterSet(), options);
 }
 

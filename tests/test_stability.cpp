@@ -254,8 +254,8 @@ TEST(Stability, ArnoldiFindsTheRightmostHillExponents) {
   };
   for (size_t i = 0; i < r.continuation.points.size(); i += 3) {
     const BranchPoint& p = r.continuation.points[i];
-    const FloquetResult dense = hill_floquet(*hbm, p.u, p.lambda, "dense");
-    const FloquetResult arnoldi = hill_floquet(*hbm, p.u, p.lambda, "arnoldi");
+    const FloquetResult dense = hill_floquet(*hbm, p.u, p.lambda, HillSolver::dense);
+    const FloquetResult arnoldi = hill_floquet(*hbm, p.u, p.lambda, HillSolver::arnoldi);
     ASSERT_GT(arnoldi.exponents.size(), 0);
     // Arnoldi's deciding exponent is an eigenvalue of the pencil (l^2 D2 + l D1 + J), D2 = I x M.
     const std::complex<double> l = deciding(arnoldi);
@@ -287,7 +287,7 @@ TEST(Stability, ArnoldiExponentsAreEigenvaluesOfThePencilOnABasisWithoutTheMean)
   int compared = 0;
   for (size_t i = 0; i < r.continuation.points.size(); i += 8) {
     const BranchPoint& p = r.continuation.points[i];
-    const FloquetResult arnoldi = hill_floquet(*hbm, p.u, p.lambda, "arnoldi");
+    const FloquetResult arnoldi = hill_floquet(*hbm, p.u, p.lambda, HillSolver::arnoldi);
     ASSERT_GT(arnoldi.exponents.size(), 0);
     for (Eigen::Index k = 0; k < arnoldi.exponents.size(); ++k)
       EXPECT_LT(distance_to_hill_spectrum(*hbm, p.u, p.lambda, arnoldi.exponents(k)), 1e-8 * p.lambda)

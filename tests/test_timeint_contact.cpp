@@ -31,7 +31,7 @@ ContactPoint compute_upper_branch_point(double target_omega) {
   range.omega_end = 0.8;  // the fold is all we need
   // The engine locates the fold by itself; the Floquet analysis (shooting at every point of this
   // C0 law) would be most of the cost, minutes under the sanitizers, and nothing here reads it.
-  range.stability.method = "none";
+  range.stability.method = StabilityMethod::none;
   const NfrcResult nfrc = compute_nfrc(hbm, range, p.c.outputs);
   // Without stability the engine's LP/BP test alone marks points: the fold is the first LP.
   int first_fold = -1;

@@ -4,11 +4,13 @@
 // from a tracking curve). Every problem is a CaseError naming the file and the rule (exit 2).
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "hbtrack/hbm/harmonic_balance.hpp"
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/util/choices.hpp"
 
 namespace hbtrack::cli {
 
@@ -57,5 +59,14 @@ std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinit
 long parse_integer(const std::string& flag, const std::string& text, long min);
 double parse_number(const std::string& flag, const std::string& text);
 double parse_positive(const std::string& flag, const std::string& text);
+// One of a choice's names (util/choices.hpp), e.g. --method.
+template <NamedChoice Choice>
+Choice parse_flag_choice(const std::string& flag, const std::string& text) {
+  try {
+    return parse_choice<Choice>(text, flag);
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(e.what());
+  }
+}
 
 }  // namespace hbtrack::cli

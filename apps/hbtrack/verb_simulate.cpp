@@ -42,7 +42,7 @@ struct SimulateOptions {
 int run_simulate(const SimulateOptions& o) {
   const auto t0 = Clock::now();
   // Flags first: they are cheap to check and their errors name them.
-  if (o.method != "newmark" && o.method != "dopri5") throw CaseError("--method: must be newmark or dopri5, got '" + o.method + "'");
+  const IntegrationMethod method = parse_flag_choice<IntegrationMethod>("--method", o.method);
   const int steps_per_period = static_cast<int>(parse_integer("--steps-per-period", o.steps_per_period, 1));
   SteadyStateOptions steady;
   steady.max_periods = static_cast<int>(parse_integer("--max-periods", o.max_periods, 1));
@@ -99,7 +99,7 @@ int run_simulate(const SimulateOptions& o) {
     initial.history = equation->periodic_history(period_samples(orbit, n, harmonics, hbm.basis().samples()));
   std::unique_ptr<TimeIntegrator> integrator;
   json method_options;
-  if (o.method == "newmark") {
+  if (method == IntegrationMethod::newmark) {
     NewmarkOptions no;
     no.steps_per_period = steps_per_period;
     integrator = std::make_unique<NewmarkIntegrator>(*equation, no);
@@ -114,7 +114,7 @@ int run_simulate(const SimulateOptions& o) {
   ensure_directory(o.common.out_dir);
   lock_result_folder(o.common.out_dir);
   json summary = {{"verb", "simulate"}, {"options", options_json(c, hbm)}, {"omega", omega}, {"stop_reason", "running"}};
-  summary["options"]["simulation"] = simulation_options_json(o.method, !o.from.empty(), steps_per_period, steady);
+  summary["options"]["simulation"] = simulation_options_json(method, !o.from.empty(), steps_per_period, steady);
   summary["options"]["simulation"].update(method_options);
   if (!o.from.empty()) {
     summary["options"]["simulation"]["from"] = o.from;

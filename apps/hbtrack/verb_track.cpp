@@ -110,11 +110,10 @@ int run_track(TrackOptions o) {
   const size_t colon = o.range.find(':');
   if (colon == std::string::npos) throw CaseError("--range: expected LO:HI, got '" + o.range + "'");
   FoldTrackingOptions tracking;
-  tracking.method = o.method;
   tracking.parameter_min = parse_number("--range", o.range.substr(0, colon));
   tracking.parameter_max = parse_number("--range", o.range.substr(colon + 1));
   if (!(tracking.parameter_min < tracking.parameter_max)) throw CaseError("--range: must be LO:HI with LO < HI, got '" + o.range + "'");
-  if (o.method != "bordered" && o.method != "extended") throw CaseError("--method: must be bordered or extended, got '" + o.method + "'");
+  tracking.method = parse_flag_choice<TrackingMethod>("--method", o.method);
 
   const CaseDefinition c = case_as_in(o.common, o.from);
   HarmonicBalance hbm = make_system(c);

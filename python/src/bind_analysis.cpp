@@ -109,12 +109,11 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
                double parameter_max, const std::string& method, const py::object& progress) {
   const auto t0 = Clock::now();
   FoldTrackingOptions tracking;
-  tracking.method = method;
   tracking.parameter_min = parameter_min;
   tracking.parameter_max = parameter_max;
   tracking.continuation = c.nfrc.continuation;
   if (!(parameter_min < parameter_max)) throw CaseError("range: must be (LO, HI) with LO < HI");
-  if (method != "bordered" && method != "extended") throw CaseError("method: must be bordered or extended, got '" + method + "'");
+  tracking.method = parse_choice<TrackingMethod>(method, "method");  // a ValueError as the CaseErrors
   HarmonicBalance hbm = make_system(c);
   const int parameter = parameter_index(hbm.parameters(), param, "param");
   const double start_value = hbm.parameters().value(parameter);

@@ -85,7 +85,7 @@ py::dict continuation(const CaseDefinition& c, const std::string& param, double 
 // progress(fraction of [log start, log end] covered, point, the modal amplitude).
 py::dict backbone(CaseDefinition c, int mode, double start, double end, const py::object& progress) {
   const auto t0 = Clock::now();
-  c.harmonic_balance.condensation = "none";
+  c.harmonic_balance.condensation = Condensation::none;
   HarmonicBalance hbm = system_of(c);
   BackboneOptions options;
   options.mode = mode;

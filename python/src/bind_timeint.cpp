@@ -26,9 +26,8 @@ using nlohmann::json;
 
 // start: optional HBM state [omega, x0, x1, ...] (a row of a result's states); omega <= 0 takes
 // the start's frequency. progress(fraction of max_periods, period, time at its end).
-py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eigen::VectorXd>& start, const std::string& method,
+py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eigen::VectorXd>& start, IntegrationMethod method,
                   int steps_per_period, const SteadyStateOptions& steady_options, const py::object& progress) {
-  if (method != "newmark" && method != "dopri5") throw CaseError("method: must be newmark or dopri5, got '" + method + "'");
   SteadyStateOptions steady = steady_options;
   steady.harmonics = c.harmonic_balance.harmonics;
   steady.validate();
@@ -61,7 +60,7 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
   EquationOfMotion equation(c.model, c.elements, hbm.parameters(), omega);
   std::unique_ptr<TimeIntegrator> integrator;
   json integrator_settings;  // as the CLI records them
-  if (method == "newmark") {
+  if (method == IntegrationMethod::newmark) {
     NewmarkOptions no;
     no.steps_per_period = steps_per_period;
     integrator = std::make_unique<NewmarkIntegrator>(equation, no);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "choice_caster.hpp"
+
 namespace hbtrack {
 struct CaseDefinition;
 }

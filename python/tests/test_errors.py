@@ -41,9 +41,11 @@ def test_validate_names_the_field():
 
 def test_frc_rejects_bad_options_naming_the_field():
     case = hbtrack.load_case(DUFFING)
-    case.stability.method = "hilll"
+    # Refused where it is set: the option holds one of the method names, not any text.
+    with pytest.raises(ValueError, match="stability.method: must be hill, monodromy, shooting or none, got 'hilll'"):
+        case.stability.method = "hilll"
     with pytest.raises(ValueError, match="stability.method"):
-        hbtrack.frc(case)
+        hbtrack.frc(case, stability={"method": "hilll"})
 
 
 def test_track_arguments(duffing_case, duffing_frc):

@@ -11,8 +11,6 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 void FoldTrackingOptions::validate() const {
-  if (method != "bordered" && method != "extended")
-    throw std::invalid_argument("tracking method: must be bordered or extended, got '" + method + "'");
   if (!std::isfinite(parameter_min) || !std::isfinite(parameter_max) || !(parameter_min < parameter_max))
     throw std::invalid_argument("range: must be LO:HI with LO < HI, both finite");
   continuation.validate();
@@ -28,9 +26,9 @@ std::string FoldTrackingResult::failure() const {
 
 namespace {
 
-std::unique_ptr<FoldSystem> make_fold_system(const std::string& method, HarmonicBalance& hbm, int parameter,
+std::unique_ptr<FoldSystem> make_fold_system(TrackingMethod method, HarmonicBalance& hbm, int parameter,
                                              const FoldScales& scales) {
-  if (method == "extended") return std::make_unique<ExtendedFoldSystem>(hbm, parameter, scales);
+  if (method == TrackingMethod::extended) return std::make_unique<ExtendedFoldSystem>(hbm, parameter, scales);
   return std::make_unique<BorderedFoldSystem>(hbm, parameter, scales);
 }
 

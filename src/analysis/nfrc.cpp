@@ -99,7 +99,7 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
           rec.max_floquet_real = f.max_real;
           rec.floquet_exponents = f.exponents;
           rec.floquet_multipliers = f.multipliers;
-          rec.stability_method = f.method;
+          rec.stability_method = to_string(f.method);
         }
         result.recorded.push_back(std::move(rec));
         return !observer || observer(p, result.recorded.back(), index);

@@ -27,10 +27,6 @@ void ContinuationOptions::validate() const {
   if (max_iterations < 1 || max_iterations > 1000) throw std::invalid_argument("continuation.max_iterations: must be in [1, 1000]");
   if (target_iterations < 1) throw std::invalid_argument("continuation.target_iterations: must be >= 1");
   if (!(max_angle > 0) || max_angle > 3.14159) throw std::invalid_argument("continuation.max_angle: must be in (0, pi]");
-  if (predictor != "tangent" && predictor != "secant")
-    throw std::invalid_argument("continuation.predictor: must be tangent or secant, got '" + predictor + "'");
-  if (corrector != "pseudo_arclength" && corrector != "hypersphere")
-    throw std::invalid_argument("continuation.corrector: must be pseudo_arclength or hypersphere, got '" + corrector + "'");
   if (!(contraction > 0 && contraction < 1)) throw std::invalid_argument("continuation.contraction: must be in (0, 1)");
   if (!(wall_time_limit >= 0)) throw std::invalid_argument("continuation.wall_time_limit: must be >= 0");
 }

@@ -111,7 +111,7 @@ ContinuationStepper::Outcome ContinuationStepper::emit(BranchPoint point, const 
 ContinuationStepper::Outcome ContinuationStepper::step() {
   const int m = s_.m;
   VectorXd direction_vec = t_;
-  if (options_.predictor == "secant" && x_before_.size() == m + 1) {
+  if (options_.predictor == Predictor::secant && x_before_.size() == m + 1) {
     direction_vec = x_ - x_before_;
     direction_vec.normalize();
   }
@@ -119,7 +119,7 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
   VectorXd y = prediction;
   int iterations = 0;
   const int chords_before = s_.chord_iterations;
-  const bool converged = s_.correct(y, x_, direction_vec, ds_, options_.corrector == "hypersphere", options_, iterations);
+  const bool converged = s_.correct(y, x_, direction_vec, ds_, options_.corrector == Corrector::hypersphere, options_, iterations);
   // The sign of the bordered determinant at the last point: test_values stores it as the BP
   // test function, values[1].
   const int det_sign = static_cast<int>(previous_.values[1]);

@@ -67,8 +67,6 @@ void HarmonicBalanceOptions::validate() const {
     throw std::invalid_argument("harmonic_balance.samples: must be >= 2*harmonics+1 = " + std::to_string(2 * harmonics + 1) +
                                 ", got " + std::to_string(samples));
   if (samples > (1 << 20)) throw std::invalid_argument("harmonic_balance.samples: must be <= 1048576");
-  if (condensation != "auto" && condensation != "schur" && condensation != "modal" && condensation != "none")
-    throw std::invalid_argument("harmonic_balance.condensation: must be auto, schur, modal or none, got '" + condensation + "'");
 }
 
 int HarmonicBalanceOptions::effective_samples() const {
@@ -109,9 +107,9 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
       nonlinear.insert(d);
     }
   }
-  std::string method = options_.condensation;
-  if (nonlinear.empty()) method = "none";  // a linear model: keep every dof as unknown
-  if (method == "none") {
+  Condensation method = options_.condensation;
+  if (nonlinear.empty()) method = Condensation::none;  // a linear model: keep every dof as unknown
+  if (method == Condensation::none) {
     for (int i = 0; i < model_.dofs(); ++i) retained_.push_back(i);
   } else {
     retained_.assign(nonlinear.begin(), nonlinear.end());
@@ -120,11 +118,11 @@ HarmonicBalance::HarmonicBalance(StructuralModel model, ElementList elements, Pa
   // retained dofs (the blade's 27 tip dofs of 39) it is ill-conditioned (1e7 near a resonance)
   // and Newton stalls, while the Schur complement of a small linear block is cheap anyway. So
   // `auto` takes modal only when the retained dofs are a small part of the model.
-  if (method == "auto") {
+  if (method == Condensation::automatic) {
     const bool few_retained = 4 * retained_.size() <= static_cast<size_t>(model_.dofs());
-    method = few_retained && modes_diagonalise_damping(model_) ? "modal" : "schur";
+    method = few_retained && modes_diagonalise_damping(model_) ? Condensation::modal : Condensation::schur;
   }
-  if (method == "modal") {
+  if (method == Condensation::modal) {
     if (!modes_diagonalise_damping(model_))
       throw std::invalid_argument("harmonic_balance.condensation: 'modal' needs damping diagonalised by the normal modes and K > 0; use 'schur'");
     condenser_ = make_modal_condenser(linear_model, retained_, options_.harmonics);

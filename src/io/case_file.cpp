@@ -191,7 +191,7 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
     }
     c.harmonic_balance.subharmonic = in.integer_or(*h, "subharmonic", "harmonic_balance.subharmonic", 1);
     c.harmonic_balance.samples = in.integer_or(*h, "samples", "harmonic_balance.samples", 0);
-    c.harmonic_balance.condensation = in.string_or(*h, "condensation", "harmonic_balance.condensation", "auto");
+    c.harmonic_balance.condensation = in.choice_or(*h, "condensation", Condensation::automatic);
     try {
       c.harmonic_balance.validate();
     } catch (const std::invalid_argument& e) {
@@ -216,8 +216,8 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
   co.target_iterations = in.integer_or(cont, "target_iterations", "continuation.target_iterations", co.target_iterations);
   co.tolerance = in.number_or(cont, "tolerance", "continuation.tolerance", co.tolerance);
   co.max_angle = in.number_or(cont, "max_angle", "continuation.max_angle", co.max_angle);
-  co.predictor = in.string_or(cont, "predictor", "continuation.predictor", co.predictor);
-  co.corrector = in.string_or(cont, "corrector", "continuation.corrector", co.corrector);
+  co.predictor = in.choice_or(cont, "predictor", co.predictor);
+  co.corrector = in.choice_or(cont, "corrector", co.corrector);
   co.wall_time_limit = in.number_or(cont, "wall_time_limit", "continuation.wall_time_limit", co.wall_time_limit);
   if (const toml::value* locate = in.find(cont, "locate")) {
     if (!locate->is_boolean()) in.fail(locate, "continuation.locate", "expected true or false");
@@ -231,9 +231,9 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
   if (const toml::value* st = in.find(root, "stability")) {
     in.table(*st, "stability");
     in.check_keys(*st, "stability", {"method", "monodromy_steps", "hill_solver", "cross_check"});
-    o.stability.cross_check = in.string_or(*st, "cross_check", "stability.cross_check", o.stability.cross_check);
-    o.stability.hill_solver = in.string_or(*st, "hill_solver", "stability.hill_solver", o.stability.hill_solver);
-    o.stability.method = in.string_or(*st, "method", "stability.method", o.stability.method);
+    o.stability.cross_check = in.choice_or(*st, "cross_check", o.stability.cross_check);
+    o.stability.hill_solver = in.choice_or(*st, "hill_solver", o.stability.hill_solver);
+    o.stability.method = in.choice_or(*st, "method", o.stability.method);
     o.stability.monodromy_steps = in.integer_or(*st, "monodromy_steps", "stability.monodromy_steps", o.stability.monodromy_steps);
   }
   try {
@@ -249,7 +249,7 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
 // DLFT contact forces are Lagrange multipliers of the harmonic balance: no time-domain law, so no
 // Floquet analysis of them.
 void check_stability_supported(const CaseReader& in, const toml::value& root, const CaseDefinition& c) {
-  if (c.nfrc.stability.method == "none") return;
+  if (c.nfrc.stability.method == StabilityMethod::none) return;
   for (size_t i = 0; i < c.elements.size(); ++i) {
     if (!c.elements[i]->uses_linear_residual()) continue;
     const toml::value& e = root.at("elements").as_array()[i];

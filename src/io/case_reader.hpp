@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "hbtrack/io/case_file.hpp"
+#include "hbtrack/util/choices.hpp"
 
 namespace hbtrack {
 
@@ -85,6 +87,18 @@ class CaseReader {
   std::string string_or(const toml::value& t, const std::string& key, const std::string& field, std::string fallback) const {
     const toml::value* v = find(t, key);
     return v ? string(*v, field) : fallback;
+  }
+  // A named choice (util/choices.hpp): an unknown name fails with the choice's own message.
+  template <NamedChoice Choice>
+  Choice choice_or(const toml::value& t, const std::string& key, Choice fallback) const {
+    const toml::value* v = find(t, key);
+    if (!v) return fallback;
+    const std::string field(ChoiceTable<Choice>::field);
+    try {
+      return parse_choice<Choice>(string(*v, field));
+    } catch (const std::invalid_argument& e) {
+      fail(v, "", e.what());
+    }
   }
   Eigen::VectorXd vector(const toml::value& v, const std::string& field) const {
     if (!v.is_array()) fail(&v, field, "expected an array of numbers");

@@ -41,13 +41,13 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
             {"target_iterations", co.target_iterations},
             {"tolerance", co.tolerance},
             {"max_angle", co.max_angle},
-            {"predictor", co.predictor},
-            {"corrector", co.corrector},
+            {"predictor", to_string(co.predictor)},
+            {"corrector", to_string(co.corrector)},
             {"wall_time_limit", co.wall_time_limit},
             {"locate", co.locate},
             {"reuse_factorization", co.reuse_factorization},
             {"contraction", co.contraction}}},
-          {"stability", {{"method", c.nfrc.stability.method}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", c.nfrc.stability.hill_solver}, {"cross_check", c.nfrc.stability.cross_check}}}};
+          {"stability", {{"method", to_string(c.nfrc.stability.method)}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", to_string(c.nfrc.stability.hill_solver)}, {"cross_check", to_string(c.nfrc.stability.cross_check)}}}};
 }
 
 json outputs_json(const CaseDefinition& c) {
@@ -260,8 +260,8 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   summary["outputs"] = outputs_json(c);
 }
 
-json simulation_options_json(const std::string& method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady) {
-  return {{"method", method},
+json simulation_options_json(IntegrationMethod method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady) {
+  return {{"method", to_string(method)},
           {"initial_state", from_hbm ? "hbm" : "rest"},
           {"steps_per_period", steps_per_period},
           {"max_periods", steady.max_periods},

@@ -100,7 +100,7 @@ double energy_centroid(const Eigen::VectorXcd& p, int n, const FourierBasis& bas
 
 }  // namespace
 
-FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double forcing_omega, const std::string& solver) {
+FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double forcing_omega, HillSolver solver) {
   const int n = hbm.model().dofs();
   // The exponent families are l + i k w with w the basis' fundamental (omega / nu), and the
   // multipliers are over its period.
@@ -115,7 +115,7 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   constexpr Eigen::Index kDenseLimit = 300;
   Eigen::VectorXcd all;
   Eigen::MatrixXcd vectors;
-  const bool arnoldi = solver == "arnoldi" || (solver == "auto" && 2 * size > kDenseLimit);
+  const bool arnoldi = solver == HillSolver::arnoldi || (solver == HillSolver::automatic && 2 * size > kDenseLimit);
   // Reused from call to call: the dense matrices (11 MB on the blade) and the element blocks
   // would otherwise be mapped and faulted in afresh at every point.
   thread_local Eigen::MatrixXd jacobian, damping;
@@ -159,7 +159,7 @@ FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   // where s + i w/2 and s - i w/2 are the same family: keeping both would lose the other exponent
   // crossing there.
   FloquetResult r;
-  r.method = "hill";
+  r.method = StabilityMethod::hill;
   r.exponents.resize(2 * n);
   std::vector<double> kept_centroid;
   int kept = 0;

@@ -224,7 +224,7 @@ FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, 
     mu = largest;
   }
   FloquetResult r;
-  r.method = "monodromy";
+  r.method = StabilityMethod::monodromy;
   r.exponents = mu.array().log() / period;
   finish_floquet(r, omega, 1e-9 * omega);
   r.multipliers = mu;  // exact, not re-exponentiated

@@ -183,7 +183,7 @@ FloquetResult shooting_floquet(HarmonicBalance& hbm, const VectorXd& x, double o
   if (outcome) *outcome = result;
 
   FloquetResult r;
-  r.method = "shooting";
+  r.method = StabilityMethod::shooting;
   const double period = hbm.subharmonic() * equation.period();
   const Eigen::VectorXcd mu = phi.allFinite() ? dense_eigenvalues(phi)
                                               : Eigen::VectorXcd::Constant(2 * n, std::complex<double>(INFINITY, 0));

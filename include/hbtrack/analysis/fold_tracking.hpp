@@ -8,11 +8,12 @@
 
 #include "hbtrack/analysis/fold_systems.hpp"
 #include "hbtrack/analysis/nfrc.hpp"
+#include "hbtrack/util/choices.hpp"
 
 namespace hbtrack {
 
 struct FoldTrackingOptions {
-  std::string method = "bordered";  // bordered (minimally augmented, default) | extended (paper)
+  TrackingMethod method = TrackingMethod::bordered;
   double parameter_min = 0, parameter_max = 0;
   ContinuationOptions continuation;
   void validate() const;  // throws std::invalid_argument naming the field and the rule

@@ -11,14 +11,14 @@
 namespace hbtrack {
 
 struct StabilityOptions {
-  std::string method = "hill";  // hill | monodromy | none
+  StabilityMethod method = StabilityMethod::hill;
   int monodromy_steps = 2000;   // RK4 steps per period for the monodromy matrix
-  std::string hill_solver = "auto";  // auto | dense | arnoldi (see stability/hill.hpp)
+  HillSolver hill_solver = HillSolver::automatic;
   // Hill: where Hill's method is unreliable (a law that is not smooth, see
-  // hill_needs_cross_check), the monodromy matrix decides instead. auto | off
-  std::string cross_check = "auto";
+  // hill_needs_cross_check), the monodromy matrix decides instead (off: Hill alone).
+  CrossCheck cross_check = CrossCheck::automatic;
   void validate() const;        // throws std::invalid_argument naming the field
-  bool enabled() const { return method != "none"; }
+  bool enabled() const { return method != StabilityMethod::none; }
 };
 
 FloquetResult floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const StabilityOptions& options);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/util/choices.hpp"
+
 namespace hbtrack {
 
 class ContinuationProblem {
@@ -45,8 +47,8 @@ struct ContinuationOptions {
   // than the step from the prediction, is retried at half length: it cut a corner or jumped
   // to another part of the branch.
   double max_angle = 0.3;
-  std::string predictor = "tangent";           // tangent | secant (paper eq 12)
-  std::string corrector = "pseudo_arclength";  // pseudo_arclength | hypersphere (paper eq 14)
+  Predictor predictor = Predictor::tangent;
+  Corrector corrector = Corrector::pseudo_arclength;
   double wall_time_limit = 0;  // seconds, 0 for none; stops with "time_limit" (as --time-limit does)
   // Refine each bracketed special point onto the zero of its test function (secant along the
   // branch); false leaves it at the bracketing point.

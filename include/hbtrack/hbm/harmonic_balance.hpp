@@ -17,13 +17,14 @@
 #include "hbtrack/hbm/linear_condenser.hpp"
 #include "hbtrack/model/parameters.hpp"
 #include "hbtrack/model/structural_model.hpp"
+#include "hbtrack/util/choices.hpp"
 
 namespace hbtrack {
 
 struct HarmonicBalanceOptions {
   int harmonics = 5;             // H, the largest harmonic balanced
   int samples = 0;               // N time samples per period; 0 picks a power of two >= 8(H+1)
-  std::string condensation = "auto";  // auto | schur | modal | none (solve the full system)
+  Condensation condensation = Condensation::automatic;
   // When not empty, the harmonics balanced (sorted, unique, >= 0, last = H; 0 only if listed),
   // e.g. {1, 3, 5, 7}; empty: 0..H. (After the first three: {H, N, condensation} still works.)
   std::vector<int> harmonic_list;

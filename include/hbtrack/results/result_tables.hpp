@@ -11,6 +11,7 @@
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/timeint/steady_state.hpp"
+#include "hbtrack/util/choices.hpp"
 
 namespace hbtrack {
 
@@ -49,7 +50,7 @@ std::vector<double> tracking_row(const FoldCurvePoint& p);
 void add_tracking_summary(nlohmann::json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter);
 
 // summary.json "options.simulation" of `simulate` (the integrator's own settings come on top).
-nlohmann::json simulation_options_json(const std::string& method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady);
+nlohmann::json simulation_options_json(IntegrationMethod method, bool from_hbm, int steps_per_period, const SteadyStateOptions& steady);
 
 // signals.csv of a simulation: time, then one column per output; its rows.
 std::vector<std::string> signals_header(const CaseDefinition& c);

@@ -5,10 +5,12 @@
 #include <Eigen/Dense>
 #include <string>
 
+#include "hbtrack/util/choices.hpp"
+
 namespace hbtrack {
 
 struct FloquetResult {
-  std::string method;          // "hill" or "monodromy"
+  StabilityMethod method = StabilityMethod::hill;  // the one that computed it (never none)
   Eigen::VectorXcd exponents;  // 2n, sorted by increasing |Im l| (Hill) or from log(mu) / T
   Eigen::VectorXcd multipliers;
   double max_real = 0;         // largest real part of the exponents

@@ -7,9 +7,9 @@
 
 namespace hbtrack {
 
-// solver: "dense" (QR on the whole 2n(2H+1) spectrum), "arnoldi" (shift-invert Arnoldi for the
-// min(2n, 24) eigenvalues nearest the imaginary axis, one LU of the n(2H+1) pencil per point) or "auto"
+// solver: dense (QR on the whole 2n(2H+1) spectrum), arnoldi (shift-invert Arnoldi for the
+// min(2n, 24) eigenvalues nearest the imaginary axis, one LU of the n(2H+1) pencil per point) or automatic
 // (dense up to a first-order size of 300).
-FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const std::string& solver = "auto");
+FloquetResult hill_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, HillSolver solver = HillSolver::automatic);
 
 }  // namespace hbtrack

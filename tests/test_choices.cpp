@@ -1,0 +1,93 @@
+// The settings' choices (util/choices.hpp): every value's name parses back to it, the names are
+// the ones the case file, summary.json and Python use, and an unknown name gives the one-line
+// message naming the field and every allowed name.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hbtrack/util/choices.hpp"
+
+using namespace hbtrack;
+
+namespace {
+
+// Each value, to its name and back; the names in table order; every enumerator listed once (the
+// table's values are 0, 1, ... as the enums declare them, without gaps or repeats).
+template <class Choice>
+std::vector<std::string> round_trip_names() {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  int expected_value = 0;
+  for (const ChoiceName<Choice>& entry : ChoiceTable<Choice>::names) {
+    EXPECT_EQ(static_cast<int>(entry.value), expected_value++) << entry.name;
+    const std::string name = to_string(entry.value);
+    EXPECT_EQ(parse_choice<Choice>(name), entry.value) << name;
+    EXPECT_TRUE(seen.insert(name).second) << name << " appears twice";
+    names.push_back(name);
+  }
+  return names;
+}
+
+template <class Choice>
+std::string error_for(const std::string& name) {
+  try {
+    parse_choice<Choice>(name);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+// The names are a file format: these lists are what existing case files and results hold.
+TEST(Choices, EveryValueRoundTripsThroughItsName) {
+  EXPECT_EQ(round_trip_names<Predictor>(), (std::vector<std::string>{"tangent", "secant"}));
+  EXPECT_EQ(round_trip_names<Corrector>(), (std::vector<std::string>{"pseudo_arclength", "hypersphere"}));
+  EXPECT_EQ(round_trip_names<Condensation>(), (std::vector<std::string>{"auto", "schur", "modal", "none"}));
+  EXPECT_EQ(round_trip_names<StabilityMethod>(), (std::vector<std::string>{"hill", "monodromy", "shooting", "none"}));
+  EXPECT_EQ(round_trip_names<HillSolver>(), (std::vector<std::string>{"auto", "dense", "arnoldi"}));
+  EXPECT_EQ(round_trip_names<CrossCheck>(), (std::vector<std::string>{"auto", "off"}));
+  EXPECT_EQ(round_trip_names<TrackingMethod>(), (std::vector<std::string>{"bordered", "extended"}));
+  EXPECT_EQ(round_trip_names<IntegrationMethod>(), (std::vector<std::string>{"newmark", "dopri5"}));
+}
+
+TEST(Choices, TheNamedParsersAgreeWithTheTables) {
+  EXPECT_EQ(parse_predictor("secant"), Predictor::secant);
+  EXPECT_EQ(parse_corrector("hypersphere"), Corrector::hypersphere);
+  EXPECT_EQ(parse_condensation("auto"), Condensation::automatic);
+  EXPECT_EQ(parse_stability_method("none"), StabilityMethod::none);
+  EXPECT_EQ(parse_hill_solver("arnoldi"), HillSolver::arnoldi);
+  EXPECT_EQ(parse_cross_check("off"), CrossCheck::off);
+  EXPECT_EQ(parse_tracking_method("extended"), TrackingMethod::extended);
+  EXPECT_EQ(parse_integration_method("dopri5"), IntegrationMethod::dopri5);
+}
+
+// The messages the case file, the CLI and Python report (tests/test_case_file.cpp and
+// python/tests/test_errors.py match them).
+TEST(Choices, AnUnknownNameNamesTheFieldAndEveryAllowedName) {
+  EXPECT_EQ(error_for<Predictor>("euler"), "continuation.predictor: must be tangent or secant, got 'euler'");
+  EXPECT_EQ(error_for<Corrector>("newton"), "continuation.corrector: must be pseudo_arclength or hypersphere, got 'newton'");
+  EXPECT_EQ(error_for<Condensation>("guyan"), "harmonic_balance.condensation: must be auto, schur, modal or none, got 'guyan'");
+  EXPECT_EQ(error_for<StabilityMethod>("floquet"), "stability.method: must be hill, monodromy, shooting or none, got 'floquet'");
+  EXPECT_EQ(error_for<HillSolver>("qr"), "stability.hill_solver: must be auto, dense or arnoldi, got 'qr'");
+  EXPECT_EQ(error_for<CrossCheck>("on"), "stability.cross_check: must be auto or off, got 'on'");
+  EXPECT_EQ(error_for<TrackingMethod>("minimal"), "tracking method: must be bordered or extended, got 'minimal'");
+  EXPECT_EQ(error_for<IntegrationMethod>("rk4"), "method: must be newmark or dopri5, got 'rk4'");
+  // Names are exact: no case folding, no surrounding blanks.
+  EXPECT_NE(error_for<Predictor>("Tangent"), "no error");
+  EXPECT_NE(error_for<Predictor>(" tangent"), "no error");
+  EXPECT_NE(error_for<Condensation>("automatic"), "no error");
+}
+
+TEST(Choices, ACallerMayNameTheFieldItsOwnWay) {
+  try {
+    parse_choice<TrackingMethod>("minimal", "--method");
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "--method: must be bordered or extended, got 'minimal'");
+  }
+}
