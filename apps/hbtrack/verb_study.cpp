@@ -476,10 +476,13 @@ class Study {
         // The refined NFRC's limit point nearest this curve's starting one (1-based, omega order).
         const double omega = curve.value("omega", 0.0);
         const json refined_points = refined.value("special_points", json::array());
+        const std::vector<size_t> rows = limit_point_rows(refined_points);
         size_t lp = 0;
         double best = 1e300;
-        for (size_t k = 0; const size_t row : limit_point_rows(refined_points))
-          if (++k, std::abs(refined_points[row].value("omega", 0.0) - omega) < best) best = std::abs(refined_points[row].value("omega", 0.0) - omega), lp = k;
+        for (size_t k = 0; k < rows.size(); ++k) {
+          const double distance = std::abs(refined_points[rows[k]].value("omega", 0.0) - omega);
+          if (distance < best) best = distance, lp = k + 1;
+        }
         if (lp == 0) continue;
         const std::string folder = "converged/" + curve.value("folder", std::string());
         steps.push_back({folder,
