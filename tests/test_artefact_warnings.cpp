@@ -1,8 +1,8 @@
 // The warnings that name special points and tracking extrema the time sampling, not the
-// dynamics, produced (apps/hbtrack/artefact_warnings.cpp).
+// dynamics, produced (src/runs/artefact_warnings.cpp).
 #include <gtest/gtest.h>
 
-#include "artefact_warnings.hpp"
+#include "hbtrack/runs/artefact_warnings.hpp"
 
 using namespace hbtrack;
 
@@ -30,10 +30,10 @@ TEST(ArtefactWarnings, FourSpecialPointsWithinATenthOfAPercentOfTheRangeAreAClus
   // Range 1: spacing 1e-4 is a cluster; two genuine folds 0.1 apart are not.
   const std::vector<SpecialPoint> saw_tooth{special("LP", 0.7), special("LP", 0.7001), special("NS", 0.7002), special("LP", 0.7003),
                                             special("LP", 0.9), special("LP", 1.0)};
-  const auto warnings = cli::special_point_clusters(saw_tooth, 1.0);
+  const auto warnings = runs::special_point_clusters(saw_tooth, 1.0);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("4 special points (3 LP, 1 NS)"), std::string::npos) << warnings[0];
-  EXPECT_TRUE(cli::special_point_clusters({special("LP", 0.7), special("LP", 0.8), special("PD", 0.9)}, 1.0).empty());
+  EXPECT_TRUE(runs::special_point_clusters({special("LP", 0.7), special("LP", 0.8), special("PD", 0.9)}, 1.0).empty());
 }
 
 TEST(ArtefactWarnings, AMinNextToAMaxAtTheSameParameterIsAWiggleNotABirthAndAMerge) {
@@ -41,11 +41,11 @@ TEST(ArtefactWarnings, AMinNextToAMaxAtTheSameParameterIsAWiggleNotABirthAndAMer
   // in omega (range 1, span 0.4) is not.
   const std::vector<FoldExtremum> extrema{extremum("min", 3, 1.0, 0.1), extremum("max", 40, 1.2, 0.3), extremum("min", 41, 1.20001, 0.29999),
                                           extremum("max", 90, 1.4, 0.5)};
-  const auto warnings = cli::extremum_pairs_below_resolution(extrema, "mu", 1.0, 0.4);
+  const auto warnings = runs::extremum_pairs_below_resolution(extrema, "mu", 1.0, 0.4);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("1 min/max pair of mu"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("mu = 0.3 at omega = 1.2"), std::string::npos) << warnings[0];
   // Far apart in omega (a cusp's two sides), or of the same type: no warning.
-  EXPECT_TRUE(cli::extremum_pairs_below_resolution({extremum("max", 40, 1.2, 0.3), extremum("min", 41, 1.3, 0.29999)}, "mu", 1.0, 0.4).empty());
-  EXPECT_TRUE(cli::extremum_pairs_below_resolution({extremum("max", 1, 1.2, 0.3), extremum("max", 2, 1.2, 0.3)}, "mu", 1.0, 0.4).empty());
+  EXPECT_TRUE(runs::extremum_pairs_below_resolution({extremum("max", 40, 1.2, 0.3), extremum("min", 41, 1.3, 0.29999)}, "mu", 1.0, 0.4).empty());
+  EXPECT_TRUE(runs::extremum_pairs_below_resolution({extremum("max", 1, 1.2, 0.3), extremum("max", 2, 1.2, 0.3)}, "mu", 1.0, 0.4).empty());
 }

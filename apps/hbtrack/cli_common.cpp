@@ -42,12 +42,4 @@ std::string number_text(double v, int significant) {
   return buf;
 }
 
-HarmonicBalance make_system(const CaseDefinition& c) {
-  try {
-    return HarmonicBalance(c.model, c.elements, c.parameters, c.harmonic_balance);
-  } catch (const std::invalid_argument& e) {
-    throw CaseError(c.path + ": " + e.what());
-  }
-}
-
 }  // namespace hbtrack::cli

@@ -11,6 +11,7 @@
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/results/result_tables.hpp"  // options_json, branch rows: shared with the Python module
+#include "hbtrack/runs/case_system.hpp"
 #include "interruption.hpp"
 #include "progress.hpp"
 
@@ -50,8 +51,8 @@ void add_jobs_option(CLI::App* command, int& jobs, const std::string& what);
 // 12 read better in tables and command lines.
 std::string number_text(double v, int significant = 10);
 
-
-HarmonicBalance make_system(const CaseDefinition& c);
+// The case's system, as every run builds it.
+using runs::make_system;
 
 // Verbs register themselves, one file each: `const VerbRegistrar registrar(add_my_verbs);`
 // at namespace scope in the verb's file adds its sub-commands to the tool.

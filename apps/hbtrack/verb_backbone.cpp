@@ -4,18 +4,14 @@
 #include <cstdio>
 
 #include "cli_common.hpp"
-#include "hbtrack/analysis/backbone.hpp"
-#include "hbtrack/results/backbone_tables.hpp"
-#include "hbtrack/results/results_writer.hpp"
-#include "hbtrack/results/state_columns.hpp"
+#include "cli_monitor.hpp"
+#include "hbtrack/runs/backbone.hpp"
 #include "result_folder.hpp"
-#include "stop_request.hpp"
+#include "result_folder_sink.hpp"
 
 namespace hbtrack::cli {
 
 namespace {
-
-using nlohmann::json;
 
 struct BackboneCliOptions {
   CommonOptions common;
@@ -32,52 +28,22 @@ int run_backbone(const BackboneCliOptions& o) {
   options.amplitude_start = parse_positive("--range", o.range.substr(0, colon));
   options.amplitude_end = parse_positive("--range", o.range.substr(colon + 1));
   if (!(options.amplitude_end > options.amplitude_start)) throw CaseError("--range: must be LO:HI with 0 < LO < HI, got '" + o.range + "'");
-  // Every dof is an unknown: the negative modal damping acts on the whole model.
-  std::vector<std::string> sets = o.common.sets;
-  sets.push_back("harmonic_balance.condensation=\"none\"");
-  const CaseDefinition c = load_case(o.common.case_path, sets);
-  HarmonicBalance hbm = make_system(c);
-  options.continuation = c.nfrc.continuation;
-  if (options.mode > c.model.dofs())
-    throw CaseError("--mode: " + std::to_string(options.mode) + " is beyond the model's " + std::to_string(c.model.dofs()) + " modes");
-
-  const std::string& dir = o.common.out_dir;
-  json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
-  summary["options"]["backbone"] = backbone_options_json(options);
-  ensure_directory(dir);
-  CsvAppender branch(dir + "/branch.csv", backbone_header(c, hbm.basis().harmonic_numbers()));
-  CsvAppender states(dir + "/states.csv", dof_state_header(hbm));
-  write_json_atomically(dir + "/summary.json", summary);
-
+  const CaseDefinition c = load_case(o.common.case_path, o.common.sets);
+  ResultFolderSink sink(o.common.out_dir);
   Progress progress(o.common.quiet);
   progress.relay_to(o.common.progress_file);
   StopRequest stop(o.time_limit);
-  BackboneResult r;
+  CliMonitor monitor(progress, stop, c.outputs);
+  runs::RunReport report;
   try {
-    r = compute_backbone(hbm, options, c.outputs, [&](const BranchPoint& p, const BackbonePoint& point, int index) {
-      branch.append(backbone_row(point));
-      states.append(dof_state_row(hbm, point.omega, point.amplitude * p.u.head(hbm.unknowns())));
-      progress.update(index, point.omega, point.recorded, c.outputs);
-      return !stop.requested();
-    });
+    report = runs::backbone(c, options, sink, monitor);
   } catch (const std::runtime_error& e) {
-    summary["stop_reason"] = "no_convergence";
-    summary["points"] = 0;
-    write_json_atomically(dir + "/summary.json", summary);
+    if (dynamic_cast<const CaseError*>(&e)) throw;
     throw RunFailed{e.what()};
   }
   progress.finish();
-  const auto& s = r.continuation.summary;
-  const std::string stop_reason = stop.reason(s.stop_reason);
-  add_backbone_summary(summary, c, hbm, r);
-  summary["stop_reason"] = stop_reason;
-  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};
-  write_json_atomically(dir + "/summary.json", summary);
-  if (!r.continuation.success())
-    throw RunFailed{"backbone stopped: " + stop_reason + " after " + std::to_string(s.points) + " points (kept in " + dir + ")"};
-  if (!o.common.quiet)
-    std::fprintf(stderr, "backbone: mode %d, %d points, omega %.6g -> %.6g, %.3f s -> %s\n", options.mode, s.points, r.points.front().omega,
-                 r.points.back().omega, summary["timings"]["wall_s"].get<double>(), dir.c_str());
+  if (!report.success()) throw RunFailed{report.failure};
+  if (!o.common.quiet) std::fprintf(stderr, "backbone: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 

@@ -3,30 +3,33 @@
 // and whether the motion stays on them (docs/time-integration.md).
 #include <unistd.h>
 
-#include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "cli_common.hpp"
-#include "folder_lock.hpp"
-#include "hbtrack/results/results_writer.hpp"
-#include "hbtrack/timeint/dormand_prince_integrator.hpp"
-#include "hbtrack/timeint/equation_of_motion.hpp"
-#include "hbtrack/timeint/initial_state.hpp"
-#include "hbtrack/timeint/newmark_integrator.hpp"
-#include "hbtrack/timeint/steady_state.hpp"
+#include "hbtrack/runs/simulate.hpp"
 #include "result_folder.hpp"
+#include "result_folder_sink.hpp"
 
 namespace hbtrack::cli {
 
 namespace {
 
-using nlohmann::json;
+// The integration's progress on a terminal ("period N change X"), and Ctrl-C.
+class PeriodLine final : public runs::RunMonitor {
+ public:
+  explicit PeriodLine(bool shown) : shown_(shown) {}
+  bool period(int period, double change, double, double) override {
+    if (shown_) std::fprintf(stderr, "\r  period %6d  change %-10.3e", period + 1, change);
+    return !interrupted();
+  }
+  void finish() const {
+    if (shown_) std::fprintf(stderr, "\n");
+  }
 
+ private:
+  bool shown_;
+};
 
 // Numeric flags arrive as text and are checked here, so that a bad value gives the tool's
 // one-line CaseError (exit 2) naming the flag.
@@ -55,110 +58,25 @@ int run_simulate(const SimulateOptions& o) {
   if (o.from.empty() && !omega_flag) throw CaseError("--omega: required unless --from gives the point");
 
   CaseDefinition c = load_case(o.common.case_path, o.common.sets);
+  runs::SimulateOptions run;
+  run.omega = omega_flag;
+  run.method = method;
+  run.steps_per_period = steps_per_period;
+  run.steady = steady;
   if (!o.from.empty()) {
     std::vector<std::string> overrides = hbm_overrides(o.from, c);
     overrides.insert(overrides.end(), o.common.sets.begin(), o.common.sets.end());  // --set wins
     c = load_case(o.common.case_path, overrides);
+    const HbmState s = read_hbm_state(o.from + "/states.csv", point, make_system(c));
+    run.start = runs::StartPoint{s.omega, s.x, o.from + "/states.csv: point " + o.point};
+    run.origin = {{"from", o.from}, {"point", point}};
   }
-  HarmonicBalance hbm = make_system(c);
-  const int harmonics = c.harmonic_balance.harmonics;
-  if (steps_per_period < 2 * harmonics + 1)
-    throw CaseError("--steps-per-period: must be >= 2*harmonics+1 = " + std::to_string(2 * harmonics + 1) + " to resolve H = " +
-                    std::to_string(harmonics) + ", got " + o.steps_per_period);
-  steady.harmonics = harmonics;
-
-  // The initial state: rest, or the HBM orbit at t = 0 (at the frequency of that orbit).
-  const int n = c.model.dofs();
-  MotionState initial = rest_state(n);
-  std::optional<RecordedPoint> start_point;
-  std::vector<Eigen::VectorXd> start_harmonics;  // of each output dof: the HBM orbit to compare with
-  double omega = omega_flag.value_or(0.0);
-  Eigen::VectorXd orbit;  // harmonics of every dof of the start orbit
-  if (!o.from.empty()) {
-    const HbmState s = read_hbm_state(o.from + "/states.csv", point, hbm);
-    if (s.x.size() != hbm.unknowns())
-      throw CaseError(o.from + "/states.csv: holds " + std::to_string(s.x.size()) + " unknowns, the case's harmonic balance has " +
-                      std::to_string(hbm.unknowns()) + " (results of another case?)");
-    if (!(s.omega > 0) || !std::isfinite(s.omega)) throw CaseError(o.from + "/states.csv: point " + o.point + ": omega must be > 0");
-    if (!omega_flag) omega = s.omega;
-    const Eigen::VectorXd full = hbm.expand(s.x, s.omega);
-    orbit = full;
-    initial = state_from_harmonics(full, n, harmonics, hbm.fundamental(s.omega));  // harmonics of omega / nu
-    for (const OutputDof& out : c.outputs) start_harmonics.push_back(dof_harmonics(full, n, harmonics, out.dof));
-    start_point = record_point(hbm, s.x, s.omega, c.outputs);
-  }
-
-  std::optional<EquationOfMotion> equation;
-  try {
-    equation.emplace(c.model, c.elements, hbm.parameters(), omega);
-  } catch (const std::invalid_argument& e) {
-    throw CaseError(c.path + ": " + e.what());
-  }
-  // Friction sliders start where the HBM orbit's periodic steady state has them at t = 0.
-  if (orbit.size() > 0 && equation->history_size() > 0)
-    initial.history = equation->periodic_history(period_samples(orbit, n, harmonics, hbm.basis().samples()));
-  std::unique_ptr<TimeIntegrator> integrator;
-  json method_options;
-  if (method == IntegrationMethod::newmark) {
-    NewmarkOptions no;
-    no.steps_per_period = steps_per_period;
-    integrator = std::make_unique<NewmarkIntegrator>(*equation, no);
-    method_options = {{"alpha", no.alpha}, {"newton_tolerance", no.newton_tolerance}, {"max_newton_iterations", no.max_newton_iterations}};
-  } else {
-    DormandPrinceOptions dp;
-    dp.samples_per_period = steps_per_period;
-    integrator = std::make_unique<DormandPrinceIntegrator>(*equation, dp);
-    method_options = {{"relative_tolerance", dp.relative_tolerance}, {"absolute_tolerance", dp.absolute_tolerance}};
-  }
-
-  ensure_directory(o.common.out_dir);
-  lock_result_folder(o.common.out_dir);
-  json summary = {{"verb", "simulate"}, {"options", options_json(c, hbm)}, {"omega", omega}, {"stop_reason", "running"}};
-  summary["options"]["simulation"] = simulation_options_json(method, !o.from.empty(), steps_per_period, steady);
-  summary["options"]["simulation"].update(method_options);
-  if (!o.from.empty()) {
-    summary["options"]["simulation"]["from"] = o.from;
-    summary["options"]["simulation"]["point"] = point;
-    json start = {{"omega", start_point->omega}};
-    add_outputs(start, c, *start_point);
-    for (size_t i = 0; i < c.outputs.size(); ++i) {
-      std::string key = "harmonics_";
-      key += c.outputs[i].name;
-      start[key] = std::vector<double>(start_harmonics[i].data(), start_harmonics[i].data() + start_harmonics[i].size());
-    }
-    summary["start"] = start;
-  }
-  write_json_atomically(o.common.out_dir + "/summary.json", summary);
-
-  const bool show_progress = !o.common.quiet && isatty(STDERR_FILENO);
-  const auto t_integration = Clock::now();
-  const SteadyStateResult r = integrate_to_steady_state(*integrator, initial, c.outputs, steady, [&](int period, double change) {
-    if (show_progress) std::fprintf(stderr, "\r  period %6d  change %-10.3e", period + 1, change);
-    return !interrupted();
-  });
-  const double integration_s = seconds_since(t_integration);
-  if (show_progress) std::fprintf(stderr, "\n");
-
-  CsvAppender signals(o.common.out_dir + "/signals.csv", signals_header(c));
-  for (const std::vector<double>& row : signals_rows(r)) signals.append(row);
-  add_simulation_summary(summary, c, r);
-  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"integration_s", integration_s}};
-  write_json_atomically(o.common.out_dir + "/summary.json", summary);
-
-  if (!r.converged) {
-    const std::string why = r.stop_reason == "max_periods"
-                                ? "no periodic steady state within " + std::to_string(r.periods) + " periods (last change " +
-                                      std::to_string(r.last_change) + ")"
-                                : r.stop_reason + (r.message.empty() ? "" : ": " + r.message);
-    throw RunFailed{"simulate stopped: " + why + " (kept in " + o.common.out_dir + ")"};
-  }
-  if (!o.common.quiet) {
-    std::fprintf(stderr, "simulate: periodic after %d periods (%s, %ld steps), %.3f s", r.periods, o.method.c_str(),
-                 r.statistics.steps, summary["timings"]["wall_s"].get<double>());
-    if (!c.outputs.empty() && !r.outputs.empty())
-      std::fprintf(stderr, ", h1_%s %.6g", c.outputs[0].name.c_str(), r.outputs[0].first_harmonic());
-    std::fprintf(stderr, " -> %s\n", o.common.out_dir.c_str());
-  }
+  ResultFolderSink sink(o.common.out_dir);
+  PeriodLine monitor(!o.common.quiet && isatty(STDERR_FILENO));
+  const runs::RunReport report = runs::simulate(c, run, sink, monitor);
+  monitor.finish();
+  if (!report.success()) throw RunFailed{report.failure};
+  if (!o.common.quiet) std::fprintf(stderr, "simulate: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 

@@ -7,11 +7,10 @@
 #include <cstdio>
 
 #include "cli_common.hpp"
-#include "hbtrack/analysis/branch_switching.hpp"
-#include "hbtrack/analysis/period_doubling.hpp"
-#include "hbtrack/results/results_writer.hpp"
-#include "hbtrack/results/state_columns.hpp"
+#include "cli_monitor.hpp"
+#include "hbtrack/runs/switch_branch.hpp"
 #include "result_folder.hpp"
+#include "result_folder_sink.hpp"
 
 namespace hbtrack::cli {
 
@@ -45,86 +44,33 @@ int run_switch(const SwitchOptions& o) {
   if (type != "BP" && type != "PD")
     throw CaseError("--point: special point " + std::to_string(point) + " of " + path + " is a " + type +
                     "; switch follows the new branch of a BP or the period-doubled branch of a PD");
-  // At a PD the new branch is a solution of the harmonic balance at omega / 2.
-  CaseDefinition c = period_one;
-  if (type == "PD") {
-    if (period_one.harmonic_balance.subharmonic != 1)
-      throw CaseError("--point: " + o.from + " is already a period-doubled branch (subharmonic " +
-                      std::to_string(period_one.harmonic_balance.subharmonic) + "); switch from a period-T NFRC");
-    c.harmonic_balance = period_doubled_options(period_one.harmonic_balance);
-  }
-  HarmonicBalance system = make_system(c);
-  const HbmState bp = read_hbm_state(o.from + "/special_states.csv", point - 1, hbm);
+  if (type == "PD" && period_one.harmonic_balance.subharmonic != 1)
+    throw CaseError("--point: " + o.from + " is already a period-doubled branch (subharmonic " +
+                    std::to_string(period_one.harmonic_balance.subharmonic) + "); switch from a period-T NFRC");
   const long row = sp.value("index", -1L);
   const long rows = static_cast<long>(read_csv_table(o.from + "/states.csv").rows.size());
   if (row < 0 || row >= rows) throw CaseError(path + ": special point " + std::to_string(point) + ": index out of the branch");
-  const HbmState before = read_hbm_state(o.from + "/states.csv", std::max(row - 1, 0L), hbm);
-  const HbmState after = read_hbm_state(o.from + "/states.csv", std::min(row + 1, rows - 1), hbm);
-  if (bp.x.size() != hbm.unknowns() || before.x.size() != hbm.unknowns())
-    throw CaseError(o.from + ": its states hold " + std::to_string(bp.x.size()) + " unknowns, the case has " + std::to_string(hbm.unknowns()) +
-                    " (results of another case?)");
-  Eigen::VectorXd known(hbm.unknowns() + 1);
-  known.head(hbm.unknowns()) = after.x - before.x;
-  known(hbm.unknowns()) = after.omega - before.omega;
-
-  const std::string& dir = o.common.out_dir;
-  ensure_directory(dir);
-  json summary = {{"verb", "switch"}, {"options", options_json(c, system)}, {"stop_reason", "running"}};
-  summary["options"]["switch"] = {{"from", o.from}, {"point", point}, {"type", type}, {"omega", bp.omega}};
-  write_json_atomically(dir + "/summary.json", summary);
-  SwitchedBranch s;
+  const auto state = [&](const std::string& file, long r) {
+    const HbmState s = read_hbm_state(o.from + "/" + file, r, hbm);
+    return runs::StartPoint{s.omega, s.x, o.from + "/" + file};
+  };
+  runs::SwitchOptions run{type, point, state("special_states.csv", point - 1), state("states.csv", std::max(row - 1, 0L)),
+                          state("states.csv", std::min(row + 1, rows - 1)), {{"from", o.from}}};
+  ResultFolderSink sink(o.common.out_dir);
+  Progress progress(o.common.quiet);
+  progress.relay_to(o.common.progress_file);
+  StopRequest stop(0);
+  CliMonitor monitor(progress, stop, period_one.outputs);
+  runs::RunReport report;
   try {
-    s = type == "PD" ? switch_at_period_doubling(system, hbm.basis(), c.nfrc, c.outputs, bp.x, bp.omega, known)
-                     : switch_at_branch_point(system, c.nfrc, c.outputs, bp.x, bp.omega, known);
+    report = runs::switch_branch(period_one, run, sink, monitor);
   } catch (const std::runtime_error& e) {
-    summary["stop_reason"] = "no_convergence";
-    write_json_atomically(dir + "/summary.json", summary);
+    if (dynamic_cast<const CaseError*>(&e)) throw;
     throw RunFailed{e.what()};
   }
-  // One piece: the `through` leg reversed, then the `away` leg without its first point (shared).
-  CsvAppender branch(dir + "/branch.csv", branch_header(c));
-  CsvAppender states(dir + "/states.csv", dof_state_header(system));
-  const int through = static_cast<int>(s.through.recorded.size());
-  for (int i = through - 1; i >= 0; --i) {
-    branch.append(branch_row(s.through.recorded[static_cast<size_t>(i)]));
-    states.append(dof_state_row(system, s.through.continuation.points[static_cast<size_t>(i)].lambda, s.through.continuation.points[static_cast<size_t>(i)].u));
-  }
-  const int shift = through > 0 ? through - 1 : 0;  // row of the away leg's point i: shift + i
-  for (size_t i = through > 0 ? 1 : 0; i < s.away.recorded.size(); ++i) {
-    branch.append(branch_row(s.away.recorded[i]));
-    states.append(dof_state_row(system, s.away.continuation.points[i].lambda, s.away.continuation.points[i].u));
-  }
-  json points = json::array();
-  CsvAppender special_states(dir + "/special_states.csv", dof_state_header(system));
-  for (const auto* leg : {&s.through, &s.away})
-    for (const auto& p : leg->continuation.special_points) {
-      const int index = leg == &s.through ? through - 1 - p.index : shift + p.index;
-      json j = {{"type", p.type}, {"index", index}, {"omega", p.lambda}, {"located", p.located}};
-      j["parameters"] = summary["options"]["parameters"];
-      add_outputs(j, c, record_point(system, p.u, p.lambda, c.outputs));
-      points.push_back(j);
-      special_states.append(dof_state_row(system, p.lambda, p.u));
-    }
-  const auto& a = s.away.continuation.summary;
-  const auto& b = s.through.continuation.summary;
-  summary["special_points"] = points;
-  summary["outputs"] = outputs_json(c);
-  summary["points"] = shift + static_cast<int>(s.away.recorded.size());
-  summary["newton_iterations"] = a.newton_iterations + b.newton_iterations;
-  summary["failed_steps"] = a.failed_steps + b.failed_steps;
-  summary["step_halvings"] = a.step_halvings + b.step_halvings;
-  summary["legs"] = {{{"name", "through"}, {"stop_reason", b.stop_reason}, {"points", b.points}},
-                     {{"name", "away"}, {"stop_reason", a.stop_reason}, {"points", a.points}}};
-  // A period-doubled leg ends where it rejoins the period-T branch (at a PD of the band).
-  const bool away_ok = s.away.continuation.success() || a.stop_reason == "rejoined";
-  const bool ok = away_ok && (s.through.continuation.success() || b.stop_reason == "rejoined");
-  summary["stop_reason"] = ok ? "completed" : (away_ok ? b.stop_reason : a.stop_reason);
-  summary["timings"] = {{"wall_s", seconds_since(t0)}};
-  write_json_atomically(dir + "/summary.json", summary);
-  if (!ok) throw RunFailed{"switch: a leg stopped: " + summary["stop_reason"].get<std::string>() + " (kept in " + dir + ")"};
-  if (!o.common.quiet)
-    std::fprintf(stderr, "switch: %d points, %d special points, %.3f s -> %s\n", summary["points"].get<int>(), static_cast<int>(points.size()),
-                 summary["timings"]["wall_s"].get<double>(), dir.c_str());
+  progress.finish();
+  if (!report.success()) throw RunFailed{report.failure};
+  if (!o.common.quiet) std::fprintf(stderr, "switch: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 

@@ -6,23 +6,19 @@
 #include <optional>
 #include <utility>
 
-#include "artefact_warnings.hpp"
 #include "cli_common.hpp"
-#include "folder_lock.hpp"
-#include "hbtrack/analysis/fold_tracking.hpp"
-#include "hbtrack/results/continuation_state_file.hpp"
-#include "hbtrack/results/results_writer.hpp"
+#include "cli_monitor.hpp"
 #include "hbtrack/results/state_columns.hpp"
+#include "hbtrack/runs/isolas.hpp"
+#include "hbtrack/runs/track.hpp"
 #include "result_folder.hpp"
-#include "resume_checkpoint.hpp"
-#include "stop_request.hpp"
+#include "result_folder_sink.hpp"
 
 namespace hbtrack::cli {
 
 namespace {
 
 using nlohmann::json;
-
 
 struct TrackOptions {
   CommonOptions common;
@@ -81,20 +77,6 @@ HbmState starting_fold(const std::string& dir, long lp, const HarmonicBalance& h
   return read_hbm_state(dir + "/special_states.csv", static_cast<long>(rows[lp - 1]), hbm);
 }
 
-// After a failed tracking run: the elements whose law the fold systems cannot differentiate, the
-// likely cause ("" when every law is smooth).
-std::string smoothness_hint(const HarmonicBalance& hbm) {
-  std::string hint;
-  for (size_t i = 0; i < hbm.elements().size(); ++i) {
-    const std::string limit = hbm.elements()[i]->smoothness_limit();
-    if (limit.empty()) continue;
-    hint += hint.empty() ? "; " : ", ";
-    hint += "elements[" + std::to_string(i) + "] (" + hbm.elements()[i]->type() + "): " + limit;
-  }
-  if (!hint.empty()) hint += ": limit-point tracking needs a law with a smooth Jacobian (law = \"sqrt\")";
-  return hint;
-}
-
 int run_track(TrackOptions o) {
   const auto t0 = Clock::now();
   if (!o.resume.empty()) {
@@ -109,93 +91,37 @@ int run_track(TrackOptions o) {
   const long lp = parse_integer("--lp", o.lp, 1);
   const size_t colon = o.range.find(':');
   if (colon == std::string::npos) throw CaseError("--range: expected LO:HI, got '" + o.range + "'");
-  FoldTrackingOptions tracking;
-  tracking.parameter_min = parse_number("--range", o.range.substr(0, colon));
-  tracking.parameter_max = parse_number("--range", o.range.substr(colon + 1));
-  if (!(tracking.parameter_min < tracking.parameter_max)) throw CaseError("--range: must be LO:HI with LO < HI, got '" + o.range + "'");
-  tracking.method = parse_flag_choice<TrackingMethod>("--method", o.method);
+  const double tracking_min = parse_number("--range", o.range.substr(0, colon));
+  const double tracking_max = parse_number("--range", o.range.substr(colon + 1));
+  if (!(tracking_min < tracking_max)) throw CaseError("--range: must be LO:HI with LO < HI, got '" + o.range + "'");
+  const TrackingMethod method = parse_flag_choice<TrackingMethod>("--method", o.method);
 
   const CaseDefinition c = case_as_in(o.common, o.from);
-  HarmonicBalance hbm = make_system(c);
-  const int parameter = parameter_index(hbm.parameters(), o.param, "--param");
-  const double start_value = hbm.parameters().value(parameter);
-  if (!(tracking.parameter_min <= start_value && start_value <= tracking.parameter_max))
-    throw CaseError("--range: must contain " + o.param + " = " + std::to_string(start_value) + " of the limit point");
-  const HbmState start = starting_fold(o.from, lp, hbm);
-  if (start.x.size() != hbm.unknowns())
-    throw CaseError(o.from + "/special_states.csv: holds " + std::to_string(start.x.size()) + " unknowns, the case has " +
-                    std::to_string(hbm.unknowns()) + " (results of another case?)");
-  tracking.continuation = c.nfrc.continuation;
-
-  const std::string& dir = o.common.out_dir;
-  json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
-  summary["options"]["tracking"] = {{"from", o.from}, {"lp", lp}, {"lp_order", "omega"}, {"parameter", o.param}, {"method", o.method},
-                                    {"range", {tracking.parameter_min, tracking.parameter_max}}};
-  const json settings = branch_settings(summary["options"]);
-  std::optional<SavedTracking> resumed;
-  if (!o.resume.empty()) resumed = checkpoint_to_resume(dir, {"completed", "closed"}, settings, read_tracking_state);
-  ensure_directory(dir);
-  lock_result_folder(dir);
-  const int rows_kept = resumed ? resumed->state.curve_points : 0;
-  std::vector<std::string> state_cols{"leg", "omega", o.param};
-  for (const std::string& column : dof_state_columns(hbm)) state_cols.push_back(column);
-  CsvAppender branch = open_result_csv(dir + "/branch.csv", tracking_header(c, o.param), resumed.has_value(), rows_kept);
-  CsvAppender states = open_result_csv(dir + "/states.csv", state_cols, resumed.has_value(), rows_kept);
-  if (resumed) summary["resumed_at_point"] = rows_kept;
-  write_json_atomically(dir + "/summary.json", summary);
-
-  const FoldScales scales = tracking_scales(hbm, c.nfrc, tracking.parameter_max - tracking.parameter_min);
-  Progress progress(o.common.quiet, o.param, tracking.parameter_min, tracking.parameter_max, start_value);
+  runs::TrackOptions run;
+  run.parameter = o.param;
+  run.parameter_min = tracking_min;
+  run.parameter_max = tracking_max;
+  run.method = method;
+  const HbmState start = starting_fold(o.from, lp, make_system(c));
+  run.start = runs::StartPoint{start.omega, start.x, o.from + "/special_states.csv"};
+  run.origin = {{"from", o.from}, {"lp", lp}, {"lp_order", "omega"}};
+  ResultFolderSink sink(o.common.out_dir, !o.resume.empty());
+  const double start_value = c.parameters.find(o.param) >= 0 ? c.parameters.value(c.parameters.find(o.param)) : 0.0;
+  Progress progress(o.common.quiet, o.param, tracking_min, tracking_max, start_value);
   progress.relay_to(o.common.progress_file);
   StopRequest stop(o.time_limit);
-  FoldTrackingRestart restart;
-  if (resumed) restart.resume_from = &resumed->state;
-  // Between two steps: what --resume needs to go on from there.
-  restart.on_state = [&](const FoldTrackingState& state) { write_tracking_state(dir + "/checkpoint.json", state, settings); };
-  FoldTrackingResult r;
+  CliMonitor monitor(progress, stop, c.outputs);
+  runs::RunReport report;
   try {
-    r = track_fold(
-        hbm, parameter, start.x, start.omega, scales, tracking, c.outputs,
-        [&](const FoldCurvePoint& p, int index) {
-          branch.append(tracking_row(p));
-          std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
-          const std::vector<double> dofs = dof_state_values(hbm, p.x, p.omega, parameter, p.parameter);
-          row.insert(row.end(), dofs.begin(), dofs.end());
-          states.append(row);
-          progress.update(index, p.omega, p.parameter, p.leg, p.recorded, c.outputs);
-          return !stop.requested();
-        },
-        restart);
+    report = runs::track(c, run, sink, monitor);
   } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const CaseError*>(&e)) throw;
     throw RunFailed{e.what()};
   }
   progress.finish();
-  add_tracking_summary(summary, c, r, o.param);
-  double omega_low = start.omega, omega_high = start.omega;
-  for (const FoldCurvePoint& p : r.points) {
-    omega_low = std::min(omega_low, p.omega);
-    omega_high = std::max(omega_high, p.omega);
-  }
-  std::vector<std::string> warnings =
-      extremum_pairs_below_resolution(r.extrema, o.param, tracking.parameter_max - tracking.parameter_min, omega_high - omega_low);
-  for (const ContinuationSummary& leg : r.legs)
-    if (leg.stop_reason == "max_points")
-      warnings.push_back("a leg stopped at continuation.max_points after " + std::to_string(leg.points) +
-                         " points, before the range's end: the curve is incomplete (rerun with a larger --set continuation.max_points)");
-  summary["warnings"] = warnings;
-  for (const std::string& w : warnings) std::fprintf(stderr, "track: warning: %s\n", w.c_str());
-  const bool ok = r.success();
-  const std::string failure = stop.reason(r.failure());
-  if (!ok) summary["stop_reason"] = failure;
-  summary["start"] = {{"omega", start.omega}, {o.param, start_value}};
-  summary["timings"] = {{"wall_s", seconds_since(t0)}};
-  write_json_atomically(dir + "/summary.json", summary);
-  if (!ok)
-    throw RunFailed{"tracking stopped: " + failure + " after " + std::to_string(r.curve_points()) + " points (kept in " + dir + ")" +
-                    smoothness_hint(hbm)};
-  if (!o.common.quiet)
-    std::fprintf(stderr, "track: %d points, %zu extrema of %s, %s, %.3f s -> %s\n", r.curve_points(), r.extrema.size(), o.param.c_str(),
-                 r.closed ? "closed" : "both ways to the range", summary["timings"]["wall_s"].get<double>(), dir.c_str());
+  for (const auto& w : report.summary["warnings"]) std::fprintf(stderr, "track: warning: %s\n", w.get<std::string>().c_str());
+  if (!report.success()) throw RunFailed{report.failure};
+  if (!o.common.quiet) std::fprintf(stderr, "track: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 
@@ -233,80 +159,24 @@ int run_isolas(const IsolaOptions& o) {
       throw CaseError("--from: " + dir + " tracks '" + name + "', " + o.from.front() + " tracks '" + parameter_name + "'");
     parameter_name = name;
   }
-  CaseDefinition c = case_as_in(o.common, o.from.front());
-  HarmonicBalance hbm = make_system(c);
-  const int parameter = parameter_index(hbm.parameters(), parameter_name, "--param");
-  std::vector<std::vector<FoldCurvePoint>> curves;
-  for (const std::string& dir : o.from) curves.push_back(read_tracking_curve(dir, parameter_name, hbm));
-  double lo = value, hi = value;
-  for (const auto& curve : curves)
-    for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
-  hbm.parameters().value(parameter) = value;
-  const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
-
-  ensure_directory(o.common.out_dir);
-  lock_result_folder(o.common.out_dir);
-  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
-  summary["options"]["isolas"] = {{"from", o.from}, {"parameter", parameter_name}, {"at", value}};
-  write_json_atomically(o.common.out_dir + "/summary.json", summary);
-
-  const std::vector<IsolaCandidate> found = compute_isolas(hbm, parameter, value, curves, scales, c.nfrc, c.outputs, !o.locate_only);
-  json crossings = json::array();
-  int isolas = 0;
-  for (size_t k = 0; k < found.size(); ++k) {
-    const IsolaCandidate& f = found[k];
-    json j = {{"status", f.status}, {"omega", f.start.omega}, {"converged", f.start.converged}};
-    if (f.same_as >= 0) j["same_as"] = f.same_as;
-    if (f.start.converged) add_outputs(j, c, record_point(hbm, f.start.x, f.start.omega, c.outputs));
-    if (f.status == "isola" || f.status == "open") {
-      const std::string name = f.status == "isola" ? "isola_" + std::to_string(++isolas) : "open_" + std::to_string(k + 1);
-      const std::string dir = o.common.out_dir + "/" + name;
-      ensure_directory(dir);
-      CsvAppender branch(dir + "/branch.csv", branch_header(c));
-      CsvAppender states(dir + "/states.csv", dof_state_header(hbm));
-      std::optional<CsvAppender> stability;
-      if (c.nfrc.stability.enabled()) stability.emplace(dir + "/stability.csv", stability_header());
-      for (size_t i = 0; i < f.branch.recorded.size(); ++i) {
-        branch.append(branch_row(f.branch.recorded[i]));
-        if (stability)
-          for (const auto& row : stability_rows(static_cast<int>(i), f.branch.recorded[i])) stability->append(row);
-        states.append(dof_state_row(hbm, f.branch.continuation.points[i].lambda, f.branch.continuation.points[i].u));
-      }
-      const auto& s = f.branch.continuation.summary;
-      j["folder"] = name;
-      j["stop_reason"] = s.stop_reason;
-      j["points"] = s.points;
-      double omega_min = 1e300, omega_max = -1e300;
-      for (const auto& p : f.branch.continuation.points) omega_min = std::min(omega_min, p.lambda), omega_max = std::max(omega_max, p.lambda);
-      j["omega_range"] = {omega_min, omega_max};
-      int unstable = 0;
-      for (const auto& rec : f.branch.recorded) unstable += rec.stable == 0;
-      j["unstable_points"] = unstable;
-      json special = json::array();
-      hbm.parameters().value(parameter) = value;
-      for (const auto& sp : f.branch.continuation.special_points) {
-        json p = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
-        add_outputs(p, c, record_point(hbm, sp.u, sp.lambda, c.outputs));
-        special.push_back(p);
-      }
-      j["special_points"] = special;
-      // Each branch folder is a result folder of its own (plot_branch.py, simulate --from).
-      json branch_summary = {{"verb", "isolas"},        {"options", options_json(c, hbm)}, {"stop_reason", s.stop_reason},
-                             {"points", s.points},       {"special_points", special},       {"outputs", json::array()}};
-      for (const auto& out : c.outputs)
-        branch_summary["outputs"].push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
-      write_json_atomically(dir + "/summary.json", branch_summary);
-    }
-    crossings.push_back(j);
+  const CaseDefinition c = case_as_in(o.common, o.from.front());
+  runs::IsolaOptions run;
+  run.parameter = parameter_name;
+  run.at = value;
+  run.locate_only = o.locate_only;
+  run.origin = {{"from", o.from}};
+  {
+    const HarmonicBalance hbm = make_system(c);
+    for (const std::string& dir : o.from) run.curves.push_back(read_tracking_curve(dir, parameter_name, hbm));
   }
-  summary["stop_reason"] = "completed";
-  summary["crossings"] = crossings;
-  summary["isolas"] = isolas;
-  summary["timings"] = {{"wall_s", seconds_since(t0)}};
-  write_json_atomically(o.common.out_dir + "/summary.json", summary);
-  if (!o.common.quiet)
-    std::fprintf(stderr, "isolas: %zu crossings of %s = %g, %d isolated branches, %.3f s -> %s\n", found.size(), parameter_name.c_str(), value,
-                 isolas, summary["timings"]["wall_s"].get<double>(), o.common.out_dir.c_str());
+  ResultFolderSink sink(o.common.out_dir);
+  Progress progress(o.common.quiet);
+  progress.relay_to(o.common.progress_file);
+  StopRequest stop(0);
+  CliMonitor monitor(progress, stop, c.outputs);
+  const runs::RunReport report = runs::isolas(c, run, sink, monitor);
+  progress.finish();
+  if (!o.common.quiet) std::fprintf(stderr, "isolas: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 

@@ -5,9 +5,9 @@
 
 #include "hbtrack/continuation/continuation.hpp"
 
-namespace hbtrack::cli {
+namespace hbtrack::runs {
 
 // last_lambda: the parameter of the last accepted point (the start when there is none).
 std::string continuation_failure_advice(const ContinuationSummary& s, const ContinuationOptions& o, double last_lambda);
 
-}  // namespace hbtrack::cli
+}  // namespace hbtrack::runs

@@ -1,8 +1,8 @@
-#include "failure_advice.hpp"
+#include "hbtrack/runs/failure_advice.hpp"
 
 #include <cstdio>
 
-namespace hbtrack::cli {
+namespace hbtrack::runs {
 
 namespace {
 std::string text(double v) {
@@ -37,4 +37,4 @@ std::string continuation_failure_advice(const ContinuationSummary& s, const Cont
   return tried;
 }
 
-}  // namespace hbtrack::cli
+}  // namespace hbtrack::runs

@@ -11,7 +11,7 @@
 #include "hbtrack/continuation/continuation.hpp"
 #include "hbtrack/io/case_file.hpp"
 
-namespace hbtrack::cli {
+namespace hbtrack::runs {
 
 // omega_range: |omega_end - omega_start| of the NFRC; a cluster is at least kClusterSize special
 // points with consecutive spacings below kClusterSpacing of the range.
@@ -32,4 +32,4 @@ std::string first_nonsmooth_element(const CaseDefinition& c);
 std::vector<std::string> unconfirmed_hill_bifurcations(const std::vector<SpecialPoint>& points, const std::string& nonsmooth_element,
                                                        int harmonics);
 
-}  // namespace hbtrack::cli
+}  // namespace hbtrack::runs

@@ -1,11 +1,11 @@
-#include "artefact_warnings.hpp"
+#include "hbtrack/runs/artefact_warnings.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
 
-namespace hbtrack::cli {
+namespace hbtrack::runs {
 
 namespace {
 // Genuine folds and bifurcations of a resonance come in ones and twos, a few percent of the range
@@ -99,4 +99,4 @@ std::vector<std::string> unconfirmed_hill_bifurcations(const std::vector<Special
           std::to_string(2 * harmonics) + " (a truncation artefact moves or vanishes) or stability.method = \"shooting\""};
 }
 
-}  // namespace hbtrack::cli
+}  // namespace hbtrack::runs

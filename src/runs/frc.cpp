@@ -1,0 +1,78 @@
+#include "hbtrack/runs/frc.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "hbtrack/results/continuation_state_file.hpp"
+#include "hbtrack/results/result_tables.hpp"
+#include "hbtrack/runs/artefact_warnings.hpp"
+#include "hbtrack/runs/branch_tables.hpp"
+#include "hbtrack/runs/case_system.hpp"
+#include "hbtrack/runs/failure_advice.hpp"
+#include "hbtrack/runs/resume.hpp"
+#include "hbtrack/util/coverage.hpp"
+
+namespace hbtrack::runs {
+
+using nlohmann::json;
+
+RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& sink, RunMonitor& monitor) {
+  const auto t0 = RunClock::now();
+  HarmonicBalance hbm = make_system(c);
+  if (options.start) options.start->require_unknowns(hbm.unknowns());
+  json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  if (!options.started_from.is_null()) summary["started_from"] = options.started_from;
+  const json settings = branch_settings(summary["options"]);
+  std::optional<SavedContinuation> resumed;
+  if (sink.resuming()) resumed = checkpoint_to_resume(sink, {"reached_end", "left_range", "closed"}, settings, read_continuation_state);
+  sink.open();
+  // A resumed run appends to the tables the checkpoint covers.
+  const int rows_kept = resumed ? resumed->state.points : 0;
+  BranchTables tables(c, hbm, sink, options.element_forces, resumed.has_value(), rows_kept);
+  if (resumed) summary["resumed_at_point"] = rows_kept;
+  sink.summary(summary);
+
+  ContinuationRestart restart;
+  if (resumed) restart.resume_from = &resumed->state;
+  // After every accepted point (and step-size update): what a resumed run goes on from.
+  const std::string checkpoint = sink.checkpoint_path();
+  if (!checkpoint.empty()) restart.on_state = [&](const ContinuationState& state) { write_continuation_state(checkpoint, state, settings); };
+  const double from = options.start ? options.start->omega : c.nfrc.omega_start, end = c.nfrc.omega_end;
+  Coverage coverage = Coverage::one_way(from, end);
+  const RecordedObserver record = [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
+    tables.append(p, rec);
+    return monitor.point({index, p.lambda, p.lambda, 0, coverage.add(p.lambda), &rec});
+  };
+  NfrcResult r;
+  if (!options.start) {
+    r = compute_nfrc(hbm, c.nfrc, c.outputs, record, restart);
+  } else {
+    const ParameterWindow window{std::min(from, end), std::max(from, end), end > from ? 1 : -1, false};
+    r = compute_branch(hbm, c.nfrc, c.outputs, options.start->x, from, window, record, restart);
+  }
+  const auto& s = r.continuation.summary;
+  const std::string stop_reason = monitor.stop_reason(s.stop_reason);
+  add_nfrc_summary(summary, c, hbm, r);
+  summary["stop_reason"] = stop_reason;
+  summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};
+  tables.append_special_points(r.continuation.special_points);
+  std::vector<std::string> warnings = special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start));
+  for (std::string& w : unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
+    warnings.push_back(std::move(w));
+  summary["warnings"] = warnings;
+  const double last_omega = r.recorded.empty() ? from : r.recorded.back().omega;
+  if (!r.continuation.success()) summary["advice"] = continuation_failure_advice(s, c.nfrc.continuation, last_omega);
+  sink.summary(summary);
+
+  RunReport report{summary};
+  if (!r.continuation.success())
+    report.failure = "continuation stopped: " + stop_reason + " after " + std::to_string(s.points) + " points (kept in " + sink.location() +
+                     "): " + summary["advice"].get<std::string>();
+  else
+    report.brief = std::to_string(s.points) + " points, " + std::to_string(r.continuation.special_points.size()) + " special points, " +
+                   std::to_string(s.newton_iterations) + " Newton iterations";
+  return report;
+}
+
+}  // namespace hbtrack::runs
