@@ -16,19 +16,20 @@ there); plotting and reading result folders also work from python/ without a bui
 import importlib
 
 from ._core import core as _core
-from .analysis import backbone, continuation, frc, isolas, limit_point, switch, track
+from .analysis import backbone, continuation, frc, isolas, limit_point, solve, switch, track
 from .cases import case_from_arrays, load_case
 from .elements import add_python_element, element_types
-from .model import normal_modes, output_harmonics, reduce
+from .model import modes, normal_modes, output_harmonics, reduce
 from .results import read_result
 from .settings import with_settings
 from .timeint import simulate
+from .tool_runs import study, sweep
 
 if _core is not None:
     from ._hbtrack import (Case, ContinuationOptions, ContinuationSection, FoldTrackingOptions, HarmonicBalanceOptions, NfrcOptions,
                            StabilityOptions, SteadyStateOptions)
 
-__all__ = ["load_case", "case_from_arrays", "frc", "continuation", "backbone", "switch", "track", "isolas", "limit_point", "simulate",
+__all__ = ["load_case", "case_from_arrays", "frc", "solve", "modes", "sweep", "study", "continuation", "backbone", "switch", "track", "isolas", "limit_point", "simulate",
            "with_settings", "reduce", "normal_modes", "output_harmonics", "add_python_element", "element_types", "read_result", "plots", "Case", "ContinuationSection", "ContinuationOptions",
            "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
 

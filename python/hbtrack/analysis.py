@@ -1,5 +1,5 @@
-"""NFRC, limit-point tracking and isolated branches: `hbtrack frc`, `track` and `isolas` as
-functions. Results are dicts holding what the CLI writes to a result folder:
+"""NFRC, one solution, limit-point tracking and isolated branches: `hbtrack frc`, `solve`, `track`
+and `isolas` as functions (the same runs, src/runs/, in memory). Results are dicts holding what the CLI writes to a result folder:
 
     branch          {column: 1-D array}, the columns and numbers of branch.csv
     states          2-D array: omega (or leg, omega, parameter), then the harmonic-balance unknowns
@@ -112,6 +112,44 @@ def frc(case, *, start=None, point=None, progress=None, element_forces=False, **
         if isinstance(start, dict) and "folder" in start:
             result["summary"]["started_from"]["folder"] = start["folder"]
     result["kind"] = "frc"
+    return result
+
+
+def solve(case, omega, **settings):
+    """One periodic solution at a fixed frequency (``hbtrack solve``).
+
+    Newton from the linear solution at `omega`, with the solution's stability when the case
+    computes it.
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case (not changed).
+    omega : float
+        The forcing frequency (rad/s), > 0.
+    **settings : dict, optional
+        The case's settings for this run only, as :func:`frc` takes them.
+
+    Returns
+    -------
+    dict
+        ``branch`` (one row, the columns of branch.csv), ``states`` (one row [omega, x0, ...]),
+        ``dof_states`` (every dof's harmonics), ``summary`` (converged, newton_iterations, the
+        outputs and, with stability, stable and floquet_multipliers) and ``kind`` = "solve". A
+        solve that did not converge returns its summary (converged False) and no rows.
+
+    Examples
+    --------
+    >>> point = hbtrack.solve(case, 1.2)
+    >>> point["summary"]["converged"], point["branch"]["max_x"][0]
+    """
+    run_case = case_with(case, settings_overrides(**settings), "solve")
+    try:
+        omega = float(omega)
+    except (TypeError, ValueError):
+        raise ValueError(f"omega: expected a number, got {omega!r}") from None
+    result = require_core().solve(run_case, omega)
+    result["kind"] = "solve"
     return result
 
 

@@ -1,9 +1,11 @@
-"""Model building blocks: Craig-Bampton reduction, normal modes, harmonics of a solution.
+"""Model building blocks: Craig-Bampton reduction, normal modes (of matrices, or of a case as
+`hbtrack modes`), harmonics of a solution.
 Matrices may be numpy arrays, any array-like or scipy.sparse matrices (hbtrack.arrays)."""
 import numpy as np
 
 from ._core import require_core
 from .arrays import as_matrix, as_sparse_matrix, is_sparse
+from .settings import case_with, settings_overrides
 
 
 def reduce(M, K, boundary, *, frames=None, modes=12):
@@ -60,6 +62,42 @@ def normal_modes(M, K):
     >>> frequencies, shapes = hbtrack.normal_modes(np.eye(2), [[2.0, -1.0], [-1.0, 2.0]])
     """
     return require_core().normal_modes(as_matrix(M, "M"), as_matrix(K, "K"))
+
+
+def modes(case, count=10, **settings):
+    """The lowest natural frequencies of a case's linear model (``hbtrack modes``).
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case (its mass and stiffness; not changed).
+    count : int, optional
+        How many modes, from the lowest (default 10; fewer when the model has fewer dofs).
+    **settings : dict, optional
+        The case's settings for this run only, as :func:`hbtrack.frc` takes them.
+
+    Returns
+    -------
+    dict
+        ``summary`` as the CLI's summary.json: ``natural_frequencies`` (rad/s, increasing),
+        ``dominant_dofs`` (the dof that moves most in each mass-normalised shape), ``dofs``;
+        and ``kind`` = "modes".
+
+    Raises
+    ------
+    ValueError
+        count < 1.
+    RuntimeError
+        A mass matrix that is not positive definite.
+
+    Examples
+    --------
+    >>> hbtrack.modes(case, count=3)["summary"]["natural_frequencies"]
+    """
+    run_case = case_with(case, settings_overrides(**settings), "modes")
+    result = require_core().modes(run_case, int(count))
+    result["kind"] = "modes"
+    return result
 
 
 def output_harmonics(case, state):

@@ -3,6 +3,7 @@ the same runs, each computed once per session (the whole pytest run must stay ne
 import os
 import subprocess
 
+import numpy as np
 import pytest
 
 import hbtrack
@@ -26,6 +27,15 @@ def cli_path():
     if not os.path.exists(path):
         pytest.fail(f"the hbtrack binary is not at {path}: build it, or set HBTRACK_CLI")
     return path
+
+
+def assert_same_columns(api, cli, relative=1e-12):
+    """The same columns in the same order, each non-empty and equal to `relative` (the API and the
+    CLI run the same library code: test_same_as_cli.py says why 1e-12)."""
+    assert list(api) == list(cli), "column names differ"
+    for name in cli:
+        assert len(api[name]) == len(cli[name]) > 0, name
+        np.testing.assert_allclose(api[name], cli[name], rtol=relative, atol=0, err_msg=name)
 
 
 def run_cli(*args, check=True):

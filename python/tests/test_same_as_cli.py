@@ -10,16 +10,9 @@ import pytest
 import hbtrack
 from hbtrack.results import read_result
 
-from conftest import BLADE, BLADE_CHEAP, BLADE_CLEARANCE, DUFFING, run_cli, set_flags
+from conftest import BLADE, BLADE_CHEAP, BLADE_CLEARANCE, DUFFING, assert_same_columns, run_cli, set_flags
 
 RELATIVE = 1e-12
-
-
-def assert_same_columns(api, cli):
-    assert list(api) == list(cli), "column names differ"
-    for name in cli:
-        assert len(api[name]) == len(cli[name]) > 0, name
-        np.testing.assert_allclose(api[name], cli[name], rtol=RELATIVE, atol=0, err_msg=name)
 
 
 def assert_same_special_points(api, cli):
