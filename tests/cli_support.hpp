@@ -15,10 +15,12 @@
 
 namespace hbtrack::test {
 
-// An empty folder for one test's results, per process (ctest runs tests in parallel processes).
-inline std::filesystem::path fresh_temp_dir(const std::string& name) {
+// A folder for one test's results, per process (ctest runs tests in parallel processes): absent,
+// or created empty.
+inline std::filesystem::path fresh_temp_dir(const std::string& name, bool create = false) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
+  if (create) std::filesystem::create_directories(dir);
   return dir;
 }
 

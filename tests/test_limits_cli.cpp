@@ -24,12 +24,7 @@ using hbtrack::test::run_cli;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("hbtrack_limits_" + std::to_string(getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir.parent_path());
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir("hbtrack_limits_" + name, false); }
 
 std::string duffing() { return hbtrack::test::source_path("examples/duffing.toml"); }
 

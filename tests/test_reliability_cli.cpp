@@ -22,12 +22,7 @@ using hbtrack::test::run_cli;
 namespace {
 
 // Per-process folders: ctest runs the tests in parallel processes.
-fs::path fresh_dir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("hbtrack_reliability_" + std::to_string(getpid()));
-  dir /= name;
-  fs::remove_all(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir("hbtrack_reliability_" + name, false); }
 
 std::string duffing() { return hbtrack::test::source_path("examples/duffing.toml"); }
 

@@ -23,12 +23,7 @@ namespace {
 
 json read_json(const fs::path& p) { return json::parse(std::ifstream(p)); }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir(name, true); }
 
 const std::string kCoupled = hbtrack::test::source_path("examples/coupled_duffing.toml");
 

@@ -25,11 +25,7 @@ const std::string kSmallBlade = hbtrack::test::source_path("tests/data/blade_sma
 
 json read_json(const fs::path& p) { return json::parse(std::ifstream(p)); }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir(name, false); }
 
 TEST(StudyCli, SmallBladeStudyFindsTheCuspAndEveryValidationLimitPointLiesOnTheTrackingCurve) {
   const fs::path dir = fresh_dir("hbtrack_study_small_blade");

@@ -21,12 +21,7 @@ using nlohmann::json;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir(name, true); }
 
 // A study of seconds: the Duffing oscillator's limit points tracked in the amplitude, with a
 // validation NFRC at 2.5 and none of the optional steps (simulation, convergence).

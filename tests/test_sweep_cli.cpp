@@ -25,11 +25,7 @@ namespace {
 const std::string kCase = hbtrack::test::source_path("tests/data/duffing_two_parameters.toml");
 const std::string kGrid = "--param amplitude --values 0.8,1.2 --param cubic --values 0.05:0.15:3";
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir(name, false); }
 
 std::vector<std::vector<std::string>> csv_rows(const fs::path& p) {
   std::ifstream in(p);
