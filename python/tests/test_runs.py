@@ -105,11 +105,23 @@ def test_the_tool_is_found_beside_the_build_without_the_environment(monkeypatch)
     assert os.path.basename(path) == "hbtrack" and os.access(path, os.X_OK)
 
 
+def python_block(page, heading):
+    """The first ```python block after `heading` in the repository's `page`."""
+    with open(os.path.join(ROOT, page)) as f:
+        text = f.read()
+    return text.split(heading, 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+
+
 def test_the_readme_python_block_runs_as_written(capsys, monkeypatch):
-    with open(os.path.join(ROOT, "README.md")) as f:
-        readme = f.read()
-    block = readme.split("### Python", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
     monkeypatch.chdir(ROOT)  # its paths are the repository's
-    exec(compile(block, "README.md", "exec"), {})
+    exec(compile(python_block("README.md", "### Python"), "README.md", "exec"), {})
     printed = capsys.readouterr().out.split()
     assert printed[0] == "reached_end" and printed[-1] == "True"
+
+
+def test_the_tutorial_python_block_runs_and_prints_what_the_page_says(capsys, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    exec(compile(python_block("docs/tutorial.md", "## 8. The same from Python"), "docs/tutorial.md", "exec"), {})
+    points, max_x1 = capsys.readouterr().out.split()
+    # The page's numbers: the isola's 59 points and the simulation's 1.98 (1.98003 in section 6).
+    assert int(points) == 59 and float(max_x1) == pytest.approx(1.98003, abs=5e-6)
