@@ -13,7 +13,8 @@ namespace hbtrack::cli {
 class CliMonitor final : public runs::RunMonitor {
  public:
   // `progress` was made with the run's range (a Progress knows how to show it).
-  CliMonitor(Progress& progress, StopRequest& stop, const std::vector<OutputDof>& outputs) : progress_(progress), stop_(stop), outputs_(outputs) {}
+  CliMonitor(Progress& progress, StopRequest& stop, const std::vector<OutputDof>& outputs)
+      : progress_(progress), stop_(stop), outputs_(outputs) {}
   bool point(const runs::PointProgress& p) override {
     const RecordedPoint none{};
     const RecordedPoint& rec = p.outputs ? *p.outputs : none;

@@ -18,7 +18,8 @@ RunReport backbone(CaseDefinition c, BackboneOptions options, ResultSink& sink, 
   if (!(options.amplitude_start > 0) || !(options.amplitude_end > options.amplitude_start) || !std::isfinite(options.amplitude_end))
     throw CaseError("--range: must be LO:HI with 0 < LO < HI, finite");
   if (options.mode < 1 || options.mode > c.model.dofs())
-    throw CaseError("--mode: " + std::to_string(options.mode) + " must be from 1 to the model's " + std::to_string(c.model.dofs()) + " modes");
+    throw CaseError("--mode: " + std::to_string(options.mode) + " must be from 1 to the model's " + std::to_string(c.model.dofs()) +
+                    " modes");
   c.harmonic_balance.condensation = Condensation::none;
   HarmonicBalance hbm = make_system(c);
   options.continuation = c.nfrc.continuation;
@@ -54,10 +55,12 @@ RunReport backbone(CaseDefinition c, BackboneOptions options, ResultSink& sink, 
   sink.summary(summary);
   RunReport report{summary};
   if (!r.continuation.success()) {
-    report.failure = "backbone stopped: " + stop_reason + " after " + std::to_string(s.points) + " points (kept in " + sink.location() + ")";
+    report.failure =
+        "backbone stopped: " + stop_reason + " after " + std::to_string(s.points) + " points (kept in " + sink.location() + ")";
   } else {
     char brief[160];
-    std::snprintf(brief, sizeof brief, "mode %d, %d points, omega %.6g -> %.6g", options.mode, s.points, r.points.front().omega, r.points.back().omega);
+    std::snprintf(brief, sizeof brief, "mode %d, %d points, omega %.6g -> %.6g", options.mode, s.points, r.points.front().omega,
+                  r.points.back().omega);
     report.brief = brief;
   }
   return report;

@@ -6,7 +6,8 @@
 
 namespace hbtrack::runs {
 
-BranchTables::BranchTables(const CaseDefinition& c, HarmonicBalance& hbm, ResultSink& sink, bool element_forces, bool resumed, int rows_kept)
+BranchTables::BranchTables(const CaseDefinition& c, HarmonicBalance& hbm, ResultSink& sink, bool element_forces, bool resumed,
+                           int rows_kept)
     : hbm_(hbm), sink_(sink), point_(rows_kept) {
   const TableStart start{resumed, rows_kept};
   branch_ = sink.table("branch", branch_header(c), start);

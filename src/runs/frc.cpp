@@ -37,7 +37,8 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   if (resumed) restart.resume_from = &resumed->state;
   // After every accepted point (and step-size update): what a resumed run goes on from.
   const std::string checkpoint = sink.checkpoint_path();
-  if (!checkpoint.empty()) restart.on_state = [&](const ContinuationState& state) { write_continuation_state(checkpoint, state, settings); };
+  if (!checkpoint.empty())
+    restart.on_state = [&](const ContinuationState& state) { write_continuation_state(checkpoint, state, settings); };
   const double from = options.start ? options.start->omega : c.nfrc.omega_start, end = c.nfrc.omega_end;
   Coverage coverage = Coverage::one_way(from, end);
   const RecordedObserver record = [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
@@ -57,8 +58,10 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};
   tables.append_special_points(r.continuation.special_points);
-  std::vector<std::string> warnings = special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start));
-  for (std::string& w : unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
+  std::vector<std::string> warnings =
+      special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start));
+  for (std::string& w :
+       unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
     warnings.push_back(std::move(w));
   summary["warnings"] = warnings;
   const double last_omega = r.recorded.empty() ? from : r.recorded.back().omega;

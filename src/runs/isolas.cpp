@@ -53,7 +53,8 @@ RunReport isolas(const CaseDefinition& c, const IsolaOptions& o, ResultSink& sin
     low = std::min(low, p.lambda), high = std::max(high, p.lambda);
     return monitor.point({point++, p.lambda, p.lambda, 0, covered_fraction(omega_lo + high - low, omega_lo, omega_hi), &rec});
   };
-  const std::vector<IsolaCandidate> found = compute_isolas(hbm, parameter, o.at, o.curves, scales, c.nfrc, c.outputs, !o.locate_only, observer);
+  const std::vector<IsolaCandidate> found =
+      compute_isolas(hbm, parameter, o.at, o.curves, scales, c.nfrc, c.outputs, !o.locate_only, observer);
   json crossings = json::array();
   int isola_count = 0;
   for (size_t k = 0; k < found.size(); ++k) {
@@ -69,7 +70,8 @@ RunReport isolas(const CaseDefinition& c, const IsolaOptions& o, ResultSink& sin
       j["stop_reason"] = branch["stop_reason"];
       j["points"] = branch["points"];
       double omega_min = 1e300, omega_max = -1e300;
-      for (const auto& p : f.branch.continuation.points) omega_min = std::min(omega_min, p.lambda), omega_max = std::max(omega_max, p.lambda);
+      for (const auto& p : f.branch.continuation.points)
+        omega_min = std::min(omega_min, p.lambda), omega_max = std::max(omega_max, p.lambda);
       j["omega_range"] = {omega_min, omega_max};
       int unstable = 0;
       for (const auto& rec : f.branch.recorded) unstable += rec.stable == 0;
@@ -84,7 +86,8 @@ RunReport isolas(const CaseDefinition& c, const IsolaOptions& o, ResultSink& sin
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
   sink.summary(summary);
   char brief[160];
-  std::snprintf(brief, sizeof brief, "%zu crossings of %s = %g, %d isolated branches", found.size(), o.parameter.c_str(), o.at, isola_count);
+  std::snprintf(brief, sizeof brief, "%zu crossings of %s = %g, %d isolated branches", found.size(), o.parameter.c_str(), o.at,
+                isola_count);
   return RunReport{summary, "", brief};
 }
 

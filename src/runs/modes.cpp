@@ -29,12 +29,9 @@ RunReport modes(const CaseDefinition& c, int count, ResultSink& sink) {
   }
   if (!failure.empty()) return RunReport{json::object(), failure};
   sink.open();
-  json summary = {{"verb", "modes"},
-                  {"case", c.path},
-                  {"dofs", c.model.dofs()},
-                  {"natural_frequencies", frequencies},
-                  {"dominant_dofs", dominant},
-                  {"timings", {{"wall_s", seconds_since(t0)}}}};
+  json summary = {{"verb", "modes"},           {"case", c.path},
+                  {"dofs", c.model.dofs()},    {"natural_frequencies", frequencies},
+                  {"dominant_dofs", dominant}, {"timings", {{"wall_s", seconds_since(t0)}}}};
   sink.summary(summary);
   return RunReport{summary, "", std::to_string(kept) + " of " + std::to_string(c.model.dofs()) + " dofs"};
 }

@@ -64,7 +64,8 @@ RunReport continue_in_parameter(const CaseDefinition& c, const ParameterBranchOp
   sink.summary(summary);
   RunReport report{summary};
   if (!r.continuation.success())
-    report.failure = "continuation stopped: " + stop_reason + " after " + std::to_string(s.points) + " points (kept in " + sink.location() + ")";
+    report.failure =
+        "continuation stopped: " + stop_reason + " after " + std::to_string(s.points) + " points (kept in " + sink.location() + ")";
   else
     report.brief = std::to_string(s.points) + " points, " + std::to_string(r.continuation.special_points.size()) + " special points, " +
                    std::to_string(s.newton_iterations) + " Newton iterations";

@@ -14,7 +14,8 @@ json branch_settings(json options) {
 
 void require_same_settings(const std::string& path, const json& saved, const json& settings) {
   if (saved != settings)
-    throw CaseError("--resume: " + path + " was computed with other settings (case, --set or options differ): " + json::diff(saved, settings).dump());
+    throw CaseError("--resume: " + path +
+                    " was computed with other settings (case, --set or options differ): " + json::diff(saved, settings).dump());
 }
 
 }  // namespace hbtrack::runs

@@ -39,8 +39,8 @@ RunReport simulate(const CaseDefinition& c, const SimulateOptions& o, ResultSink
   steady.harmonics = c.harmonic_balance.harmonics;
   steady.validate();
   if (o.steps_per_period < 2 * steady.harmonics + 1)
-    throw CaseError(o.steps_name + ": must be >= 2*harmonics+1 = " + std::to_string(2 * steady.harmonics + 1) + " to resolve H = " +
-                    std::to_string(steady.harmonics) + ", got " + std::to_string(o.steps_per_period));
+    throw CaseError(o.steps_name + ": must be >= 2*harmonics+1 = " + std::to_string(2 * steady.harmonics + 1) +
+                    " to resolve H = " + std::to_string(steady.harmonics) + ", got " + std::to_string(o.steps_per_period));
   HarmonicBalance hbm = make_system(c);
   const int n = c.model.dofs();
   MotionState initial = rest_state(n);
@@ -101,7 +101,8 @@ RunReport simulate(const CaseDefinition& c, const SimulateOptions& o, ResultSink
     report.failure = "simulate stopped: " + why + " (kept in " + sink.location() + ")";
   } else {
     char brief[200];
-    std::snprintf(brief, sizeof brief, "periodic after %d periods (%s, %ld steps)", r.periods, to_string(o.method).c_str(), r.statistics.steps);
+    std::snprintf(brief, sizeof brief, "periodic after %d periods (%s, %ld steps)", r.periods, to_string(o.method).c_str(),
+                  r.statistics.steps);
     report.brief = brief;
     if (!c.outputs.empty() && !r.outputs.empty())
       report.brief += ", h1_" + c.outputs[0].name + " " + std::to_string(r.outputs[0].first_harmonic());

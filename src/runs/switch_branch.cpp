@@ -68,7 +68,10 @@ RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o
   std::vector<SpecialPoint> special;
   for (const auto* leg : {&s.through, &s.away})
     for (const auto& p : leg->continuation.special_points) {
-      json j = {{"type", p.type}, {"index", leg == &s.through ? through - 1 - p.index : shift + p.index}, {"omega", p.lambda}, {"located", p.located}};
+      json j = {{"type", p.type},
+                {"index", leg == &s.through ? through - 1 - p.index : shift + p.index},
+                {"omega", p.lambda},
+                {"located", p.located}};
       j["parameters"] = summary["options"]["parameters"];
       add_outputs(j, c, record_point(system, p.u, p.lambda, c.outputs));
       points.push_back(j);

@@ -115,8 +115,8 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   sink.summary(summary);
   RunReport report{summary};
   if (!r.success())
-    report.failure = "tracking stopped: " + failure + " after " + std::to_string(r.curve_points()) + " points (kept in " + sink.location() + ")" +
-                     smoothness_hint(hbm);
+    report.failure = "tracking stopped: " + failure + " after " + std::to_string(r.curve_points()) + " points (kept in " + sink.location() +
+                     ")" + smoothness_hint(hbm);
   else
     report.brief = std::to_string(r.curve_points()) + " points, " + std::to_string(r.extrema.size()) + " extrema of " + o.parameter + ", " +
                    (r.closed ? "closed" : "both ways to the range");

@@ -15,7 +15,8 @@ namespace hbtrack::runs {
 class BranchTables {
  public:
   // `rows_kept`: the points of a stopped run this one resumes (0 for a new run).
-  BranchTables(const CaseDefinition& c, HarmonicBalance& hbm, ResultSink& sink, bool element_forces, bool resumed = false, int rows_kept = 0);
+  BranchTables(const CaseDefinition& c, HarmonicBalance& hbm, ResultSink& sink, bool element_forces, bool resumed = false,
+               int rows_kept = 0);
   void append(const BranchPoint& p, const RecordedPoint& rec);
   // special_states (and special_unknowns), in summary order: `track` starts from a limit point's.
   void append_special_points(const std::vector<SpecialPoint>& points);

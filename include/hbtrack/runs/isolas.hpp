@@ -16,10 +16,10 @@
 namespace hbtrack::runs {
 
 struct IsolaOptions {
-  std::string parameter;  // the tracked parameter, a name of the case's parameters
-  double at = 0;          // its value
-  std::vector<std::vector<FoldCurvePoint>> curves;  // the tracking curves (omega, parameter, x)
-  bool locate_only = false;                         // the crossings alone, no branches
+  std::string parameter;                             // the tracked parameter, a name of the case's parameters
+  double at = 0;                                     // its value
+  std::vector<std::vector<FoldCurvePoint>> curves;   // the tracking curves (omega, parameter, x)
+  bool locate_only = false;                          // the crossings alone, no branches
   nlohmann::json origin = nlohmann::json::object();  // fields added to the summary's options.isolas
 };
 

@@ -12,8 +12,8 @@
 namespace hbtrack::runs {
 
 struct ParameterBranchOptions {
-  std::string parameter;  // a name of the case's parameters
-  double omega = 0;       // rad/s, fixed
+  std::string parameter;      // a name of the case's parameters
+  double omega = 0;           // rad/s, fixed
   double start = 0, end = 0;  // from the solution at start towards end
 };
 

@@ -33,7 +33,8 @@ class ResultSink {
   // Claims the destination once the run's input is checked, before the first write (a folder is
   // created and locked): bad input leaves nothing behind.
   virtual void open() = 0;
-  virtual std::unique_ptr<TableSink> table(const std::string& name, const std::vector<std::string>& header, const TableStart& start = {}) = 0;
+  virtual std::unique_ptr<TableSink> table(const std::string& name, const std::vector<std::string>& header,
+                                           const TableStart& start = {}) = 0;
   virtual void summary(const nlohmann::json& summary) = 0;
   // A result inside this one (a branch of isolas), opened; it lives as long as this sink.
   virtual ResultSink& child(const std::string& name) = 0;

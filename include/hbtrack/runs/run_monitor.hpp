@@ -10,11 +10,11 @@ namespace hbtrack::runs {
 
 // One accepted point of a run.
 struct PointProgress {
-  int index = 0;         // from 0, counted over the whole run
-  double omega = 0;      // rad/s
-  double value = 0;      // the run's own variable: omega, the tracked or continued parameter
-  int leg = 0;           // the leg of a tracking curve (1 or 2), 0 for a run without legs
-  double fraction = -1;  // of the run's range covered so far (hbtrack::Coverage), -1 without one
+  int index = 0;                           // from 0, counted over the whole run
+  double omega = 0;                        // rad/s
+  double value = 0;                        // the run's own variable: omega, the tracked or continued parameter
+  int leg = 0;                             // the leg of a tracking curve (1 or 2), 0 for a run without legs
+  double fraction = -1;                    // of the run's range covered so far (hbtrack::Coverage), -1 without one
   const RecordedPoint* outputs = nullptr;  // the point's outputs, when the run records them
 };
 

@@ -21,8 +21,8 @@ struct SimulateOptions {
   std::optional<double> omega;      // the forcing frequency; by default the start's
   std::optional<StartPoint> start;  // by default the motion starts from rest
   IntegrationMethod method = IntegrationMethod::newmark;
-  int steps_per_period = 256;       // newmark: time steps; dopri5: output samples (the step adapts)
-  SteadyStateOptions steady;        // its harmonics are the case's
+  int steps_per_period = 256;                        // newmark: time steps; dopri5: output samples (the step adapts)
+  SteadyStateOptions steady;                         // its harmonics are the case's
   nlohmann::json origin = nlohmann::json::object();  // fields added to options.simulation (from, point)
   std::string steps_name = "--steps-per-period";     // the caller's name of steps_per_period, in messages
 };

@@ -16,10 +16,10 @@
 namespace hbtrack::runs {
 
 struct SwitchOptions {
-  std::string type;     // "BP" or "PD"
-  long point = 0;       // its number among the NFRC's special points (from 1), for the summary
-  StartPoint at;        // the BP or PD itself
-  StartPoint before, after;  // its neighbours on the NFRC: the direction the NFRC goes through it
+  std::string type;                                  // "BP" or "PD"
+  long point = 0;                                    // its number among the NFRC's special points (from 1), for the summary
+  StartPoint at;                                     // the BP or PD itself
+  StartPoint before, after;                          // its neighbours on the NFRC: the direction the NFRC goes through it
   nlohmann::json origin = nlohmann::json::object();  // fields added to options.switch (from)
 };
 

@@ -17,10 +17,10 @@
 namespace hbtrack::runs {
 
 struct TrackOptions {
-  std::string parameter;            // a name of the case's parameters
+  std::string parameter;  // a name of the case's parameters
   double parameter_min = 0, parameter_max = 0;
   TrackingMethod method = TrackingMethod::bordered;
-  StartPoint start;                 // the limit point (of an NFRC of the same case and settings)
+  StartPoint start;  // the limit point (of an NFRC of the same case and settings)
   // Fields added to the summary's options.tracking (where the start came from: folder, lp, ...).
   nlohmann::json origin = nlohmann::json::object();
   // How the caller names the range and the parameter in its messages (the CLI's flags, Python's
