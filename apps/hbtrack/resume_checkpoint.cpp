@@ -19,10 +19,10 @@ json branch_settings(json options) {
   return options;
 }
 
-void require_stopped_run(const std::string& dir, const std::vector<std::string>& finished) {
+void require_stopped_run(const std::string& dir, const std::vector<StopReason>& finished) {
   if (!std::filesystem::exists(dir + "/summary.json")) return;  // killed before its first summary: the checkpoint decides
   const std::string reason = read_summary(dir).value("stop_reason", "");
-  if (std::find(finished.begin(), finished.end(), reason) != finished.end())
+  if (std::any_of(finished.begin(), finished.end(), [&](StopReason f) { return to_string(f) == reason; }))
     throw CaseError("--resume: " + dir + " finished (" + reason + "), nothing to resume");
 }
 

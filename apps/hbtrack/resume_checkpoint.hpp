@@ -8,6 +8,7 @@
 
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 
 namespace hbtrack::cli {
 
@@ -16,7 +17,7 @@ namespace hbtrack::cli {
 nlohmann::json branch_settings(nlohmann::json options);
 
 // DIR/summary.json must not report a finished run (one of `finished` stop reasons).
-void require_stopped_run(const std::string& dir, const std::vector<std::string>& finished);
+void require_stopped_run(const std::string& dir, const std::vector<StopReason>& finished);
 
 // The checkpoint's settings must equal this run's (same case, --set and verb options).
 void require_same_settings(const std::string& dir, const nlohmann::json& saved, const nlohmann::json& settings);
@@ -24,7 +25,7 @@ void require_same_settings(const std::string& dir, const nlohmann::json& saved, 
 // The checkpoint of the stopped run in DIR as `read` (read_continuation_state,
 // read_tracking_state) gives it, once the run is known unfinished and of the same settings.
 template <class Read>
-auto checkpoint_to_resume(const std::string& dir, const std::vector<std::string>& finished, const nlohmann::json& settings, Read read) {
+auto checkpoint_to_resume(const std::string& dir, const std::vector<StopReason>& finished, const nlohmann::json& settings, Read read) {
   require_stopped_run(dir, finished);
   decltype(read(dir)) saved;
   try {

@@ -42,7 +42,7 @@ int run_backbone(const BackboneCliOptions& o) {
     throw CaseError("--mode: " + std::to_string(options.mode) + " is beyond the model's " + std::to_string(c.model.dofs()) + " modes");
 
   const std::string& dir = o.common.out_dir;
-  json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["backbone"] = backbone_options_json(options);
   ensure_directory(dir);
   CsvAppender branch(dir + "/branch.csv", backbone_header(c, hbm.basis().harmonic_numbers()));
@@ -61,14 +61,14 @@ int run_backbone(const BackboneCliOptions& o) {
       return !stop.requested();
     });
   } catch (const std::runtime_error& e) {
-    summary["stop_reason"] = "no_convergence";
+    summary["stop_reason"] = to_string(StopReason::no_convergence);
     summary["points"] = 0;
     write_json_atomically(dir + "/summary.json", summary);
     throw RunFailed{e.what()};
   }
   progress.finish();
   const auto& s = r.continuation.summary;
-  const std::string stop_reason = stop.reason(s.stop_reason);
+  const std::string stop_reason = to_string(stop.reason(s.stop_reason));
   add_backbone_summary(summary, c, hbm, r);
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};

@@ -36,7 +36,7 @@ int run_continue(const ContinueOptions& o) {
   const int parameter = parameter_index(hbm.parameters(), o.param, "--param");
 
   const std::string& dir = o.common.out_dir;
-  json summary = {{"verb", "continue"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "continue"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["continue"] = parameter_continuation_options(o.param, omega, start, end);
   ensure_directory(dir);
   CsvAppender branch(dir + "/branch.csv", parameter_branch_header(c, o.param));
@@ -57,7 +57,7 @@ int run_continue(const ContinueOptions& o) {
                                 return !stop.requested();
                               });
   } catch (const std::runtime_error& e) {
-    summary["stop_reason"] = "no_convergence";
+    summary["stop_reason"] = to_string(StopReason::no_convergence);
     summary["points"] = 0;
     write_json_atomically(dir + "/summary.json", summary);
     throw RunFailed{e.what()};
@@ -65,7 +65,7 @@ int run_continue(const ContinueOptions& o) {
   progress.finish();
   hbm.parameters().value(parameter) = nominal;
   const auto& s = r.continuation.summary;
-  const std::string stop_reason = stop.reason(s.stop_reason);
+  const std::string stop_reason = to_string(stop.reason(s.stop_reason));
   add_parameter_branch_summary(summary, c, hbm, r, parameter);
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};

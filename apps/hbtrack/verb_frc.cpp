@@ -79,11 +79,14 @@ int run_frc(const FrcOptions& options) {
   if (!options.from.empty() && start.x.size() != hbm.unknowns())
     throw CaseError(options.from + "/states.csv: holds " + std::to_string(start.x.size()) + " unknowns, the case's harmonic balance has " +
                     std::to_string(hbm.unknowns()) + " (results of another case?)");
-  json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   if (!options.from.empty()) summary["started_from"] = {{"folder", options.from}, {"point", start_row}, {"omega", start.omega}};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedContinuation> resumed;
-  if (!options.resume.empty()) resumed = checkpoint_to_resume(dir, {"reached_end", "left_range", "closed"}, settings, read_continuation_state);
+  if (!options.resume.empty()) {
+    const std::vector<StopReason> finished{StopReason::reached_end, StopReason::left_range, StopReason::closed};
+    resumed = checkpoint_to_resume(dir, finished, settings, read_continuation_state);
+  }
   ensure_directory(dir);
   lock_result_folder(dir);
   const int rows_kept = resumed ? resumed->state.points : 0;
@@ -136,7 +139,7 @@ int run_frc(const FrcOptions& options) {
   }
   progress.finish();
   const auto& s = r.continuation.summary;
-  const std::string stop_reason = stop.reason(s.stop_reason);
+  const std::string stop_reason = to_string(stop.reason(s.stop_reason));
   add_nfrc_summary(summary, c, hbm, r);
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};
@@ -178,7 +181,7 @@ int run_solve(const CommonOptions& o, double omega) {
                   {"options", options_json(c, hbm)},
                   {"omega", omega},
                   {"converged", s.converged},
-                  {"stop_reason", s.converged ? "converged" : "no_convergence"},
+                  {"stop_reason", to_string(s.converged ? StopReason::converged : StopReason::no_convergence)},
                   {"points", s.converged ? 1 : 0},
                   // A failed solve spent every iteration it was allowed (the message says so).
                   {"newton_iterations", s.converged ? s.newton_iterations : 4 * co.max_iterations},

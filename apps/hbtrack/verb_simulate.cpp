@@ -113,7 +113,8 @@ int run_simulate(const SimulateOptions& o) {
 
   ensure_directory(o.common.out_dir);
   lock_result_folder(o.common.out_dir);
-  json summary = {{"verb", "simulate"}, {"options", options_json(c, hbm)}, {"omega", omega}, {"stop_reason", "running"}};
+  json summary = {
+      {"verb", "simulate"}, {"options", options_json(c, hbm)}, {"omega", omega}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["simulation"] = simulation_options_json(method, !o.from.empty(), steps_per_period, steady);
   summary["options"]["simulation"].update(method_options);
   if (!o.from.empty()) {
@@ -146,10 +147,10 @@ int run_simulate(const SimulateOptions& o) {
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
 
   if (!r.converged) {
-    const std::string why = r.stop_reason == "max_periods"
+    const std::string why = r.stop_reason == StopReason::max_periods
                                 ? "no periodic steady state within " + std::to_string(r.periods) + " periods (last change " +
                                       std::to_string(r.last_change) + ")"
-                                : r.stop_reason + (r.message.empty() ? "" : ": " + r.message);
+                                : to_string(r.stop_reason) + (r.message.empty() ? "" : ": " + r.message);
     throw RunFailed{"simulate stopped: " + why + " (kept in " + o.common.out_dir + ")"};
   }
   if (!o.common.quiet) {

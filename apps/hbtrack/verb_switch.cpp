@@ -69,7 +69,7 @@ int run_switch(const SwitchOptions& o) {
 
   const std::string& dir = o.common.out_dir;
   ensure_directory(dir);
-  json summary = {{"verb", "switch"}, {"options", options_json(c, system)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "switch"}, {"options", options_json(c, system)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["switch"] = {{"from", o.from}, {"point", point}, {"type", type}, {"omega", bp.omega}};
   write_json_atomically(dir + "/summary.json", summary);
   SwitchedBranch s;
@@ -77,7 +77,7 @@ int run_switch(const SwitchOptions& o) {
     s = type == "PD" ? switch_at_period_doubling(system, hbm.basis(), c.nfrc, c.outputs, bp.x, bp.omega, known)
                      : switch_at_branch_point(system, c.nfrc, c.outputs, bp.x, bp.omega, known);
   } catch (const std::runtime_error& e) {
-    summary["stop_reason"] = "no_convergence";
+    summary["stop_reason"] = to_string(StopReason::no_convergence);
     write_json_atomically(dir + "/summary.json", summary);
     throw RunFailed{e.what()};
   }
@@ -113,12 +113,12 @@ int run_switch(const SwitchOptions& o) {
   summary["newton_iterations"] = a.newton_iterations + b.newton_iterations;
   summary["failed_steps"] = a.failed_steps + b.failed_steps;
   summary["step_halvings"] = a.step_halvings + b.step_halvings;
-  summary["legs"] = {{{"name", "through"}, {"stop_reason", b.stop_reason}, {"points", b.points}},
-                     {{"name", "away"}, {"stop_reason", a.stop_reason}, {"points", a.points}}};
+  summary["legs"] = {{{"name", "through"}, {"stop_reason", to_string(b.stop_reason)}, {"points", b.points}},
+                     {{"name", "away"}, {"stop_reason", to_string(a.stop_reason)}, {"points", a.points}}};
   // A period-doubled leg ends where it rejoins the period-T branch (at a PD of the band).
-  const bool away_ok = s.away.continuation.success() || a.stop_reason == "rejoined";
-  const bool ok = away_ok && (s.through.continuation.success() || b.stop_reason == "rejoined");
-  summary["stop_reason"] = ok ? "completed" : (away_ok ? b.stop_reason : a.stop_reason);
+  const bool away_ok = s.away.continuation.success() || a.stop_reason == StopReason::rejoined;
+  const bool ok = away_ok && (s.through.continuation.success() || b.stop_reason == StopReason::rejoined);
+  summary["stop_reason"] = to_string(ok ? StopReason::completed : (away_ok ? b.stop_reason : a.stop_reason));
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
   write_json_atomically(dir + "/summary.json", summary);
   if (!ok) throw RunFailed{"switch: a leg stopped: " + summary["stop_reason"].get<std::string>() + " (kept in " + dir + ")"};

@@ -128,12 +128,12 @@ int run_track(TrackOptions o) {
   tracking.continuation = c.nfrc.continuation;
 
   const std::string& dir = o.common.out_dir;
-  json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["tracking"] = {{"from", o.from}, {"lp", lp}, {"lp_order", "omega"}, {"parameter", o.param}, {"method", o.method},
                                     {"range", {tracking.parameter_min, tracking.parameter_max}}};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedTracking> resumed;
-  if (!o.resume.empty()) resumed = checkpoint_to_resume(dir, {"completed", "closed"}, settings, read_tracking_state);
+  if (!o.resume.empty()) resumed = checkpoint_to_resume(dir, {StopReason::completed, StopReason::closed}, settings, read_tracking_state);
   ensure_directory(dir);
   lock_result_folder(dir);
   const int rows_kept = resumed ? resumed->state.curve_points : 0;
@@ -179,13 +179,13 @@ int run_track(TrackOptions o) {
   std::vector<std::string> warnings =
       extremum_pairs_below_resolution(r.extrema, o.param, tracking.parameter_max - tracking.parameter_min, omega_high - omega_low);
   for (const ContinuationSummary& leg : r.legs)
-    if (leg.stop_reason == "max_points")
+    if (leg.stop_reason == StopReason::max_points)
       warnings.push_back("a leg stopped at continuation.max_points after " + std::to_string(leg.points) +
                          " points, before the range's end: the curve is incomplete (rerun with a larger --set continuation.max_points)");
   summary["warnings"] = warnings;
   for (const std::string& w : warnings) std::fprintf(stderr, "track: warning: %s\n", w.c_str());
   const bool ok = r.success();
-  const std::string failure = stop.reason(r.failure());
+  const std::string failure = to_string(stop.reason(r.stop_reason()));
   if (!ok) summary["stop_reason"] = failure;
   summary["start"] = {{"omega", start.omega}, {o.param, start_value}};
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
@@ -246,7 +246,7 @@ int run_isolas(const IsolaOptions& o) {
 
   ensure_directory(o.common.out_dir);
   lock_result_folder(o.common.out_dir);
-  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["isolas"] = {{"from", o.from}, {"parameter", parameter_name}, {"at", value}};
   write_json_atomically(o.common.out_dir + "/summary.json", summary);
 
@@ -274,7 +274,7 @@ int run_isolas(const IsolaOptions& o) {
       }
       const auto& s = f.branch.continuation.summary;
       j["folder"] = name;
-      j["stop_reason"] = s.stop_reason;
+      j["stop_reason"] = to_string(s.stop_reason);
       j["points"] = s.points;
       double omega_min = 1e300, omega_max = -1e300;
       for (const auto& p : f.branch.continuation.points) omega_min = std::min(omega_min, p.lambda), omega_max = std::max(omega_max, p.lambda);
@@ -291,7 +291,7 @@ int run_isolas(const IsolaOptions& o) {
       }
       j["special_points"] = special;
       // Each branch folder is a result folder of its own (plot_branch.py, simulate --from).
-      json branch_summary = {{"verb", "isolas"},        {"options", options_json(c, hbm)}, {"stop_reason", s.stop_reason},
+      json branch_summary = {{"verb", "isolas"},        {"options", options_json(c, hbm)}, {"stop_reason", to_string(s.stop_reason)},
                              {"points", s.points},       {"special_points", special},       {"outputs", json::array()}};
       for (const auto& out : c.outputs)
         branch_summary["outputs"].push_back({{"name", out.name}, {"dof", c.model.dof_names[static_cast<size_t>(out.dof)]}});
@@ -299,7 +299,7 @@ int run_isolas(const IsolaOptions& o) {
     }
     crossings.push_back(j);
   }
-  summary["stop_reason"] = "completed";
+  summary["stop_reason"] = to_string(StopReason::completed);
   summary["crossings"] = crossings;
   summary["isolas"] = isolas;
   summary["timings"] = {{"wall_s", seconds_since(t0)}};

@@ -222,7 +222,7 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
       py::dict branch = branch_result(c, hbm, f.branch, branch_summary);
       branches[py::str(name)] = branch;
       j["folder"] = name;
-      j["stop_reason"] = f.branch.continuation.summary.stop_reason;
+      j["stop_reason"] = to_string(f.branch.continuation.summary.stop_reason);
       j["points"] = f.branch.continuation.summary.points;
       double omega_min = 1e300, omega_max = -1e300;
       for (const auto& p : f.branch.continuation.points) omega_min = std::min(omega_min, p.lambda), omega_max = std::max(omega_max, p.lambda);
@@ -233,8 +233,8 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
     }
     crossings.push_back(j);
   }
-  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", "completed"}, {"crossings", crossings},
-                  {"isolas", isola_count}, {"timings", {{"wall_s", seconds_since(t0)}}}};
+  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::completed)},
+                  {"crossings", crossings}, {"isolas", isola_count}, {"timings", {{"wall_s", seconds_since(t0)}}}};
   summary["options"]["isolas"] = {{"parameter", param}, {"at", at}};
   py::dict out;
   out["summary"] = to_python(summary);

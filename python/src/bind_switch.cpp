@@ -101,12 +101,12 @@ py::dict switch_branch(const CaseDefinition& period_one, const std::string& type
   summary["special_points"] = points;
   summary["outputs"] = outputs_json(c);
   summary["points"] = shift + static_cast<int>(s.away.recorded.size());
-  summary["legs"] = {{{"name", "through"}, {"stop_reason", b.stop_reason}, {"points", b.points}},
-                     {{"name", "away"}, {"stop_reason", a.stop_reason}, {"points", a.points}}};
+  summary["legs"] = {{{"name", "through"}, {"stop_reason", to_string(b.stop_reason)}, {"points", b.points}},
+                     {{"name", "away"}, {"stop_reason", to_string(a.stop_reason)}, {"points", a.points}}};
   // A period-doubled leg ends where it rejoins the period-T branch (at a PD of the band).
-  const bool away_ok = s.away.continuation.success() || a.stop_reason == "rejoined";
-  const bool ok = away_ok && (s.through.continuation.success() || b.stop_reason == "rejoined");
-  summary["stop_reason"] = ok ? "completed" : (away_ok ? b.stop_reason : a.stop_reason);
+  const bool away_ok = s.away.continuation.success() || a.stop_reason == StopReason::rejoined;
+  const bool ok = away_ok && (s.through.continuation.success() || b.stop_reason == StopReason::rejoined);
+  summary["stop_reason"] = to_string(ok ? StopReason::completed : (away_ok ? b.stop_reason : a.stop_reason));
   summary["timings"] = {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}};
   py::dict out;
   out["branch"] = branch.columns();
