@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
   if (lp) {
     const double reference = automatic_length_scale(hbm, c.nfrc.omega_start, c.nfrc.omega_end);
     const FoldScales scales{0.01 * reference, std::abs(c.nfrc.omega_end - c.nfrc.omega_start), force_scale(hbm, reference), 79.0};
-    for (const char* method : {"bordered", "extended"}) {
+    for (TrackingMethod method : {TrackingMethod::bordered, TrackingMethod::extended}) {
       FoldTrackingOptions o;
       o.method = method;
       o.parameter_min = 1.0;
@@ -115,8 +115,8 @@ int main(int argc, char** argv) {
       const auto t0 = Clock::now();
       const FoldTrackingResult r = track_fold(hbm, hbm.amplitude_parameter(), lp->u, lp->lambda, scales, o, {});
       Run run;
-      run.name = std::string(method) + " LP tracking";
-      run.unknowns = o.method == "bordered" ? hbm.unknowns() + 1 : 2 * hbm.unknowns() + 1;
+      run.name = to_string(method) + " LP tracking";
+      run.unknowns = o.method == TrackingMethod::bordered ? hbm.unknowns() + 1 : 2 * hbm.unknowns() + 1;
       run.points = static_cast<int>(r.points.size());
       run.wall = seconds_since(t0);
       for (const auto& leg : r.legs) run.add(leg);

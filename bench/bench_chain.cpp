@@ -90,8 +90,9 @@ Row measure(int n, int harmonics, const std::string& condensation, int samples =
       hbtrack::hill_floquet(hbm, r.continuation.points[i].u, r.continuation.points[i].lambda);
     stability = seconds_since(t1) / timed * std::max(1, s.points);  // per point x points
   }
-  Row row{n,    harmonics, hbm.basis().samples(), hbm.unknowns(), s.points, s.newton_iterations, hbm.condensation_method(),
-          s.stop_reason, wall, dense_lu_seconds(hbm.unknowns() + 1), wall / std::max(1, s.newton_iterations), stability, breakdown};
+  Row row{n,         harmonics, hbm.basis().samples(), hbm.unknowns(), s.points, s.newton_iterations, hbm.condensation_method(),
+          hbtrack::to_string(s.stop_reason), wall, dense_lu_seconds(hbm.unknowns() + 1), wall / std::max(1, s.newton_iterations),
+          stability, breakdown};
   return row;
 }
 

@@ -64,7 +64,7 @@ TEST(Backbone, DuffingFollowsTheOneTermBackboneUpToTheNeglectedHarmonics) {
   const CaseDefinition c = example("duffing.toml", {"continuation.tolerance=1e-11"});
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const BackboneResult r = compute_backbone(hbm, options_for(c, 1e-3, 2.0), c.outputs);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   ASSERT_GT(r.points.size(), 10u);
   EXPECT_NEAR(r.linear_omega, 1.0, 1e-12);
   double largest_correction = 0;
@@ -95,7 +95,7 @@ TEST(Backbone, NfrcPeaksLieOnTheDuffingBackbone) {
     NfrcOptions nfrc = c.nfrc;
     nfrc.omega_end = 2.0;
     const NfrcResult frc = compute_nfrc(hbm, nfrc, c.outputs);
-    ASSERT_EQ(frc.continuation.summary.stop_reason, "reached_end");
+    ASSERT_EQ(frc.continuation.summary.stop_reason, StopReason::reached_end);
     // The peak of h1 along the branch, refined by parabolas in arc length through 3 points.
     size_t best = 1;
     for (size_t i = 1; i + 1 < frc.recorded.size(); ++i)
@@ -114,7 +114,7 @@ TEST(Backbone, NfrcPeaksLieOnTheDuffingBackbone) {
     HarmonicBalance free(c.model, c.elements, c.parameters, c.harmonic_balance);
     BackboneOptions o = options_for(c, 1e-3, h1_peak);
     const BackboneResult bb = compute_backbone(free, o, c.outputs);
-    ASSERT_EQ(bb.continuation.summary.stop_reason, "reached_end");
+    ASSERT_EQ(bb.continuation.summary.stop_reason, StopReason::reached_end);
     const double omega_bb = bb.points.back().omega;
     // One-term theory: the forced peak has 1 - w^2 + 3/4 k3 a^2 = c^2/2, the backbone
     // 1 - w^2 + 3/4 k3 a^2 = 0, so w_peak^2 = w_bb^2 - c^2/2: w_peak is below w_bb by
@@ -128,7 +128,7 @@ TEST(Backbone, FrictionDampingRatioRisesThenFalls) {
   const CaseDefinition c = example("friction_damper.toml");
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const BackboneResult r = compute_backbone(hbm, options_for(c, 1e-4, 1.0), c.outputs);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   size_t peak = 0;
   for (size_t i = 0; i < r.points.size(); ++i)
     if (r.points[i].damping_ratio > r.points[peak].damping_ratio) peak = i;

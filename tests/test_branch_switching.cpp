@@ -20,7 +20,7 @@ TEST(BranchSwitching, CoupledDuffingBranchIsAsymmetricAndMeetsTheSymmetricOneAtT
   const CaseDefinition c = load_case(test::source_path("examples/coupled_duffing.toml"));
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const NfrcResult nfrc = compute_nfrc(hbm, c.nfrc, c.outputs);
-  ASSERT_EQ(nfrc.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(nfrc.continuation.summary.stop_reason, StopReason::reached_end);
   const SpecialPoint* bp = nullptr;
   for (const SpecialPoint& sp : nfrc.continuation.special_points)
     if (sp.type == "BP" && sp.located) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hbtrack/util/choices.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 
 using namespace hbtrack;
 
@@ -53,6 +54,12 @@ TEST(Choices, EveryValueRoundTripsThroughItsName) {
   EXPECT_EQ(round_trip_names<CrossCheck>(), (std::vector<std::string>{"auto", "off"}));
   EXPECT_EQ(round_trip_names<TrackingMethod>(), (std::vector<std::string>{"bordered", "extended"}));
   EXPECT_EQ(round_trip_names<IntegrationMethod>(), (std::vector<std::string>{"newmark", "dopri5"}));
+  // Not a setting, but named the same way: summary.json's and the checkpoints' stop_reason.
+  EXPECT_EQ(round_trip_names<StopReason>(),
+            (std::vector<std::string>{"running", "reached_end", "left_range", "closed", "max_points", "step_size_underflow",
+                                      "step_size_underflow_on_curvature", "interrupted", "time_limit", "no_convergence_at_start",
+                                      "rejoined", "not_started", "completed", "converged", "max_periods", "diverged", "newton_failure",
+                                      "integration_failure", "no_convergence", "tasks_failed", "checks_failed", "stopped_by_callback"}));
 }
 
 TEST(Choices, TheNamedParsersAgreeWithTheTables) {
@@ -64,6 +71,7 @@ TEST(Choices, TheNamedParsersAgreeWithTheTables) {
   EXPECT_EQ(parse_cross_check("off"), CrossCheck::off);
   EXPECT_EQ(parse_tracking_method("extended"), TrackingMethod::extended);
   EXPECT_EQ(parse_integration_method("dopri5"), IntegrationMethod::dopri5);
+  EXPECT_EQ(parse_stop_reason("step_size_underflow_on_curvature"), StopReason::step_size_underflow_on_curvature);
 }
 
 // The messages the case file, the CLI and Python report (tests/test_case_file.cpp and
@@ -77,6 +85,8 @@ TEST(Choices, AnUnknownNameNamesTheFieldAndEveryAllowedName) {
   EXPECT_EQ(error_for<CrossCheck>("on"), "stability.cross_check: must be auto or off, got 'on'");
   EXPECT_EQ(error_for<TrackingMethod>("minimal"), "tracking method: must be bordered or extended, got 'minimal'");
   EXPECT_EQ(error_for<IntegrationMethod>("rk4"), "method: must be newmark or dopri5, got 'rk4'");
+  EXPECT_EQ(error_for<StopReason>("finished").substr(0, 42), "stop_reason: must be running, reached_end,");
+  EXPECT_NE(error_for<StopReason>("finished").find(" or stopped_by_callback, got 'finished'"), std::string::npos);
   // Names are exact: no case folding, no surrounding blanks.
   EXPECT_NE(error_for<Predictor>("Tangent"), "no error");
   EXPECT_NE(error_for<Predictor>(" tangent"), "no error");

@@ -75,7 +75,7 @@ TEST(Continuation, TangentsRefinedFromNewtonFactorsAgreeWithFreshOnes) {
   const ContinuationResult r = continue_branch(problem, VectorXd::Constant(12, -1.3), 1.0, -1.0, o);
   // The weak coupling splits the m simultaneous folds: the branch turns at the first and
   // returns to lambda = 1 ("left_range"), a limit point on the way.
-  ASSERT_TRUE(r.summary.stop_reason == "left_range" || r.summary.stop_reason == "reached_end") << r.summary.stop_reason;
+  ASSERT_TRUE(r.summary.stop_reason == StopReason::left_range || r.summary.stop_reason == StopReason::reached_end) << r.summary.stop_reason;
   ASSERT_GE(r.special_points.size(), 1u);
   ASSERT_GE(r.points.size(), 20u);
   // Most tangents came from the last Newton step's factors: a fresh LU for every tangent would
@@ -110,7 +110,7 @@ TEST(Continuation, FollowsAFoldAndFlagsBothLimitPoints) {
       o.step_max = 0.05;
       // Start on the lower branch at lambda = 1 (u ~ -1.32), go towards lambda = -1.
       const ContinuationResult r = continue_branch(problem, VectorXd::Constant(1, -1.3), 1.0, -1.0, o);
-      ASSERT_EQ(r.summary.stop_reason, "reached_end") << predictor << "/" << corrector;
+      ASSERT_EQ(r.summary.stop_reason, StopReason::reached_end) << predictor << "/" << corrector;
       // Every point is on the curve.
       for (const BranchPoint& p : r.points) EXPECT_NEAR(p.u(0) * p.u(0) * p.u(0) - p.u(0) + p.lambda, 0.0, 1e-9);
       EXPECT_DOUBLE_EQ(r.points.back().lambda, -1.0);
@@ -128,7 +128,7 @@ TEST(Continuation, ObserverCanInterrupt) {
   ContinuationOptions o;
   const ContinuationResult r =
       continue_branch(problem, VectorXd::Constant(1, -1.3), 1.0, -1.0, o, [](const BranchPoint&, int index) { return index < 4; });
-  EXPECT_EQ(r.summary.stop_reason, "interrupted");
+  EXPECT_EQ(r.summary.stop_reason, StopReason::interrupted);
   EXPECT_EQ(r.points.size(), 5u);
 }
 
@@ -143,7 +143,7 @@ TEST(Continuation, ResumingFromASavedStateRepeatsTheRunExactly) {
   ContinuationRestart saving;
   saving.on_state = [&](const ContinuationState& s) { states.push_back(s); };
   const ContinuationResult whole = continue_within(problem, VectorXd::Constant(1, -1.3), 1.0, window, o, {}, nullptr, saving);
-  ASSERT_EQ(whole.summary.stop_reason, "reached_end");
+  ASSERT_EQ(whole.summary.stop_reason, StopReason::reached_end);
   ASSERT_EQ(whole.special_points.size(), 2u);
   // A state taken before both limit points: the resumed run must find them as the whole run did.
   const int k = 5;
@@ -177,7 +177,7 @@ TEST(Continuation, FailsCleanlyWhenNewtonCannotStart) {
   o.max_iterations = 1;
   o.tolerance = 1e-300;  // unreachable in floating point
   const ContinuationResult r = continue_branch(problem, VectorXd::Constant(1, 5.0), 1.0, -1.0, o);
-  EXPECT_EQ(r.summary.stop_reason, "no_convergence_at_start");
+  EXPECT_EQ(r.summary.stop_reason, StopReason::no_convergence_at_start);
   EXPECT_FALSE(r.success());
 }
 
@@ -202,7 +202,7 @@ TEST(Continuation, AllPredictorCorrectorVariantsGiveTheSameDuffingLimitPoints) {
                                     "continuation.step_max=0.005"});
       HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
       const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs);
-      ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end") << predictor << "/" << corrector;
+      ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end) << predictor << "/" << corrector;
       ASSERT_EQ(r.continuation.special_points.size(), 2u) << predictor << "/" << corrector;
       lps.push_back({r.continuation.special_points[0].lambda, r.continuation.special_points[1].lambda});
     }

@@ -103,7 +103,7 @@ TEST(ContinuationCorners, StepsOntoCornersSharperThanNinetyDegrees) {
   // (step_size_underflow at lambda = 1).
   Zigzag problem;
   const ContinuationResult r = continue_branch(problem, VectorXd::Zero(1), 0.0, 3.0, ContinuationOptions{});
-  ASSERT_EQ(r.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.summary.stop_reason, StopReason::reached_end);
   EXPECT_GE(r.summary.corners_stepped_over, 2);
   double lambda_before = -1;
   bool at_first = false, at_second = false;
@@ -126,7 +126,7 @@ TEST(ContinuationCorners, FollowsLimitPointsAtCorners) {
   // the corners themselves.
   CornerFolds problem;
   const ContinuationResult r = continue_branch(problem, VectorXd::Zero(1), 0.0, 6.0, ContinuationOptions{});
-  ASSERT_EQ(r.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.summary.stop_reason, StopReason::reached_end);
   double u_before = -1;
   for (const BranchPoint& p : r.points) {
     EXPECT_LT(std::abs(p.lambda - problem.g(p.u(0))), 1e-9) << "off the branch at u " << p.u(0);
@@ -155,6 +155,6 @@ TEST(ContinuationCorners, DampedNewtonStartsWherePlainNewtonCycles) {
   EXPECT_GE(newton_at_fixed_parameter(piecewise, u, 0.0, 1e-12, 30), 0);
   EXPECT_NEAR(u(0), 0.0, 1e-12);
   const ContinuationResult r = continue_branch(piecewise, VectorXd::Constant(1, 2.0), 0.0, 1.05, ContinuationOptions{});
-  EXPECT_EQ(r.summary.stop_reason, "reached_end");
+  EXPECT_EQ(r.summary.stop_reason, StopReason::reached_end);
   EXPECT_NEAR(r.points.back().u(0), 1.5, 1e-9);
 }

@@ -47,7 +47,7 @@ TEST(DlftFrequencyResponse, ExampleReachesTheEndOfItsRangeOnTheDirectSolutions) 
   const ContinuationSummary& s = r.continuation.summary;
   std::printf("[ measured ] %d points, %d corners stepped onto or over, %d failed steps, %.2f s\n", s.points, s.corners_stepped_over,
               s.failed_steps, s.wall_s);
-  ASSERT_EQ(s.stop_reason, "reached_end");
+  ASSERT_EQ(s.stop_reason, StopReason::reached_end);
   EXPECT_NEAR(r.recorded.back().omega, c.nfrc.omega_end, 1e-12);
   EXPECT_GT(s.corners_stepped_over, 0) << "the range has corners the plain corrector cannot pass";
   // Newton from the linear solution (damped where plain Newton cycles between patterns) converges

@@ -66,7 +66,7 @@ TEST(Duffing, OneHarmonicPeakMatchesTheAnalyticSolution) {
   double omega_peak, a_peak;
   analytic_peak(omega_peak, a_peak);
   const NfrcResult r = duffing_nfrc(1);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   const Peak p = branch_peak(r);
   // With H = 1 the HBM is the one-term balance: only the peak sampling error remains (O(ds^3)).
   EXPECT_NEAR(p.max_x, a_peak, 1e-4 * a_peak);
@@ -79,7 +79,7 @@ TEST(Duffing, SevenHarmonicPeakDiffersOnlyByTheHigherHarmonics) {
   CaseDefinition c = load_case(test::source_path("examples/duffing.toml"), {"continuation.step=0.01", "continuation.step_max=0.01"});
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   const Peak p = branch_peak(r);
   // |max x - a1| is bounded by the sum of the harmonics above the first at the peak.
   const VectorXd& x = r.continuation.points[static_cast<size_t>(p.index)].u;
@@ -148,7 +148,7 @@ TEST(Duffing, ChordIterationsFindTheSameLimitPointsWithFewerFactorizations) {
     HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
     NfrcResult& r = runs[reuse ? 1 : 0];
     r = compute_nfrc(hbm, c.nfrc, c.outputs);
-    ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end") << (reuse ? "chord" : "newton");
+    ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end) << (reuse ? "chord" : "newton");
     // Every accepted point solves R = 0 to the tolerance, checked here independently.
     const double tolerance = c.nfrc.continuation.tolerance * force_scale(hbm, r.length_scale);
     VectorXd residual;

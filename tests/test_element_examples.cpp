@@ -21,7 +21,7 @@ TEST_P(ElementExample, NfrcReachesTheEndOfItsRange) {
   CaseDefinition c = load_case(test::source_path(std::string("examples/") + GetParam()), sets);
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs);
-  EXPECT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  EXPECT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   ASSERT_FALSE(r.recorded.empty());
   EXPECT_NEAR(r.recorded.back().omega, c.nfrc.omega_end, 1e-9);
 }

@@ -247,7 +247,7 @@ TEST(Continuation, ClosedBranchStopsBackOnItsFirstPoint) {
   o.step = o.step_max = 0.05;
   const ParameterWindow window{-2.0, 2.0, 1, true};
   const ContinuationResult r = continue_within(circle, VectorXd::Constant(1, 0.8), 0.6, window, o);
-  ASSERT_EQ(r.summary.stop_reason, "closed");
+  ASSERT_EQ(r.summary.stop_reason, StopReason::closed);
   EXPECT_TRUE(r.success());
   // Once round: arc 2 pi in steps of at most 0.05, last point = first point.
   double length = 0;
@@ -258,7 +258,7 @@ TEST(Continuation, ClosedBranchStopsBackOnItsFirstPoint) {
   // Without the request it runs into the window instead (here it never leaves: max_points).
   o.max_points = 300;
   const ContinuationResult open = continue_within(circle, VectorXd::Constant(1, 0.8), 0.6, {-2.0, 2.0, 1, false}, o);
-  EXPECT_EQ(open.summary.stop_reason, "max_points");
+  EXPECT_EQ(open.summary.stop_reason, StopReason::max_points);
 }
 
 }  // namespace

@@ -165,7 +165,7 @@ TEST(HarmonicSelection, OddHarmonicDuffingEqualsTheFullBasis) {
   EXPECT_EQ(odd.unknowns(), 8);
   EXPECT_EQ(full.unknowns(), 15);
   const NfrcResult odd_nfrc = compute_nfrc(odd, odd_case.nfrc, odd_case.outputs);
-  ASSERT_EQ(odd_nfrc.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(odd_nfrc.continuation.summary.stop_reason, StopReason::reached_end);
   double worst = 0, worst_even = 0;
   int compared = 0;
   for (size_t i = 0; i < odd_nfrc.continuation.points.size(); i += 3) {

@@ -263,7 +263,7 @@ TEST(HistoryTimeStepping, ThreeOscillatorsMonodromyVerdictsAreTheSimulations) {
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const NfrcResult nfrc = compute_nfrc(hbm, c.nfrc, c.outputs);
   const auto& points = nfrc.continuation.points;
-  ASSERT_EQ(nfrc.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(nfrc.continuation.summary.stop_reason, StopReason::reached_end);
   // The first point past omega = 1.25, and the first past 1.635 after the branch has folded back
   // below 1.628 (the fold at 1.628 is a cluster of sampled-law LPs).
   size_t stays = 0, leaves = 0;

@@ -190,7 +190,7 @@ TEST(Jenkins, NlvibThreeOscillatorFrequencyResponseReachesTheEnd) {
   CaseDefinition c = load_case(test::source_path("examples/three_oscillators_jenkins.toml"));
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   ASSERT_FALSE(r.recorded.empty());
   EXPECT_GE(r.recorded.back().omega, 2.0 - 1e-9);
   // The friction saturates: the response at the largest peak must exceed the slip amplitude

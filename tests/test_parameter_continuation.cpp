@@ -50,7 +50,7 @@ TEST(ParameterContinuation, PassesThroughTheFixedFrequencySolutionAtTheNominalAm
   const double omega = 1.0;  // below the fold region: one solution per amplitude
   // The engine lands exactly on the range's end, amplitude 1 = the case's nominal value.
   const ParameterBranchResult r = continue_in_parameter(hbm, amplitude, omega, 0.1, 1.0, c.nfrc, c.outputs);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   const BranchPoint& last = r.continuation.points.back();
   EXPECT_EQ(last.lambda, 1.0);
   hbm.parameters().value(amplitude) = 1.0;
@@ -71,7 +71,7 @@ TEST(ParameterContinuation, LocatesBothFoldsOfTheAmplitudeSCurveOnTheOneTermOnes
   const CaseDefinition c = duffing(1);  // H = 1 is the one-term balance: folds agree to the tolerance
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const ParameterBranchResult r = continue_in_parameter(hbm, hbm.amplitude_parameter(), omega, 0.05, 3.0, c.nfrc, c.outputs);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   std::vector<double> found;
   for (const SpecialPoint& sp : r.continuation.special_points)
     if (sp.type == "LP") {

@@ -113,8 +113,8 @@ TEST(PeriodDoubling, TheDoubledBranchStartsAtThePdAndSpansTheBand) {
   // The NFRC's PD against the exact one (docs/stability.md: Hill alone within 1.2e-4).
   EXPECT_NEAR(r.pd->lambda, kExactPd1, 1.2e-4 * kExactPd1);
   // Both legs end where the branch rejoins the period-T one: back at this PD, and at the other.
-  EXPECT_EQ(r.branch.through.continuation.summary.stop_reason, "rejoined");
-  EXPECT_EQ(r.branch.away.continuation.summary.stop_reason, "rejoined");
+  EXPECT_EQ(r.branch.through.continuation.summary.stop_reason, StopReason::rejoined);
+  EXPECT_EQ(r.branch.away.continuation.summary.stop_reason, StopReason::rejoined);
   double widest = 0, omega_min = INFINITY, omega_max = -INFINITY, first_share = INFINITY, last_share = INFINITY;
   size_t points = 0;
   bool stable = true;

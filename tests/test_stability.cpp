@@ -54,7 +54,7 @@ TEST(Stability, HillAgreesWithMonodromyOnDuffing) {
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
   const NfrcResult r = nfrc_of("examples/duffing.toml", {"harmonic_balance.harmonics=11", "harmonic_balance.samples=128"}, c, hbm);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   int checked = 0;
   for (size_t i = 0; i < r.continuation.points.size(); i += 7) {
     const BranchPoint& p = r.continuation.points[i];
@@ -75,7 +75,7 @@ TEST(Stability, DuffingIsUnstableExactlyBetweenItsLimitPoints) {
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
   const NfrcResult r = nfrc_of("examples/duffing.toml", {}, c, hbm);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   ASSERT_EQ(r.continuation.special_points.size(), 2u);
   // On this branch (followed with increasing omega) the middle segment between the folds is
   // the one travelled backwards: unstable exactly where d omega / ds < 0.
@@ -155,7 +155,7 @@ TEST(Stability, HillAgreesWithMonodromyOnTheTwoDofContactExample) {
   std::vector<std::string> sets = smooth_two_dof(2.0, 30);
   sets.push_back("stability.method=\"none\"");
   const NfrcResult r = nfrc_of("examples/two_dof_contact.toml", sets, c, hbm);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   int checked = 0, in_contact = 0;
   const int n = 2, h = 30;
   for (size_t i = 0; i < r.continuation.points.size(); i += 5) {
@@ -182,7 +182,7 @@ TEST(Stability, PeriodDoublingFoundWhereTheMonodromyMultipliersShowIt) {
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
   const NfrcResult r = nfrc_of("examples/two_dof_contact.toml", smooth_two_dof(0.05, 20), c, hbm);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   // Brackets where a monodromy multiplier crosses -1 between consecutive points.
   std::vector<size_t> monodromy_pd;
   double previous = 0;
@@ -209,7 +209,7 @@ TEST(Stability, SymmetryBreakingBranchPointsOfCoupledOscillators) {
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
   const NfrcResult r = nfrc_of("examples/coupled_duffing.toml", {}, c, hbm);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   int branch_points = 0;
   for (const SpecialPoint& sp : r.continuation.special_points) {
     if (sp.type != "BP") continue;
@@ -245,7 +245,7 @@ TEST(Stability, ArnoldiFindsTheRightmostHillExponents) {
   std::unique_ptr<HarmonicBalance> hbm;
   const NfrcResult r = nfrc_of("examples/chain_contact.toml",
                                {"harmonic_balance.harmonics=10", "harmonic_balance.samples=128", "stability.method=\"none\""}, c, hbm);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   int unstable = 0, same_members = 0;
   const auto deciding = [](const FloquetResult& f) {
     Eigen::Index largest = 0;
@@ -283,7 +283,7 @@ TEST(Stability, ArnoldiExponentsAreEigenvaluesOfThePencilOnABasisWithoutTheMean)
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
   const NfrcResult r = nfrc_of("examples/chain_contact.toml", {"harmonic_balance.harmonics=[1, 2, 3, 4, 5]", "stability.method=\"none\""}, c, hbm);
-  ASSERT_EQ(r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   int compared = 0;
   for (size_t i = 0; i < r.continuation.points.size(); i += 8) {
     const BranchPoint& p = r.continuation.points[i];

@@ -127,7 +127,7 @@ TEST(StabilityContact, NlvibTwoDofMatchesExactShooting) {
   // run the same paths (Hill, shooting, corners) under the sanitizers.
   if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   const ContactRun run = default_nfrc("examples/nlvib_two_dof_contact.toml");
-  ASSERT_EQ(run.r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(run.r.continuation.summary.stop_reason, StopReason::reached_end);
   EXPECT_NEAR(run.r.recorded.back().omega, 0.5, 1e-12);
   // Points comparable to NLvib's 127 on the same curve (issue 18: within 2x).
   EXPECT_LE(run.r.continuation.summary.points, 2 * 127);
@@ -148,7 +148,7 @@ TEST(StabilityContact, TwoDofContactPeriodDoublesByDefault) {
   ContactRun run;
   if (!hbtrack::test::kSanitizedBuild) {
     run = default_nfrc("examples/two_dof_contact.toml");
-    ASSERT_EQ(run.r.continuation.summary.stop_reason, "reached_end");
+    ASSERT_EQ(run.r.continuation.summary.stop_reason, StopReason::reached_end);
     expect_same_special_points(run, ref, 1e-4);
     expect_same_flags(run, ref, 1, 2e-3);
   } else {
@@ -182,7 +182,7 @@ TEST(StabilityContact, TwoMassChainFoldsMatchExactShooting) {
   const ContactRun run = default_nfrc("examples/chain_contact.toml", {"model.chain.count=2", "elements[0].dofs=[\"x2\"]", "outputs[0].dof=\"x2\"",
                                                                "continuation.omega_start=0.37082039324993692",
                                                                "continuation.omega_end=0.98885438199983171"});
-  ASSERT_EQ(run.r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(run.r.continuation.summary.stop_reason, StopReason::reached_end);
   expect_same_special_points(run, ref, 1e-4);
   expect_same_flags(run, ref, 0, 2e-3);
 }
@@ -199,7 +199,7 @@ TEST(StabilityContact, EightMassChainResolvesItsNarrowFoldPairAtTwentyHarmonics)
   const ContactRun run = default_nfrc("examples/chain_contact.toml", {"harmonic_balance.harmonics=20", "harmonic_balance.samples=320",
                                                                "continuation.omega_start=0.11072203135596238",
                                                                "continuation.omega_end=0.2952587502825664"});
-  ASSERT_EQ(run.r.continuation.summary.stop_reason, "reached_end");
+  ASSERT_EQ(run.r.continuation.summary.stop_reason, StopReason::reached_end);
   expect_same_special_points(run, ref, 5e-5);
   expect_same_flags(run, ref, 0, 1e-3);
 }
@@ -252,7 +252,7 @@ TEST(StabilityContact, HillAloneFindsEveryReferencePointWithItsType) {
                                            std::pair{"examples/two_dof_contact.toml", "two_dof_contact"}}) {
     SCOPED_TRACE(example);
     const ContactRun run = default_nfrc(example, {"stability.cross_check=\"off\""});
-    ASSERT_EQ(run.r.continuation.summary.stop_reason, "reached_end");
+    ASSERT_EQ(run.r.continuation.summary.stop_reason, StopReason::reached_end);
     const Reference ref = load_reference(reference);
     expect_same_special_points(run, ref, 1.5e-3);
     for (const SpecialPoint& sp : run.r.continuation.special_points)

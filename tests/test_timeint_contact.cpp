@@ -144,6 +144,6 @@ TEST(TimeIntegrationContact, StiffPenaltyContactNeedsTheRefinedSteps) {
   NewmarkIntegrator fixed_step(eom, fixed);
   const SteadyStateResult unrefined = simulate(s, fixed_step, 400);
   EXPECT_FALSE(unrefined.converged);
-  std::printf("[ measured ] k = 5e4, fixed step: %s after %d periods, last change %.2e\n", unrefined.stop_reason.c_str(),
+  std::printf("[ measured ] k = 5e4, fixed step: %s after %d periods, last change %.2e\n", to_string(unrefined.stop_reason).c_str(),
               unrefined.periods, unrefined.last_change);
 }

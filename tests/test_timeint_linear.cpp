@@ -145,7 +145,7 @@ TEST(TimeIntegrationLinear, ABudgetTooShortIsReportedAsNotConverged) {
   options.max_periods = 3;
   const SteadyStateResult r = integrate_to_steady_state(integrator, rest_state(1), kOutputs, options);
   EXPECT_FALSE(r.converged);
-  EXPECT_EQ(r.stop_reason, "max_periods");
+  EXPECT_EQ(r.stop_reason, StopReason::max_periods);
   EXPECT_EQ(r.periods, 3);
   EXPECT_GT(r.last_change, options.tolerance);
 }

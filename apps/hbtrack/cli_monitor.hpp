@@ -24,7 +24,7 @@ class CliMonitor final : public runs::RunMonitor {
       progress_.update(p.index, p.omega, rec, outputs_);
     return !stop_.requested();
   }
-  std::string stop_reason(const std::string& reason) const override { return stop_.reason(reason); }
+  StopReason stop_reason(StopReason reason) const override { return stop_.reason(reason); }
 
  private:
   Progress& progress_;

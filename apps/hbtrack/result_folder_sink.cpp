@@ -51,10 +51,10 @@ runs::ResultSink& ResultFolderSink::child(const std::string& name) {
   return *children_.back();
 }
 
-void ResultFolderSink::require_unfinished(const std::vector<std::string>& finished) const {
+void ResultFolderSink::require_unfinished(const std::vector<StopReason>& finished) const {
   if (!std::filesystem::exists(dir_ + "/summary.json")) return;  // killed before its first summary: the checkpoint decides
   const std::string reason = read_summary(dir_).value("stop_reason", "");
-  if (std::find(finished.begin(), finished.end(), reason) != finished.end())
+  if (std::any_of(finished.begin(), finished.end(), [&](StopReason f) { return to_string(f) == reason; }))
     throw CaseError("--resume: " + dir_ + " finished (" + reason + "), nothing to resume");
 }
 

@@ -22,7 +22,7 @@ class ResultFolderSink final : public runs::ResultSink {
   ResultSink& child(const std::string& name) override;
   std::string location() const override { return dir_; }
   bool resuming() const override { return resume_; }
-  void require_unfinished(const std::vector<std::string>& finished) const override;
+  void require_unfinished(const std::vector<StopReason>& finished) const override;
   std::string checkpoint_path() const override { return dir_ + "/checkpoint.json"; }
 
  private:

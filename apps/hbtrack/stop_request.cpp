@@ -10,8 +10,8 @@ bool StopRequest::requested() {
   return timed_out_;
 }
 
-std::string StopRequest::reason(const std::string& engine_reason) const {
-  return engine_reason == "interrupted" && timed_out_ && !interrupted() ? "time_limit" : engine_reason;
+StopReason StopRequest::reason(StopReason engine_reason) const {
+  return engine_reason == StopReason::interrupted && timed_out_ && !interrupted() ? StopReason::time_limit : engine_reason;
 }
 
 void add_time_limit_option(CLI::App* command, double& seconds) {

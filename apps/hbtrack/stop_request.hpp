@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli_common.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 
 namespace hbtrack::cli {
 
@@ -13,7 +14,7 @@ class StopRequest {
   // True once a signal arrived or the time is up: the observer returns !requested().
   bool requested();
   // The engine reports a stop asked by its observer as "interrupted"; this names which one.
-  std::string reason(const std::string& engine_reason) const;
+  StopReason reason(StopReason engine_reason) const;
 
  private:
   Clock::time_point start_ = Clock::now();

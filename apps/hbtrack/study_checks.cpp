@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "hbtrack/util/stop_reason.hpp"
+
 namespace hbtrack::cli {
 
 using nlohmann::json;
@@ -18,8 +20,8 @@ json failed_checks(const json& s) {
   // The nominal NFRC must cover its range: stopped early (max_points, say) it may not have
   // reached every limit point, and the study would track and validate only some of them.
   if (s.contains("nfrc")) {
-    const std::string reason = s["nfrc"].value("stop_reason", "reached_end");
-    if (reason != "reached_end")
+    const std::string reason = s["nfrc"].value("stop_reason", to_string(StopReason::reached_end));
+    if (reason != to_string(StopReason::reached_end))
       failed.push_back("nfrc: the nominal NFRC stopped before the end of its range (" + reason +
                        "), so the study may miss limit points and what they lead to");
   }
@@ -27,7 +29,7 @@ json failed_checks(const json& s) {
     for (const auto& v : t.value("validations", json::array())) {
       const std::string folder = v.value("folder", "");
       const std::string reason = v.value("stop_reason", "");
-      if (reason != "reached_end")
+      if (reason != to_string(StopReason::reached_end))
         failed.push_back(folder + ": the validation NFRC did not reach the end of its range (" + (reason.empty() ? "no result" : reason) +
                          "), so its limit points cannot all be compared");
       const int off = v.value("lps_off_the_curves", 0);

@@ -7,6 +7,7 @@
 #include "folder_lock.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/input_file.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 #include "result_folder.hpp"
 #include "sweep_table.hpp"
 
@@ -47,7 +48,8 @@ std::map<std::string, json> steps_to_resume(const std::string& dir, const json& 
   const std::string where = dir + "/summary.json";
   if (s.value("verb", "") != "study") throw CaseError("--resume: " + where + ": not a study's summary (verb '" + s.value("verb", "") + "')");
   const std::string reason = s.value("stop_reason", "");
-  if (reason == "completed" || reason == "checks_failed") throw CaseError("--resume: " + dir + " finished (" + reason + "), nothing to resume");
+  if (reason == to_string(StopReason::completed) || reason == to_string(StopReason::checks_failed))
+    throw CaseError("--resume: " + dir + " finished (" + reason + "), nothing to resume");
   if (!s.contains("settings"))
     throw CaseError("--resume: " + where + ": no settings (a study of an older hbtrack, which cannot resume); run it again with -o");
   if (s["settings"] != settings)

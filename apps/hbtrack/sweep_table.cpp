@@ -9,6 +9,7 @@
 
 #include "cli_common.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -72,7 +73,8 @@ bool finished_result(const std::string& folder) {
   if (!std::filesystem::exists(folder + "/summary.json")) return false;
   try {
     const std::string reason = read_summary(folder).value("stop_reason", "");
-    return !reason.empty() && reason != "running" && reason != "interrupted" && reason != "time_limit";
+    return !reason.empty() && reason != to_string(StopReason::running) && reason != to_string(StopReason::interrupted) &&
+           reason != to_string(StopReason::time_limit);
   } catch (const CaseError&) {
     return false;  // half-written by a killed run
   }

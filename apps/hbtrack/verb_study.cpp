@@ -23,6 +23,7 @@
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 #include "python_package.hpp"
 #include "result_folder.hpp"
 #include "step_progress.hpp"
@@ -99,7 +100,7 @@ class Study {
     const json settings = study_settings(o_.common.case_path, o_.common.sets, o_.only);
     if (resuming) previous_ = steps_to_resume(dir_, settings);
     summary_ = {{"verb", "study"},         {"case", o_.common.case_path}, {"jobs", runner_.slots()},
-                {"runner", runner_.description()}, {"settings", settings},        {"stop_reason", "running"},
+                {"runner", runner_.description()}, {"settings", settings},        {"stop_reason", to_string(StopReason::running)},
                 {"steps", json::array()}};
     if (resuming) summary_["resumed_steps"] = 0;
     save();
@@ -112,7 +113,7 @@ class Study {
     figures();
     const json failed = failed_checks(summary_);
     summary_["failed_checks"] = failed;
-    summary_["stop_reason"] = !ok ? stop_reason_ : failed.empty() ? "completed" : "checks_failed";
+    summary_["stop_reason"] = !ok ? stop_reason_ : to_string(failed.empty() ? StopReason::completed : StopReason::checks_failed);
     summary_["timings"] = {{"wall_s", seconds_since(t0)}};
     save();
     write_study_report(dir_, summary_);
@@ -130,7 +131,7 @@ class Study {
   // Runs independent steps side by side; false when the study cannot go on.
   bool run_steps(const std::vector<Step>& steps) {
     if (steps.empty()) return true;
-    if (interrupted()) return stop("interrupted");
+    if (interrupted()) return stop(to_string(StopReason::interrupted));
     // On a terminal the steps' progress shows on the study's line (step_progress.hpp).
     StepProgressRelay relay(!o_.common.quiet && isatty(STDERR_FILENO));
     std::vector<ChildTask> tasks;
@@ -182,7 +183,7 @@ class Study {
     });
     for (size_t k = 0; k < todo.size(); ++k) codes[todo[k]] = ran[k];
     for (size_t i = 0; i < steps.size(); ++i) {
-      if (interrupted() || codes[i] >= 128 || codes[i] == kTaskNotStarted) return stop("interrupted");
+      if (interrupted() || codes[i] >= 128 || codes[i] == kTaskNotStarted) return stop(to_string(StopReason::interrupted));
       if (codes[i] == 0 || (codes[i] == 1 && !steps[i].must_succeed)) continue;
       return stop(steps[i].folder + " failed (exit " + std::to_string(codes[i]) + ", see " + dir_ + "/" + steps[i].folder + "/log.txt)");
     }

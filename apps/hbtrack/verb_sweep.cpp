@@ -13,6 +13,7 @@
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 #include "result_folder.hpp"
 #include "sweep_definition.hpp"
 #include "sweep_table.hpp"
@@ -67,7 +68,7 @@ class Sweep {
   int run() {
     const auto t0 = Clock::now();
     summary_ = {{"verb", "sweep"}, {"case", o_.common.case_path}, {"tasks", grid_.tasks.size()}, {"runner", runner_.description()},
-                {"stop_reason", "running"}, {"computed", 0}, {"skipped", 0}, {"task_wall_s", 0.0}};
+                {"stop_reason", to_string(StopReason::running)}, {"computed", 0}, {"skipped", 0}, {"task_wall_s", 0.0}};
     save();
     if (!o_.common.quiet)
       std::fprintf(stderr, "sweep: %zu tasks on %s -> %s\n", grid_.tasks.size(), runner_.description().c_str(), dir_.c_str());
@@ -77,7 +78,8 @@ class Sweep {
     size_t missing = 0;
     for (size_t i = 0; i < grid_.tasks.size(); ++i)
       if (!task_finished(i)) ++missing;
-    summary_["stop_reason"] = interrupted() ? "interrupted" : missing > 0 ? "tasks_failed" : "completed";
+    summary_["stop_reason"] =
+        to_string(interrupted() ? StopReason::interrupted : missing > 0 ? StopReason::tasks_failed : StopReason::completed);
     summary_["unfinished"] = missing;
     summary_["timings"] = {{"wall_s", seconds_since(t0)}};
     save();

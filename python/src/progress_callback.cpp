@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "hbtrack/util/stop_reason.hpp"
+
 namespace hbtrack::python {
 
 bool ProgressCallback::operator()(double fraction, int point, double value) {
@@ -27,7 +29,7 @@ void ProgressCallback::rethrow() {
 }
 
 void ProgressCallback::mark(py::dict& out) const {
-  if (stopped_) out["summary"]["stop_reason"] = "stopped_by_callback";
+  if (stopped_) out["summary"]["stop_reason"] = to_string(StopReason::stopped_by_callback);
 }
 
 }  // namespace hbtrack::python

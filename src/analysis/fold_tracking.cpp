@@ -16,12 +16,24 @@ void FoldTrackingOptions::validate() const {
   continuation.validate();
 }
 
-std::string FoldTrackingResult::failure() const {
-  if (legs.empty()) return "not_started";
-  for (const ContinuationSummary& s : legs)
-    if (s.stop_reason != "reached_end" && s.stop_reason != "left_range" && s.stop_reason != "closed" && s.stop_reason != "max_points")
-      return s.stop_reason;
-  return "";
+StopReason FoldTrackingResult::stop_reason() const {
+  if (legs.empty()) return StopReason::not_started;
+  bool capped = false;
+  for (const ContinuationSummary& s : legs) {
+    switch (s.stop_reason) {
+      case StopReason::reached_end:
+      case StopReason::left_range:
+      case StopReason::closed: break;
+      case StopReason::max_points: capped = true; break;
+      default: return s.stop_reason;
+    }
+  }
+  return closed ? StopReason::closed : capped ? StopReason::max_points : StopReason::completed;
+}
+
+bool FoldTrackingResult::success() const {
+  const StopReason reason = stop_reason();
+  return reason == StopReason::closed || reason == StopReason::max_points || reason == StopReason::completed;
 }
 
 namespace {
@@ -145,11 +157,11 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
       e.recorded = record_point(hbm, e.x, e.omega, outputs);
       result.extrema.push_back(std::move(e));
     }
-    if (c.summary.stop_reason == "closed") {
+    if (c.summary.stop_reason == StopReason::closed) {
       result.closed = true;
       break;
     }
-    if (stopped || c.summary.stop_reason == "no_convergence_at_start") break;
+    if (stopped || c.summary.stop_reason == StopReason::no_convergence_at_start) break;
   }
   hbm.parameters().value(parameter) = gamma0;
   return result;
@@ -204,8 +216,9 @@ std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, 
         cand.status = "located";
       } else {
         cand.branch = compute_branch(hbm, options, outputs, cand.start.x, cand.start.omega, window, observer);
-        const std::string& reason = cand.branch.continuation.summary.stop_reason;
-        cand.status = reason == "closed" ? "isola" : (reason == "reached_end" || reason == "left_range") ? "open" : "failed";
+        const StopReason reason = cand.branch.continuation.summary.stop_reason;
+        const bool open = reason == StopReason::reached_end || reason == StopReason::left_range;
+        cand.status = reason == StopReason::closed ? "isola" : open ? "open" : "failed";
       }
       out.push_back(std::move(cand));
     }

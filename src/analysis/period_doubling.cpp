@@ -74,8 +74,8 @@ SwitchedBranch switch_at_period_doubling(HarmonicBalance& doubled, const Fourier
     return !leg_observer || leg_observer(p, rec, index);
   };
   SwitchedBranch s = switch_at_branch_point(doubled, options, outputs, x, omega_pd, direction, true, true, stop_at_rejoin);
-  if (rejoined.size() > 0 && rejoined[0]) s.away.continuation.summary.stop_reason = "rejoined";
-  if (rejoined.size() > 1 && rejoined[1]) s.through.continuation.summary.stop_reason = "rejoined";
+  if (rejoined.size() > 0 && rejoined[0]) s.away.continuation.summary.stop_reason = StopReason::rejoined;
+  if (rejoined.size() > 1 && rejoined[1]) s.through.continuation.summary.stop_reason = StopReason::rejoined;
   return s;
 }
 

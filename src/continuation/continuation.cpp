@@ -32,7 +32,8 @@ void ContinuationOptions::validate() const {
 }
 
 bool ContinuationResult::success() const {
-  return summary.stop_reason == "reached_end" || summary.stop_reason == "max_points" || summary.stop_reason == "closed";
+  return summary.stop_reason == StopReason::reached_end || summary.stop_reason == StopReason::max_points ||
+         summary.stop_reason == StopReason::closed;
 }
 
 ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
@@ -53,7 +54,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
   ContinuationResult result;
   continuation_detail::ContinuationStepper stepper(problem, u0, window, options, monitor);
-  auto finish = [&](const std::string& reason) {
+  auto finish = [&](StopReason reason) {
     result.summary = stepper.summary();
     result.summary.stop_reason = reason;
     result.summary.wall_s = elapsed();
@@ -70,16 +71,16 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     stepper.resume(*restart.resume_from);
   } else {
     BranchPoint first;
-    if (!stepper.start(u0, lambda_start, first)) return finish("no_convergence_at_start");
-    if (!accept(std::move(first))) return finish("interrupted");
+    if (!stepper.start(u0, lambda_start, first)) return finish(StopReason::no_convergence_at_start);
+    if (!accept(std::move(first))) return finish(StopReason::interrupted);
   }
   while (true) {
     if (restart.on_state) restart.on_state(stepper.state());
-    if (stepper.points() >= options.max_points) return finish("max_points");
-    if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return finish("time_limit");
+    if (stepper.points() >= options.max_points) return finish(StopReason::max_points);
+    if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return finish(StopReason::time_limit);
     continuation_detail::ContinuationStepper::Outcome step = stepper.step();
-    if (step.point && !accept(std::move(*step.point))) return finish("interrupted");
-    if (!step.stop_reason.empty()) return finish(step.stop_reason);
+    if (step.point && !accept(std::move(*step.point))) return finish(StopReason::interrupted);
+    if (step.stop_reason) return finish(*step.stop_reason);
   }
 }
 

@@ -103,7 +103,7 @@ TestValues ContinuationStepper::test_values(const BranchPoint& p, const Tangent&
   return v;
 }
 
-ContinuationStepper::Outcome ContinuationStepper::emit(BranchPoint point, const std::string& stop_reason) {
+ContinuationStepper::Outcome ContinuationStepper::emit(BranchPoint point, std::optional<StopReason> stop_reason) {
   ++points_;
   return Outcome{std::move(point), stop_reason};
 }
@@ -162,7 +162,8 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
     if (!converged) ++summary_.failed_steps;
     ++summary_.step_halvings;
     ds_ *= 0.5;
-    if (ds_ < options_.step_min) return {std::nullopt, converged ? "step_size_underflow_on_curvature" : "step_size_underflow"};
+    if (ds_ < options_.step_min)
+      return {std::nullopt, converged ? StopReason::step_size_underflow_on_curvature : StopReason::step_size_underflow};
     return {};
   }
   if (through_corner || onto_corner) ++summary_.corners_stepped_over;
@@ -181,7 +182,7 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
   const bool beyond_back = (lambda - lambda_back_) * direction_ < 0;
   if (beyond_end || beyond_back) {
     const double bound = beyond_end ? lambda_end_ : lambda_back_;
-    const std::string reason = beyond_end ? "reached_end" : "left_range";
+    const StopReason reason = beyond_end ? StopReason::reached_end : StopReason::left_range;
     const double lambda_before = s_.parameter(x_before_);
     const double f = (bound - lambda_before) / (lambda - lambda_before);
     VectorXd u_end = s_.unknowns(x_before_ + f * (x_ - x_before_));
@@ -190,7 +191,7 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
     summary_.newton_iterations += it;
     return emit({u_end, bound, t_, it, arc * f}, reason);
   }
-  if (BranchPoint closing; window_.stop_when_closed && closes_on_first_point(y, closing)) return emit(closing, "closed");
+  if (BranchPoint closing; window_.stop_when_closed && closes_on_first_point(y, closing)) return emit(closing, StopReason::closed);
   Outcome out = emit(point);
 
   s_.rescale(s_.unknowns(x_), {&x_, &x_before_}, t_);

@@ -15,10 +15,10 @@ namespace hbtrack::continuation_detail {
 class ContinuationStepper {
  public:
   // What one call to step() did: the point to accept (none when the step was rejected and
-  // halved), and the stop reason when the branch ends there ("" to go on).
+  // halved), and the stop reason when the branch ends there (none to go on).
   struct Outcome {
     std::optional<BranchPoint> point;
-    std::string stop_reason;
+    std::optional<StopReason> stop_reason;
   };
 
   // u_for_scale: a point near the start, for the first scaling of the unknowns.
@@ -46,7 +46,7 @@ class ContinuationStepper {
   // With window.stop_when_closed: true when the step to y passed the first point, with the copy
   // of it that ends the branch in `closing`.
   bool closes_on_first_point(const VectorXd& y, BranchPoint& closing);
-  Outcome emit(BranchPoint point, const std::string& stop_reason = "");
+  Outcome emit(BranchPoint point, std::optional<StopReason> stop_reason = std::nullopt);
 
   Scaled s_;
   const ParameterWindow window_;

@@ -104,6 +104,16 @@ ContinuationState state_from_json(const json& j) {
   return s;
 }
 
+// The leg's stop_reason, one of the names; another is bad input naming the field (a
+// std::runtime_error, which read_checkpoint prefixes with the path).
+StopReason stop_reason_from_json(const json& leg, const std::string& where) {
+  try {
+    return parse_stop_reason(leg.at("stop_reason").get<std::string>(), where + ".stop_reason");
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(e.what());
+  }
+}
+
 // Parses path as a checkpoint of `format`; read(document) builds the result. Errors name the path.
 template <class Read>
 auto read_checkpoint(const std::string& path, int format, Read read) {
@@ -139,7 +149,7 @@ void write_tracking_state(const std::string& path, const FoldTrackingState& stat
   json legs = json::array();
   for (const ContinuationSummary& leg : state.finished_legs) {
     json j = summary_json(leg);
-    j["stop_reason"] = leg.stop_reason;
+    j["stop_reason"] = to_string(leg.stop_reason);
     j["wall_s"] = leg.wall_s;
     legs.push_back(j);
   }
@@ -170,7 +180,7 @@ SavedTracking read_tracking_state(const std::string& path) {
     s.lambda_slopes = t.at("lambda_slopes").get<std::vector<double>>();
     for (const json& leg : t.at("finished_legs")) {
       ContinuationSummary summary = summary_from_json(leg);
-      summary.stop_reason = leg.at("stop_reason").get<std::string>();
+      summary.stop_reason = stop_reason_from_json(leg, "tracking.finished_legs[" + std::to_string(s.finished_legs.size()) + "]");
       summary.wall_s = leg.at("wall_s").get<double>();
       s.finished_legs.push_back(summary);
     }

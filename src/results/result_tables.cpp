@@ -172,7 +172,7 @@ std::vector<double> state_row(double omega, const Eigen::VectorXd& x) {
 }
 
 void add_continuation_counts(json& summary, const ContinuationSummary& s) {
-  summary["stop_reason"] = s.stop_reason;
+  summary["stop_reason"] = to_string(s.stop_reason);
   summary["points"] = s.points;
   summary["newton_iterations"] = s.newton_iterations;
   summary["failed_steps"] = s.failed_steps;
@@ -229,7 +229,7 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   int newton = 0, jacobians = 0, residuals = 0, factorizations = 0, chords = 0;
   for (size_t i = 0; i < r.legs.size(); ++i) {
     const ContinuationSummary& s = r.legs[i];
-    legs.push_back({{"leg", i + 1}, {"towards", i == 0 ? "min" : "max"}, {"stop_reason", s.stop_reason}, {"points", s.points},
+    legs.push_back({{"leg", i + 1}, {"towards", i == 0 ? "min" : "max"}, {"stop_reason", to_string(s.stop_reason)}, {"points", s.points},
                     {"newton_iterations", s.newton_iterations}, {"failed_steps", s.failed_steps},
                     {"jacobian_evaluations", s.jacobian_evaluations}, {"chord_iterations", s.chord_iterations},
                     {"residual_evaluations", s.residual_evaluations}, {"factorizations", s.factorizations}, {"wall_s", s.wall_s}});
@@ -245,9 +245,7 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
     add_outputs(j, c, e.recorded);
     special.push_back(j);
   }
-  // A leg cut at continuation.max_points leaves the curve incomplete: not "completed".
-  const bool capped = std::any_of(r.legs.begin(), r.legs.end(), [](const ContinuationSummary& s) { return s.stop_reason == "max_points"; });
-  summary["stop_reason"] = !r.success() ? r.failure() : r.closed ? "closed" : capped ? "max_points" : "completed";
+  summary["stop_reason"] = to_string(r.stop_reason());
   summary["closed"] = r.closed;
   summary["legs"] = legs;
   summary["points"] = r.curve_points();
@@ -290,7 +288,7 @@ std::vector<std::vector<double>> signals_rows(const SteadyStateResult& r) {
 void add_simulation_summary(json& summary, const CaseDefinition& c, const SteadyStateResult& r) {
   summary["converged"] = r.converged;
   summary["periods"] = r.periods;
-  summary["stop_reason"] = r.stop_reason;
+  summary["stop_reason"] = to_string(r.stop_reason);
   if (!r.message.empty()) summary["message"] = r.message;
   summary["last_change"] = r.last_change;
   summary["steps"] = r.statistics.steps;

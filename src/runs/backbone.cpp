@@ -23,7 +23,7 @@ RunReport backbone(CaseDefinition c, BackboneOptions options, ResultSink& sink, 
   c.harmonic_balance.condensation = Condensation::none;
   HarmonicBalance hbm = make_system(c);
   options.continuation = c.nfrc.continuation;
-  json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["backbone"] = backbone_options_json(options);
   sink.open();
   const auto branch = sink.table("branch", backbone_header(c, hbm.basis().harmonic_numbers()));
@@ -42,13 +42,13 @@ RunReport backbone(CaseDefinition c, BackboneOptions options, ResultSink& sink, 
       return monitor.point({index, point.omega, point.amplitude, 0, coverage.add(p.lambda), &point.recorded});
     });
   } catch (const std::runtime_error& e) {
-    summary["stop_reason"] = "no_convergence";
+    summary["stop_reason"] = to_string(StopReason::no_convergence);
     summary["points"] = 0;
     sink.summary(summary);
     throw;
   }
   const auto& s = r.continuation.summary;
-  const std::string stop_reason = monitor.stop_reason(s.stop_reason);
+  const std::string stop_reason = to_string(monitor.stop_reason(s.stop_reason));
   add_backbone_summary(summary, c, hbm, r);
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};

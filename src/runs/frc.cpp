@@ -21,11 +21,13 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   const auto t0 = RunClock::now();
   HarmonicBalance hbm = make_system(c);
   if (options.start) options.start->require_unknowns(hbm.unknowns());
-  json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   if (!options.started_from.is_null()) summary["started_from"] = options.started_from;
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedContinuation> resumed;
-  if (sink.resuming()) resumed = checkpoint_to_resume(sink, {"reached_end", "left_range", "closed"}, settings, read_continuation_state);
+  if (sink.resuming())
+    resumed = checkpoint_to_resume(sink, {StopReason::reached_end, StopReason::left_range, StopReason::closed}, settings,
+                                   read_continuation_state);
   sink.open();
   // A resumed run appends to the tables the checkpoint covers.
   const int rows_kept = resumed ? resumed->state.points : 0;
@@ -53,7 +55,7 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
     r = compute_branch(hbm, c.nfrc, c.outputs, options.start->x, from, window, record, restart);
   }
   const auto& s = r.continuation.summary;
-  const std::string stop_reason = monitor.stop_reason(s.stop_reason);
+  const std::string stop_reason = to_string(monitor.stop_reason(s.stop_reason));
   add_nfrc_summary(summary, c, hbm, r);
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};

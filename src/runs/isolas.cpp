@@ -37,7 +37,7 @@ RunReport isolas(const CaseDefinition& c, const IsolaOptions& o, ResultSink& sin
   hbm.parameters().value(parameter) = o.at;
   const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
   sink.open();
-  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   json& options = summary["options"]["isolas"] = o.origin;
   options["parameter"] = o.parameter;
   options["at"] = o.at;
@@ -80,7 +80,7 @@ RunReport isolas(const CaseDefinition& c, const IsolaOptions& o, ResultSink& sin
     }
     crossings.push_back(j);
   }
-  summary["stop_reason"] = "completed";
+  summary["stop_reason"] = to_string(StopReason::completed);
   summary["crossings"] = crossings;
   summary["isolas"] = isola_count;
   summary["timings"] = {{"wall_s", seconds_since(t0)}};

@@ -20,7 +20,7 @@ RunReport continue_in_parameter(const CaseDefinition& c, const ParameterBranchOp
   if (!std::isfinite(o.start) || !std::isfinite(o.end) || o.start == o.end) throw CaseError("--range: LO and HI must be finite and differ");
   HarmonicBalance hbm = make_system(c);
   const int parameter = parameter_index(hbm.parameters(), o.parameter, "--param");
-  json summary = {{"verb", "continue"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "continue"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["continue"] = parameter_continuation_options(o.parameter, o.omega, o.start, o.end);
   sink.open();
   const auto branch = sink.table("branch", parameter_branch_header(c, o.parameter));
@@ -43,14 +43,14 @@ RunReport continue_in_parameter(const CaseDefinition& c, const ParameterBranchOp
                                 return monitor.point({index, o.omega, p.lambda, 0, coverage.add(p.lambda), &point.recorded});
                               });
   } catch (const std::runtime_error& e) {
-    summary["stop_reason"] = "no_convergence";
+    summary["stop_reason"] = to_string(StopReason::no_convergence);
     summary["points"] = 0;
     sink.summary(summary);
     throw;
   }
   hbm.parameters().value(parameter) = nominal;
   const auto& s = r.continuation.summary;
-  const std::string stop_reason = monitor.stop_reason(s.stop_reason);
+  const std::string stop_reason = to_string(monitor.stop_reason(s.stop_reason));
   add_parameter_branch_summary(summary, c, hbm, r, parameter);
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}};

@@ -44,7 +44,7 @@ RunReport simulate(const CaseDefinition& c, const SimulateOptions& o, ResultSink
   HarmonicBalance hbm = make_system(c);
   const int n = c.model.dofs();
   MotionState initial = rest_state(n);
-  json summary = {{"verb", "simulate"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "simulate"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   double omega = o.omega.value_or(0.0);
   Eigen::VectorXd orbit;  // harmonics of every dof of the start orbit
   if (o.start) {
@@ -88,16 +88,17 @@ RunReport simulate(const CaseDefinition& c, const SimulateOptions& o, ResultSink
   const auto signals = sink.table("signals", signals_header(c));
   for (const std::vector<double>& row : signals_rows(r)) signals->append(row);
   add_simulation_summary(summary, c, r);
-  summary["stop_reason"] = monitor.stop_reason(r.stop_reason);
+  summary["stop_reason"] = to_string(monitor.stop_reason(r.stop_reason));
   summary["outputs"] = outputs_json(c);
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"integration_s", integration_s}};
   sink.summary(summary);
 
   RunReport report{summary};
   if (!r.converged) {
-    const std::string why = r.stop_reason == "max_periods" ? "no periodic steady state within " + std::to_string(r.periods) +
-                                                                 " periods (last change " + std::to_string(r.last_change) + ")"
-                                                           : r.stop_reason + (r.message.empty() ? "" : ": " + r.message);
+    const std::string why = r.stop_reason == StopReason::max_periods
+                                ? "no periodic steady state within " + std::to_string(r.periods) + " periods (last change " +
+                                      std::to_string(r.last_change) + ")"
+                                : to_string(r.stop_reason) + (r.message.empty() ? "" : ": " + r.message);
     report.failure = "simulate stopped: " + why + " (kept in " + sink.location() + ")";
   } else {
     char brief[200];

@@ -22,7 +22,7 @@ RunReport solve(const CaseDefinition& c, double omega, ResultSink& sink) {
                   {"options", options_json(c, hbm)},
                   {"omega", omega},
                   {"converged", s.converged},
-                  {"stop_reason", s.converged ? "converged" : "no_convergence"},
+                  {"stop_reason", to_string(s.converged ? StopReason::converged : StopReason::no_convergence)},
                   {"points", s.converged ? 1 : 0},
                   // A failed solve spent every iteration it was allowed (the message says so).
                   {"newton_iterations", s.converged ? s.newton_iterations : 4 * co.max_iterations},

@@ -29,7 +29,7 @@ RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o
   known.head(hbm.unknowns()) = o.after.x - o.before.x;
   known(hbm.unknowns()) = o.after.omega - o.before.omega;
   sink.open();
-  json summary = {{"verb", "switch"}, {"options", options_json(c, system)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "switch"}, {"options", options_json(c, system)}, {"stop_reason", to_string(StopReason::running)}};
   json& options = summary["options"]["switch"] = o.origin;
   options.update({{"point", o.point}, {"type", o.type}, {"omega", o.at.omega}});
   sink.summary(summary);
@@ -53,7 +53,7 @@ RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o
     s = o.type == "PD" ? switch_at_period_doubling(system, hbm.basis(), c.nfrc, c.outputs, o.at.x, omega, known, observer)
                        : switch_at_branch_point(system, c.nfrc, c.outputs, o.at.x, omega, known, true, false, observer);
   } catch (const std::runtime_error&) {
-    summary["stop_reason"] = "no_convergence";
+    summary["stop_reason"] = to_string(StopReason::no_convergence);
     sink.summary(summary);
     throw;
   }
@@ -86,12 +86,12 @@ RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o
   summary["newton_iterations"] = a.newton_iterations + b.newton_iterations;
   summary["failed_steps"] = a.failed_steps + b.failed_steps;
   summary["step_halvings"] = a.step_halvings + b.step_halvings;
-  summary["legs"] = {{{"name", "through"}, {"stop_reason", b.stop_reason}, {"points", b.points}},
-                     {{"name", "away"}, {"stop_reason", a.stop_reason}, {"points", a.points}}};
+  summary["legs"] = {{{"name", "through"}, {"stop_reason", to_string(b.stop_reason)}, {"points", b.points}},
+                     {{"name", "away"}, {"stop_reason", to_string(a.stop_reason)}, {"points", a.points}}};
   // A period-doubled leg ends where it rejoins the period-T branch (at a PD of the band).
-  const bool away_ok = s.away.continuation.success() || a.stop_reason == "rejoined";
-  const bool ok = away_ok && (s.through.continuation.success() || b.stop_reason == "rejoined");
-  summary["stop_reason"] = ok ? "completed" : monitor.stop_reason(away_ok ? b.stop_reason : a.stop_reason);
+  const bool away_ok = s.away.continuation.success() || a.stop_reason == StopReason::rejoined;
+  const bool ok = away_ok && (s.through.continuation.success() || b.stop_reason == StopReason::rejoined);
+  summary["stop_reason"] = to_string(ok ? StopReason::completed : monitor.stop_reason(away_ok ? b.stop_reason : a.stop_reason));
   summary["timings"] = {{"wall_s", seconds_since(t0)}};
   sink.summary(summary);
   RunReport report{summary};

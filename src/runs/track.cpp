@@ -37,7 +37,7 @@ std::vector<std::string> tracking_warnings(const FoldTrackingResult& r, const Tr
   std::vector<std::string> warnings =
       extremum_pairs_below_resolution(r.extrema, o.parameter, o.parameter_max - o.parameter_min, omega_high - omega_low);
   for (const ContinuationSummary& leg : r.legs)
-    if (leg.stop_reason == "max_points")
+    if (leg.stop_reason == StopReason::max_points)
       warnings.push_back("a leg stopped at continuation.max_points after " + std::to_string(leg.points) +
                          " points, before the range's end: the curve is incomplete (rerun with a larger --set continuation.max_points)");
   return warnings;
@@ -60,14 +60,14 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   tracking.method = o.method;
   tracking.continuation = c.nfrc.continuation;
 
-  json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", "running"}};
+  json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   json& options = summary["options"]["tracking"] = o.origin;
   options["parameter"] = o.parameter;
   options["method"] = to_string(o.method);
   options["range"] = {o.parameter_min, o.parameter_max};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedTracking> resumed;
-  if (sink.resuming()) resumed = checkpoint_to_resume(sink, {"completed", "closed"}, settings, read_tracking_state);
+  if (sink.resuming()) resumed = checkpoint_to_resume(sink, {StopReason::completed, StopReason::closed}, settings, read_tracking_state);
   sink.open();
   const int rows_kept = resumed ? resumed->state.curve_points : 0;
   const TableStart start{resumed.has_value(), rows_kept};
@@ -108,7 +108,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
       restart);
   add_tracking_summary(summary, c, r, o.parameter);
   summary["warnings"] = tracking_warnings(r, o, o.start.omega);
-  const std::string failure = monitor.stop_reason(r.failure());
+  const std::string failure = to_string(monitor.stop_reason(r.stop_reason()));
   if (!r.success()) summary["stop_reason"] = failure;
   summary["start"] = {{"omega", o.start.omega}, {o.parameter, start_value}};
   summary["timings"] = {{"wall_s", seconds_since(t0)}};

@@ -82,7 +82,7 @@ bool DormandPrinceIntegrator::advance_to(double t) {
       ++statistics_.steps;
       const OdeState& y = s.dense.current_state();
       if (!Eigen::Map<const Eigen::VectorXd>(y.data(), 2 * n).allFinite()) {
-        failure_ = {"diverged", "non-finite state at t = " + std::to_string(s.dense.current_time())};
+        failure_ = {StopReason::diverged, "non-finite state at t = " + std::to_string(s.dense.current_time())};
         return false;
       }
       // The step is accepted: history elements move on to its end (every stage of the step,
@@ -91,7 +91,7 @@ bool DormandPrinceIntegrator::advance_to(double t) {
     }
   } catch (const std::exception& e) {
     // odeint gives up after repeated step-size reductions (step_adjustment_error).
-    failure_ = {"integration_failure", std::string("Dormand-Prince step failed: ") + e.what()};
+    failure_ = {StopReason::integration_failure, std::string("Dormand-Prince step failed: ") + e.what()};
     return false;
   }
   return true;

@@ -117,12 +117,12 @@ bool NewmarkIntegrator::solve_step(double t_next) {
                                        load_.lpNorm<Eigen::Infinity>()});
     const double error = residual_.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(error)) {
-      failure_ = {"diverged", "non-finite forces at t = " + std::to_string(t_next)};
+      failure_ = {StopReason::diverged, "non-finite forces at t = " + std::to_string(t_next)};
       return false;
     }
     if (error <= options_.newton_tolerance * reference || at_round_off) break;
     if (iteration == options_.max_newton_iterations) {
-      failure_ = {"newton_failure", "Newton did not converge in " + std::to_string(iteration) + " iterations at t = " +
+      failure_ = {StopReason::newton_failure, "Newton did not converge in " + std::to_string(iteration) + " iterations at t = " +
                                         std::to_string(t_next) + " (residual " + std::to_string(error / reference) +
                                         " of the largest force)"};
       return false;

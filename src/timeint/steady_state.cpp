@@ -60,7 +60,7 @@ SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const Mo
     period_scale = std::max(period_scale, state_norm(s.x, s.v, omega));
   };
 
-  result.stop_reason = "max_periods";
+  result.stop_reason = StopReason::max_periods;
   while (result.periods < options.max_periods) {
     const MotionState start = integrator.state();
     current.time.resize(samples);
@@ -77,7 +77,7 @@ SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const Mo
     // A forced damped motion grows by bounded factors; this much growth is a numerical blow-up
     // (kept out of the records, whose values would be meaningless).
     if (!end.x.allFinite() || !end.v.allFinite() || !(period_scale <= kBlowUpFactor * first_scale)) {
-      result.stop_reason = "diverged";
+      result.stop_reason = StopReason::diverged;
       result.message = "the state blew up (non-finite or 1e8 times its first period's size) in period " +
                        std::to_string(result.periods);
       break;
@@ -97,11 +97,11 @@ SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const Mo
     confirmed = small && !growing ? confirmed + 1 : 0;
     if (confirmed >= options.confirmations) {
       result.converged = true;
-      result.stop_reason = "converged";
+      result.stop_reason = StopReason::converged;
       break;
     }
     if (observer && !observer(result.periods - 1, result.last_change)) {
-      result.stop_reason = "interrupted";
+      result.stop_reason = StopReason::interrupted;
       break;
     }
   }

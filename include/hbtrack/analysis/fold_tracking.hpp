@@ -48,10 +48,11 @@ struct FoldTrackingResult {
   std::vector<FoldExtremum> extrema;
   std::vector<ContinuationSummary> legs;
   bool closed = false;  // leg 1 came back to the start: the curve is a loop
-  bool success() const { return failure().empty(); }
-  // The stop reason of the first leg that did not end as asked (a bound, closure, max_points),
-  // empty when none.
-  std::string failure() const;
+  // The first leg's stop reason that is not an end as asked (a bound, closure, max_points), or
+  // not_started without legs; else closed (a loop), max_points (a leg cut there: the curve is
+  // incomplete) or completed.
+  StopReason stop_reason() const;
+  bool success() const;  // every leg ended as asked: closed, max_points or completed
 };
 
 using FoldObserver = std::function<bool(const FoldCurvePoint&, int index)>;

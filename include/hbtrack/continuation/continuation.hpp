@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hbtrack/util/choices.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 
 namespace hbtrack {
 
@@ -75,7 +76,7 @@ struct SpecialPoint {
 };
 
 struct ContinuationSummary {
-  std::string stop_reason;  // reached_end, left_range, closed, max_points, step_size_underflow, ...
+  StopReason stop_reason = StopReason::running;  // reached_end, left_range, closed, max_points, step_size_underflow, ...
   int points = 0;
   int newton_iterations = 0;
   int failed_steps = 0;

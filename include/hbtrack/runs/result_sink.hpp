@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/util/stop_reason.hpp"
+
 namespace hbtrack::runs {
 
 class TableSink {
@@ -50,7 +52,7 @@ class ResultSink {
   // stopped run (the CLI's --resume DIR), whose checkpoint the run reads and whose rows it keeps.
   virtual bool resuming() const { return false; }
   // Refuses a stopped run that in fact finished: its summary's stop_reason is one of `finished`.
-  virtual void require_unfinished(const std::vector<std::string>& /*finished*/) const {}
+  virtual void require_unfinished(const std::vector<StopReason>& /*finished*/) const {}
   // The file a resumable run keeps its checkpoint in, written after every accepted point ("" for
   // none: results in memory are not resumed).
   virtual std::string checkpoint_path() const { return ""; }

@@ -23,7 +23,7 @@ void require_same_settings(const std::string& path, const nlohmann::json& saved,
 // read_tracking_state) gives it, once that run is known unfinished (none of the stop reasons
 // `finished`) and of the same settings.
 template <class Read>
-auto checkpoint_to_resume(const ResultSink& sink, const std::vector<std::string>& finished, const nlohmann::json& settings, Read read) {
+auto checkpoint_to_resume(const ResultSink& sink, const std::vector<StopReason>& finished, const nlohmann::json& settings, Read read) {
   sink.require_unfinished(finished);
   const std::string path = sink.checkpoint_path();
   decltype(read(path)) saved;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "hbtrack/analysis/nfrc.hpp"  // RecordedPoint
+#include "hbtrack/util/stop_reason.hpp"
 
 namespace hbtrack::runs {
 
@@ -29,7 +30,7 @@ class RunMonitor {
   virtual bool period(int /*period*/, double /*change*/, double /*time*/, double /*fraction*/) { return true; }
   // The stop reason of a run this monitor may have stopped, as the summary names it:
   // "time_limit", "stopped_by_callback", ... (the engine says "interrupted").
-  virtual std::string stop_reason(const std::string& engine_reason) const { return engine_reason; }
+  virtual StopReason stop_reason(StopReason engine_reason) const { return engine_reason; }
 };
 
 }  // namespace hbtrack::runs

@@ -36,7 +36,7 @@ struct SteadyStateResult {
   bool converged = false;
   // converged | max_periods | interrupted | diverged (non-finite, or 1e8 times the size of the
   // first period), or the integrator's failure reason (newton_failure, integration_failure).
-  std::string stop_reason;
+  StopReason stop_reason = StopReason::running;
   std::string message;   // one line, for failures
   int periods = 0;       // periods integrated
   double last_change = 0;  // change_k of the last period

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "hbtrack/timeint/equation_of_motion.hpp"
+#include "hbtrack/util/stop_reason.hpp"
 
 namespace hbtrack {
 
@@ -38,14 +39,14 @@ class TimeIntegrator {
   // (Re)starts the integration from `initial` (its time is the first period's start).
   virtual void start(const MotionState& initial) = 0;
   // Integrates over one period from state(). Returns false when the step failed; then
-  // failure() holds the stop reason (a snake_case word) and a one-line explanation.
+  // failure() holds the stop reason and a one-line explanation.
   virtual bool advance_period(const SampleObserver& observe) = 0;
   // The state at the start of the next period (after advance_period), or the initial state.
   virtual const MotionState& state() const = 0;
   virtual const IntegrationStatistics& statistics() const = 0;
 
   struct Failure {
-    std::string reason;   // newton_failure, integration_failure, ...
+    StopReason reason = StopReason::running;  // diverged, newton_failure, integration_failure
     std::string message;  // one line
   };
   const Failure& failure() const { return failure_; }
