@@ -52,7 +52,7 @@ int run_continue(const ContinueOptions& o) {
     r = continue_in_parameter(hbm, parameter, omega, start, end, c.nfrc, c.outputs,
                               [&](const BranchPoint& p, const ParameterBranchPoint& point, int index) {
                                 branch.append(parameter_branch_row(point));
-                                states.append(dof_state_row(hbm, omega, p.u));
+                                states.append(dof_state_row(hbm, omega, p.u, parameter, p.lambda));
                                 progress.update(index, p.lambda, point.recorded, c.outputs);
                                 return !stop.requested();
                               });
@@ -63,7 +63,7 @@ int run_continue(const ContinueOptions& o) {
     throw RunFailed{e.what()};
   }
   progress.finish();
-  hbm.parameters().value(parameter) = nominal;
+  hbm.set_parameter(parameter, nominal);
   const auto& s = r.continuation.summary;
   const std::string stop_reason = stop.reason(s.stop_reason);
   add_parameter_branch_summary(summary, c, hbm, r, parameter);

@@ -241,7 +241,7 @@ int run_isolas(const IsolaOptions& o) {
   double lo = value, hi = value;
   for (const auto& curve : curves)
     for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
-  hbm.parameters().value(parameter) = value;
+  hbm.set_parameter(parameter, value);
   const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
 
   ensure_directory(o.common.out_dir);
@@ -283,7 +283,7 @@ int run_isolas(const IsolaOptions& o) {
       for (const auto& rec : f.branch.recorded) unstable += rec.stable == 0;
       j["unstable_points"] = unstable;
       json special = json::array();
-      hbm.parameters().value(parameter) = value;
+      hbm.set_parameter(parameter, value);
       for (const auto& sp : f.branch.continuation.special_points) {
         json p = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
         add_outputs(p, c, record_point(hbm, sp.u, sp.lambda, c.outputs));

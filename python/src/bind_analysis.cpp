@@ -189,7 +189,7 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
   double lo = at, hi = at;
   for (const auto& curve : curves)
     for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
-  hbm.parameters().value(parameter) = at;
+  hbm.set_parameter(parameter, at);
   const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
   std::vector<IsolaCandidate> found;
   // Per branch, the part of the omega range its points span (an isola closes within it); the
@@ -217,7 +217,7 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
     if (f.same_as >= 0) j["same_as"] = f.same_as;
     if (f.status == "isola" || f.status == "open") {
       const std::string name = f.status == "isola" ? "isola_" + std::to_string(++isola_count) : "open_" + std::to_string(k + 1);
-      hbm.parameters().value(parameter) = at;
+      hbm.set_parameter(parameter, at);
       json branch_summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}};
       py::dict branch = branch_result(c, hbm, f.branch, branch_summary);
       branches[py::str(name)] = branch;

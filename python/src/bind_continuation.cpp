@@ -54,7 +54,7 @@ py::dict continuation(const CaseDefinition& c, const std::string& param, double 
     });
   }
   callback.rethrow();
-  hbm.parameters().value(parameter) = nominal;
+  hbm.set_parameter(parameter, nominal);
   Table branch{parameter_branch_header(c, param), {}}, states{state_header(hbm.unknowns()), {}}, special{state_header(hbm.unknowns()), {}};
   Table dof_states{dof_state_header(hbm), {}}, dof_special{dof_state_header(hbm), {}};  // as states.csv, special_states.csv
   for (size_t i = 0; i < r.points.size(); ++i) {
