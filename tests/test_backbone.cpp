@@ -41,7 +41,7 @@ BackboneOptions options_for(const CaseDefinition& c, double start, double end) {
 TEST(Backbone, EpmcJacobianMatchesFiniteDifferences) {
   const CaseDefinition c = example("friction_damper.toml", {"harmonic_balance.harmonics=3"});
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
-  hbm.parameters().value(hbm.amplitude_parameter()) = 0;
+  hbm.set_parameter(hbm.amplitude_parameter(), 0);
   const NormalModes modes = normal_modes(c.model.mass, c.model.stiffness);
   EpmcProblem problem(hbm, modes.shapes.col(0), 1, 1, 1, 1, 1);
   const int size = problem.size();
@@ -91,7 +91,7 @@ TEST(Backbone, NfrcPeaksLieOnTheDuffingBackbone) {
   const CaseDefinition c = example("duffing.toml", {"continuation.step=0.01", "continuation.step_max=0.01", "continuation.tolerance=1e-11"});
   for (const double forcing : {0.5, 1.0, 2.0}) {
     HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
-    hbm.parameters().value(hbm.amplitude_parameter()) = forcing;
+    hbm.set_parameter(hbm.amplitude_parameter(), forcing);
     NfrcOptions nfrc = c.nfrc;
     nfrc.omega_end = 2.0;
     const NfrcResult frc = compute_nfrc(hbm, nfrc, c.outputs);

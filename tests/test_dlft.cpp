@@ -110,10 +110,10 @@ TEST(Dlft, JacobianAndDerivativesMatchFiniteDifferences) {
       const double at = hbm.parameters().value(index);
       const VectorXd fd = test::central_difference(
           [&](double value) {
-            hbm.parameters().value(index) = value;
+            hbm.set_parameter(index, value);
             VectorXd rp;
             hbm.evaluate(x, omega, rp, nullptr, nullptr);
-            hbm.parameters().value(index) = at;
+            hbm.set_parameter(index, at);
             return rp;
           },
           at, 1e-7);

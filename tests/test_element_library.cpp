@@ -145,7 +145,7 @@ TEST(ElementLibraryCase, ExampleLoadsAndItsJacobianMatchesFiniteDifferences) {
   const int k3 = c.parameters.find("k3");
   const VectorXd analytic = hbm.parameter_derivative(x, 0.9, k3);
   auto residual_at = [&](double value) {
-    hbm.parameters().set("k3", value);
+    hbm.set_parameter(k3, value);
     VectorXd ry;
     hbm.evaluate(x, 0.9, ry, nullptr, nullptr);
     return ry;

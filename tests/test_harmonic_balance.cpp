@@ -71,13 +71,13 @@ TEST_P(HarmonicBalanceDerivatives, MatchFiniteDifferences) {
     const double p0 = hbm.parameters().value(p);
     const VectorXd analytic = hbm.parameter_derivative(x, omega, p);
     auto at_p = [&](double value) {
-      hbm.parameters().value(p) = value;
+      hbm.set_parameter(p, value);
       VectorXd rr;
       hbm.evaluate(x, omega, rr);
       return rr;
     };
     const VectorXd fd = test::central_difference(at_p, p0, kStep * std::max(1.0, p0));
-    hbm.parameters().value(p) = p0;
+    hbm.set_parameter(p, p0);
     EXPECT_GT(fd.cwiseAbs().maxCoeff(), 1e-6) << "the state must make dR/d" << name << " non-trivial";
     EXPECT_LT(test::relative_error(analytic, fd), kTolerance) << "dR/d" << name;
   }
@@ -88,9 +88,8 @@ namespace {
 // The condensed linear part Zr(omega) column by column: with the forcing off, R - f_nl = Zr x
 // exactly (to round-off), whatever x. Columns at a small x keep the contact open.
 MatrixXd condensed_linear_jacobian(HarmonicBalance& hbm, double omega) {
-  double& amplitude = hbm.parameters().value(hbm.amplitude_parameter());
-  const double saved = amplitude;
-  amplitude = 0.0;
+  const double saved = hbm.parameters().value(hbm.amplitude_parameter());
+  hbm.set_parameter(hbm.amplitude_parameter(), 0.0);
   const double scale = 1e-3;
   MatrixXd zr(hbm.unknowns(), hbm.unknowns());
   for (int c = 0; c < hbm.unknowns(); ++c) {
@@ -99,7 +98,7 @@ MatrixXd condensed_linear_jacobian(HarmonicBalance& hbm, double omega) {
     hbm.evaluate(x, omega, r);
     zr.col(c) = (r - hbm.nonlinear_forces(x, omega)) / scale;
   }
-  amplitude = saved;
+  hbm.set_parameter(hbm.amplitude_parameter(), saved);
   return zr;
 }
 
@@ -132,8 +131,7 @@ TEST_P(HarmonicBalanceDerivatives, NonlinearAdjointProductsMatchTheAssembledDeri
   // w . df_nl/d(omega): without forcing, R_omega less the linear part (dZr/d(omega)) x. Both
   // sides are sums of terms up to `scale` (mostly the linear part's), so they agree to round-off
   // of it; the nonlinear part must stand far above that tolerance.
-  double& amplitude = hbm.parameters().value(hbm.amplitude_parameter());
-  amplitude = 0.0;
+  hbm.set_parameter(hbm.amplitude_parameter(), 0.0);
   VectorXd r_omega;
   hbm.evaluate(x, omega, r, nullptr, &r_omega);
   const VectorXd linear = hbm.linear_omega_derivative(x, omega);

@@ -101,13 +101,13 @@ TEST_P(SelectedBasisDerivatives, MatchFiniteDifferences) {
     const int p = hbm.parameters().find(name);
     const double p0 = hbm.parameters().value(p);
     auto at_p = [&](double value) {
-      hbm.parameters().value(p) = value;
+      hbm.set_parameter(p, value);
       VectorXd rr;
       hbm.evaluate(x, omega, rr);
       return rr;
     };
     const VectorXd fd = test::central_difference(at_p, p0, 1e-7);
-    hbm.parameters().value(p) = p0;
+    hbm.set_parameter(p, p0);
     EXPECT_LT(test::relative_error(hbm.parameter_derivative(x, omega, p), fd), 1e-6) << "dR/d" << name;
   }
   // The time-domain adjoint product against the assembled Jacobian's nonlinear part.

@@ -53,7 +53,7 @@ TEST(ParameterContinuation, PassesThroughTheFixedFrequencySolutionAtTheNominalAm
   ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   const BranchPoint& last = r.continuation.points.back();
   EXPECT_EQ(last.lambda, 1.0);
-  hbm.parameters().value(amplitude) = 1.0;
+  hbm.set_parameter(amplitude, 1.0);
   const FixedFrequencySolution s = solve_at_frequency(hbm, omega, c.outputs, 1e-11, 50);
   ASSERT_TRUE(s.converged);
   // Both converged to ||R|| <= 1e-11 * force scale (0.18); J's inverse is O(1/(c w)) = 20 at

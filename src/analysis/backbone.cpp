@@ -19,9 +19,10 @@ void BackboneOptions::validate() const {
   continuation.validate();
 }
 
-EpmcProblem::EpmcProblem(HarmonicBalance& hbm, const VectorXd& mode, double psi_scale, double omega_scale, double xi_scale,
+EpmcProblem::EpmcProblem(const HarmonicBalance& hbm, const VectorXd& mode, double psi_scale, double omega_scale, double xi_scale,
                          double log_amplitude_scale, double residual_scale)
-    : hbm_(hbm), mode_m_(hbm.model().mass * mode), psi_scale_(psi_scale), omega_scale_(omega_scale), xi_scale_(xi_scale),
+    : hbm_(hbm.with_parameter(hbm.amplitude_parameter(), 0.0)),
+      mode_m_(hbm.model().mass * mode), psi_scale_(psi_scale), omega_scale_(omega_scale), xi_scale_(xi_scale),
       log_amplitude_scale_(log_amplitude_scale), residual_scale_(residual_scale) {
   if (hbm.retained_dofs() != hbm.model().dofs())
     throw std::invalid_argument("backbone: needs every dof as unknown (harmonic_balance.condensation = \"none\")");
@@ -111,7 +112,7 @@ BackbonePoint backbone_point(HarmonicBalance& hbm, const VectorXd& u, double lam
   return p;
 }
 
-BackboneResult compute_backbone(HarmonicBalance& hbm, const BackboneOptions& options, const std::vector<OutputDof>& outputs,
+BackboneResult compute_backbone(const HarmonicBalance& hbm, const BackboneOptions& options, const std::vector<OutputDof>& outputs,
                                 const BackboneObserver& observer) {
   options.validate();
   // The EPMC's negative damping is outside the harmonic balance: a DLFT contact would balance
@@ -130,7 +131,6 @@ BackboneResult compute_backbone(HarmonicBalance& hbm, const BackboneOptions& opt
   if (!(result.linear_omega > 0)) throw std::invalid_argument("mode: " + std::to_string(options.mode) + " has no positive frequency");
   // The linear EPMC: (K - w^2 M) phi + i w (C - xi M) phi = 0 projected on phi gives xi = phi^T C phi.
   result.linear_xi = phi.dot(model.damping * phi);
-  hbm.parameters().value(hbm.amplitude_parameter()) = 0.0;  // the negative damping replaces the forcing
 
   const int N = hbm.unknowns(), n = model.dofs();
   VectorXd u0 = VectorXd::Zero(N + 2);
@@ -148,8 +148,9 @@ BackboneResult compute_backbone(HarmonicBalance& hbm, const BackboneOptions& opt
     throw std::runtime_error("Newton did not converge on the mode at amplitude " + std::to_string(options.amplitude_start) +
                              " (start closer to the linear mode: a smaller LO)");
   const ParameterWindow window{lambda0, lambda1, 1, false};
+  HarmonicBalance recorder = hbm.with_parameter(hbm.amplitude_parameter(), 0.0);  // unforced, as the problem
   result.continuation = continue_within(problem, u0, lambda0, window, co, [&](const BranchPoint& p, int index) {
-    result.points.push_back(backbone_point(hbm, p.u, p.lambda, outputs));
+    result.points.push_back(backbone_point(recorder, p.u, p.lambda, outputs));
     return !observer || observer(p, result.points.back(), index);
   });
   return result;

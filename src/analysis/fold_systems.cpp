@@ -30,7 +30,7 @@ void approximate_null_vectors(const MatrixXd& j, VectorXd& right, VectorXd& left
   if (!right.allFinite() || !left.allFinite()) throw std::runtime_error("fold: the Jacobian at the start has no usable null vector");
 }
 
-FoldSystem::FoldSystem(HarmonicBalance& hbm, int parameter, const FoldScales& scales)
+FoldSystem::FoldSystem(const HarmonicBalance& hbm, int parameter, const FoldScales& scales)
     : hbm_(hbm), parameter_(parameter), linear_in_parameter_(parameter == hbm.amplitude_parameter()), scales_(scales),
       q_(hbm.unknowns()) {
   if (parameter < 0 || parameter >= hbm.parameters().size()) throw std::invalid_argument("fold: parameter index out of range");
@@ -49,7 +49,7 @@ VectorXd FoldSystem::unknown_scale(const VectorXd& u) const {
 }
 
 void FoldSystem::evaluate_hbm(const VectorXd& x, double omega, double gamma, bool derivatives, Evaluation& e) {
-  hbm_.parameters().value(parameter_) = gamma;
+  hbm_.set_parameter(parameter_, gamma);
   hbm_.evaluate(x, omega, e.r, &e.j, derivatives ? &e.r_omega : nullptr);
   if (derivatives) e.r_gamma = hbm_.parameter_derivative(x, omega, parameter_);
 }
@@ -66,7 +66,7 @@ void FoldSystem::along(const VectorXd& x, double omega, double gamma, const Vect
                        SecondDerivatives& out) {
   const double eps = difference_step(x, d);
   const VectorXd xs = x + eps * d;
-  hbm_.parameters().value(parameter_) = gamma;
+  hbm_.set_parameter(parameter_, gamma);
   hbm_.evaluate(xs, omega, shifted_.r, &shifted_.j, &shifted_.r_omega);
   out.j = (shifted_.j - base.j) / eps;
   out.r_omega = (shifted_.r_omega - base.r_omega) / eps;
@@ -77,7 +77,7 @@ void FoldSystem::along_left(const VectorXd& x, double omega, double gamma, const
                             const Evaluation& base, LeftSecondDerivatives& out) {
   const double eps = difference_step(x, d);
   const VectorXd xs = x + eps * d;
-  hbm_.parameters().value(parameter_) = gamma;
+  hbm_.set_parameter(parameter_, gamma);
   // R_x = Zr(omega) + J_nl(x) and R_omega = Zr'(omega) x - amplitude Fr'(omega) + df_nl/d(omega):
   // only the nonlinear forces' parts are differenced, the linear one along d is exact.
   const double base_omega = hbm_.nonlinear_adjoint_products(x, omega, w, base_product_);

@@ -38,17 +38,17 @@ bool FoldTrackingResult::success() const {
 
 namespace {
 
-std::unique_ptr<FoldSystem> make_fold_system(TrackingMethod method, HarmonicBalance& hbm, int parameter,
+std::unique_ptr<FoldSystem> make_fold_system(TrackingMethod method, const HarmonicBalance& hbm, int parameter,
                                              const FoldScales& scales) {
   if (method == TrackingMethod::extended) return std::make_unique<ExtendedFoldSystem>(hbm, parameter, scales);
   return std::make_unique<BorderedFoldSystem>(hbm, parameter, scales);
 }
 
-// Starts `system` at (x, omega): null vectors of R_x there.
-VectorXd start_unknowns(FoldSystem& system, HarmonicBalance& hbm, const VectorXd& x, double omega) {
+// Starts `system` at (x, omega): null vectors of R_x there, at hbm's parameter values.
+VectorXd start_unknowns(FoldSystem& system, const HarmonicBalance& hbm, const VectorXd& x, double omega) {
   VectorXd r;
   MatrixXd j;
-  hbm.evaluate(x, omega, r, &j, nullptr);
+  HarmonicBalance(hbm).evaluate(x, omega, r, &j, nullptr);
   VectorXd right, left;
   approximate_null_vectors(j, right, left);
   return system.start(x, omega, right, left);
@@ -68,7 +68,7 @@ std::string extremum_type(const std::vector<double>& slopes, int index) {
 
 }  // namespace
 
-LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
+LocatedFold locate_fold(const HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
                         const ContinuationOptions& options, const FoldScales& fallback) {
   // First to the case's own tolerance (`fallback`), then a few iterations toward the stricter
   // `scales`: round-off on a stiff model may deny those extra digits, and then the fold located
@@ -91,7 +91,7 @@ LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, 
   return f;
 }
 
-FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
+FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
                               const FoldTrackingOptions& options, const std::vector<OutputDof>& outputs,
                               const FoldObserver& observer, const FoldTrackingRestart& restart) {
   options.validate();
@@ -99,6 +99,9 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
   if (!(options.parameter_min <= gamma0 && gamma0 <= options.parameter_max))
     throw std::invalid_argument("range: must contain the parameter's value at the limit point, " + std::to_string(gamma0));
   std::unique_ptr<FoldSystem> system = make_fold_system(options.method, hbm, parameter, scales);
+  // The outputs of each point, at its own parameter value (the recovery of condensed dofs
+  // depends on it): an evaluator of our own, the caller's stays as it is.
+  HarmonicBalance at_point(hbm);
   FoldTrackingResult result;
   const FoldTrackingState* resumed = restart.resume_from;
   if (resumed) {
@@ -106,14 +109,13 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
     result.legs = resumed->finished_legs;
     result.extrema = resumed->extrema;
     for (FoldExtremum& e : result.extrema) {  // their outputs, as the finished legs recorded them
-      hbm.parameters().value(parameter) = e.parameter;
-      e.recorded = record_point(hbm, e.x, e.omega, outputs);
+      at_point.set_parameter(parameter, e.parameter);
+      e.recorded = record_point(at_point, e.x, e.omega, outputs);
     }
     result.points_before = resumed->curve_points;
   }
   for (int leg = resumed ? resumed->leg : 1; leg <= 2; ++leg) {
     const bool resuming = resumed && leg == resumed->leg;
-    hbm.parameters().value(parameter) = gamma0;
     VectorXd u0;
     if (resuming)
       system->restore_borders(resumed->borders);
@@ -136,8 +138,8 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
           slopes.push_back(p.tangent(p.tangent.size() - 1));
           if (leg == 2 && index == 0) return true;  // the start, already the first point of leg 1
           FoldCurvePoint point{system->harmonics(p.u), system->omega(p.u), p.lambda, leg, {}};
-          hbm.parameters().value(parameter) = p.lambda;  // the recovery of condensed dofs depends on it
-          point.recorded = record_point(hbm, point.x, point.omega, outputs);
+          at_point.set_parameter(parameter, p.lambda);
+          point.recorded = record_point(at_point, point.x, point.omega, outputs);
           result.points.push_back(std::move(point));
           stopped = observer && !observer(result.points.back(), result.curve_points() - 1);
           return !stopped;
@@ -153,8 +155,8 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
       e.omega = system->omega(sp.u);
       e.parameter = sp.lambda;
       e.index = leg == 2 && sp.index == 0 ? 0 : std::max(0, offset + sp.index);  // leg 2 starts at point 0
-      hbm.parameters().value(parameter) = sp.lambda;
-      e.recorded = record_point(hbm, e.x, e.omega, outputs);
+      at_point.set_parameter(parameter, sp.lambda);
+      e.recorded = record_point(at_point, e.x, e.omega, outputs);
       result.extrema.push_back(std::move(e));
     }
     if (c.summary.stop_reason == StopReason::closed) {
@@ -163,16 +165,14 @@ FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const VectorX
     }
     if (stopped || c.summary.stop_reason == StopReason::no_convergence_at_start) break;
   }
-  hbm.parameters().value(parameter) = gamma0;
   return result;
 }
 
-std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, double value,
+std::vector<IsolaCandidate> compute_isolas(const HarmonicBalance& caller, int parameter, double value,
                                            const std::vector<std::vector<FoldCurvePoint>>& curves, const FoldScales& scales,
                                            const NfrcOptions& options, const std::vector<OutputDof>& outputs,
                                            bool follow_branches, const RecordedObserver& observer) {
-  const double saved = hbm.parameters().value(parameter);
-  hbm.parameters().value(parameter) = value;
+  HarmonicBalance hbm = caller.with_parameter(parameter, value);
   // Two more digits than the branch needs, so that its continuation starts without a Newton
   // step at the limit point (where R_x is singular).
   FoldScales strict = scales;
@@ -223,7 +223,6 @@ std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, 
       out.push_back(std::move(cand));
     }
   }
-  hbm.parameters().value(parameter) = saved;
   return out;
 }
 

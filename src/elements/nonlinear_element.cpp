@@ -4,7 +4,7 @@
 
 namespace hbtrack {
 
-std::vector<double> NonlinearElement::property_values(const ParameterSet& parameters) const {
+std::vector<double> NonlinearElement::property_values(const ParameterValues& parameters) const {
   std::vector<double> values(properties.size());
   for (size_t i = 0; i < properties.size(); ++i) values[i] = properties[i].value(parameters);
   return values;

@@ -3,15 +3,17 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "hbtrack/hbm/harmonic_balance.hpp"
+#include "hbtrack/hbm/harmonic_balance_system.hpp"
 
 namespace hbtrack {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-void HarmonicBalance::hill_matrices(const VectorXd& x, double omega, MatrixXd& jacobian, MatrixXd& damping) {
+void HarmonicBalanceSystem::hill_matrices(const ParameterValues& p, HarmonicBalanceWorkspace& ws, const VectorXd& x, double omega,
+                                          MatrixXd& jacobian, MatrixXd& damping) const {
   refuse_residual_elements("Hill's stability method");
+  check(p, ws);
   const int n = model_.dofs();
   const int nc = basis_.coefficients();
   const int size = n * nc;
@@ -38,12 +40,13 @@ void HarmonicBalance::hill_matrices(const VectorXd& x, double omega, MatrixXd& j
     damping.block(a, b, n, n) = 2.0 * w * j * model_.mass;
     damping.block(b, a, n, n) = -2.0 * w * j * model_.mass;
   }
-  add_hill_element_blocks(x, omega, n, [](int dof) { return dof; }, jacobian, damping);
+  add_hill_element_blocks(p, ws, x, omega, n, [](int dof) { return dof; }, jacobian, damping);
 }
 
-void HarmonicBalance::hill_element_blocks(const VectorXd& x, double omega, const std::vector<int>& coupled, MatrixXd& jacobian,
-                                          MatrixXd& damping) {
+void HarmonicBalanceSystem::hill_element_blocks(const ParameterValues& p, HarmonicBalanceWorkspace& ws, const VectorXd& x, double omega,
+                                                const std::vector<int>& coupled, MatrixXd& jacobian, MatrixXd& damping) const {
   refuse_residual_elements("Hill's stability method");
+  check(p, ws);
   const int c = static_cast<int>(coupled.size());
   const Eigen::Index size = static_cast<Eigen::Index>(c) * basis_.coefficients();
   jacobian.setZero(size, size);
@@ -53,21 +56,23 @@ void HarmonicBalance::hill_element_blocks(const VectorXd& x, double omega, const
     if (at == coupled.end() || *at != dof) throw std::logic_error("hill_element_blocks: an element dof is not among the coupled dofs");
     return static_cast<int>(at - coupled.begin());
   };
-  add_hill_element_blocks(x, omega, c, position, jacobian, damping);
+  add_hill_element_blocks(p, ws, x, omega, c, position, jacobian, damping);
 }
 
-void HarmonicBalance::add_hill_element_blocks(const VectorXd& x, double omega, int stride, const std::function<int(int)>& position,
-                                              MatrixXd& jacobian, MatrixXd& damping) {
-  sample(x, omega);
+void HarmonicBalanceSystem::add_hill_element_blocks(const ParameterValues& p, HarmonicBalanceWorkspace& ws, const VectorXd& x, double omega,
+                                                    int stride, const std::function<int(int)>& position, MatrixXd& jacobian,
+                                                    MatrixXd& damping) const {
+  sample(ws, x, omega);
   for (size_t e = 0; e < elements_.size(); ++e) {
     const NonlinearElement& element = *elements_[e];
-    ElementSlot& s = slots_[e];
-    element.evaluate(s.x, s.v, element_frequency(element, omega, options_.subharmonic), element.property_values(parameters_), s.response, false);
+    ElementState& state = ws.elements_[e];
+    element.evaluate(state.x, state.v, element_frequency(element, omega, options_.subharmonic), element.property_values(p), state.response,
+                     false);
     std::vector<int> positions;
     for (int dof : element.dofs) positions.push_back(position(dof));
     // The velocity part enters the Jacobian as omega (F_v nabla) and D1 as F_v.
-    add_element_blocks(s, omega, stride, positions, &jacobian, nullptr);
-    add_element_blocks(s, omega, stride, positions, nullptr, &damping);
+    add_element_blocks(ws, e, omega, stride, positions, &jacobian, nullptr);
+    add_element_blocks(ws, e, omega, stride, positions, nullptr, &damping);
   }
 }
 

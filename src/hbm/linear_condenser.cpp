@@ -50,18 +50,22 @@ VectorXcd subvector(const VectorXcd& v, const std::vector<int>& idx) {
   return out;
 }
 
+// Marks `at` as computed at omega and sizes the operators every condenser fills; false when it
+// already holds them at omega.
+bool start_update(double omega, int harmonics, CondensedOperators& at) {
+  if (omega == at.omega) return false;
+  at.omega = omega;
+  at.reduced_stiffness.resize(static_cast<size_t>(harmonics + 1));
+  at.reduced_force.resize(static_cast<size_t>(harmonics + 1));
+  return true;
+}
+
 class SchurCondenser final : public LinearCondenser {
  public:
   SchurCondenser(const StructuralModel& model, std::vector<int> retained, int harmonics)
       : model_(model), linear_(complement(model.dofs(), retained)), forcing_(complex_forcing(model, harmonics)) {
     retained_ = std::move(retained);
     harmonics_ = harmonics;
-    const size_t nh = static_cast<size_t>(harmonics + 1);
-    reduced_stiffness_.resize(nh);
-    reduced_force_.resize(nh);
-    lu_.resize(nh);
-    coupling_.resize(nh);
-    linear_response_.resize(nh);
   }
   std::string method() const override { return linear_.empty() ? "none" : "schur"; }
 
@@ -73,45 +77,48 @@ class SchurCondenser final : public LinearCondenser {
     return (-2.0 * j * j * omega * model_.mass).cast<cd>() + cd(0, j) * model_.damping.cast<cd>();
   }
 
-  void update(double omega) override {
-    if (omega == omega_) return;
-    omega_ = omega;
+  void update(double omega, CondensedOperators& at) const override {
+    if (!start_update(omega, harmonics_, at)) return;
+    const size_t nh = at.reduced_force.size();
+    at.lu.resize(nh);
+    at.coupling.resize(nh);
+    at.linear_response.resize(nh);
     for (int j = 0; j <= harmonics_; ++j) {
       const size_t s = static_cast<size_t>(j);
       const MatrixXcd z = dynamic_stiffness(j, omega);
       MatrixXcd zrr = submatrix(z, retained_, retained_);
       VectorXcd fr = subvector(forcing_[s], retained_);
       if (!linear_.empty()) {
-        lu_[s].compute(submatrix(z, linear_, linear_));
-        coupling_[s] = lu_[s].solve(submatrix(z, linear_, retained_));      // Z_ll^-1 Z_lr
-        linear_response_[s] = lu_[s].solve(subvector(forcing_[s], linear_));  // Z_ll^-1 F_l
+        at.lu[s].compute(submatrix(z, linear_, linear_));
+        at.coupling[s] = at.lu[s].solve(submatrix(z, linear_, retained_));      // Z_ll^-1 Z_lr
+        at.linear_response[s] = at.lu[s].solve(subvector(forcing_[s], linear_));  // Z_ll^-1 F_l
         const MatrixXcd zrl = submatrix(z, retained_, linear_);
-        zrr.noalias() -= zrl * coupling_[s];
-        fr.noalias() -= zrl * linear_response_[s];
+        zrr.noalias() -= zrl * at.coupling[s];
+        fr.noalias() -= zrl * at.linear_response[s];
       }
-      reduced_stiffness_[s] = std::move(zrr);
-      reduced_force_[s] = std::move(fr);
+      at.reduced_stiffness[s] = std::move(zrr);
+      at.reduced_force[s] = std::move(fr);
     }
   }
 
-  VectorXcd omega_derivative(int j, const VectorXcd& z, double amplitude) const override {
+  VectorXcd omega_derivative(int j, const VectorXcd& z, double amplitude, const CondensedOperators& at) const override {
     const size_t s = static_cast<size_t>(j);
-    const MatrixXcd dz = dynamic_stiffness_derivative(j, omega_);
+    const MatrixXcd dz = dynamic_stiffness_derivative(j, at.omega);
     VectorXcd out = submatrix(dz, retained_, retained_) * z;
     if (linear_.empty()) return out;
-    const VectorXcd xl = amplitude * linear_response_[s] - coupling_[s] * z;
+    const VectorXcd xl = amplitude * at.linear_response[s] - at.coupling[s] * z;
     const VectorXcd rhs = submatrix(dz, linear_, linear_) * xl + submatrix(dz, linear_, retained_) * z;
-    const MatrixXcd z_full = dynamic_stiffness(j, omega_);
-    out += submatrix(dz, retained_, linear_) * xl - submatrix(z_full, retained_, linear_) * lu_[s].solve(rhs);
+    const MatrixXcd z_full = dynamic_stiffness(j, at.omega);
+    out += submatrix(dz, retained_, linear_) * xl - submatrix(z_full, retained_, linear_) * at.lu[s].solve(rhs);
     return out;
   }
 
-  VectorXcd recover(int j, const VectorXcd& z, double amplitude) const override {
+  VectorXcd recover(int j, const VectorXcd& z, double amplitude, const CondensedOperators& at) const override {
     const size_t s = static_cast<size_t>(j);
     VectorXcd x(model_.dofs());
     for (size_t i = 0; i < retained_.size(); ++i) x(retained_[i]) = z(static_cast<Eigen::Index>(i));
     if (!linear_.empty()) {
-      const VectorXcd xl = amplitude * linear_response_[s] - coupling_[s] * z;
+      const VectorXcd xl = amplitude * at.linear_response[s] - at.coupling[s] * z;
       for (size_t i = 0; i < linear_.size(); ++i) x(linear_[i]) = xl(static_cast<Eigen::Index>(i));
     }
     return x;
@@ -121,9 +128,6 @@ class SchurCondenser final : public LinearCondenser {
   StructuralModel model_;  // a copy: the condenser must not dangle when its owner moves
   std::vector<int> linear_;
   std::vector<VectorXcd> forcing_;
-  std::vector<Eigen::PartialPivLU<MatrixXcd>> lu_;
-  std::vector<MatrixXcd> coupling_;
-  std::vector<VectorXcd> linear_response_;
 };
 
 class ModalCondenser final : public LinearCondenser {
@@ -138,11 +142,6 @@ class ModalCondenser final : public LinearCondenser {
     retained_shapes_.resize(static_cast<Eigen::Index>(retained_.size()), shapes_.cols());
     for (size_t i = 0; i < retained_.size(); ++i) retained_shapes_.row(static_cast<Eigen::Index>(i)) = shapes_.row(retained_[i]);
     for (const VectorXcd& f : complex_forcing(model, harmonics)) modal_forcing_.push_back(shapes_.transpose().cast<cd>() * f);
-    const size_t nh = static_cast<size_t>(harmonics + 1);
-    reduced_stiffness_.resize(nh);
-    reduced_force_.resize(nh);
-    modal_receptance_.resize(nh);
-    retained_forced_response_.resize(nh);
   }
   std::string method() const override { return "modal"; }
 
@@ -154,38 +153,41 @@ class ModalCondenser final : public LinearCondenser {
     return d;
   }
 
-  void update(double omega) override {
-    if (omega == omega_) return;
-    omega_ = omega;
+  void update(double omega, CondensedOperators& at) const override {
+    if (!start_update(omega, harmonics_, at)) return;
+    const size_t nh = at.reduced_force.size();
+    at.modal_receptance.resize(nh);
+    at.retained_forced_response.resize(nh);
     for (int j = 0; j <= harmonics_; ++j) {
       const size_t s = static_cast<size_t>(j);
-      modal_receptance_[s] = receptance_diagonal(j, omega);
-      const MatrixXcd h_rr = retained_shapes_.cast<cd>() * modal_receptance_[s].asDiagonal() * retained_shapes_.transpose().cast<cd>();
-      reduced_stiffness_[s] = h_rr.partialPivLu().inverse();
-      retained_forced_response_[s] = retained_shapes_.cast<cd>() * modal_receptance_[s].cwiseProduct(modal_forcing_[s]);
-      reduced_force_[s] = reduced_stiffness_[s] * retained_forced_response_[s];
+      at.modal_receptance[s] = receptance_diagonal(j, omega);
+      const MatrixXcd h_rr = retained_shapes_.cast<cd>() * at.modal_receptance[s].asDiagonal() * retained_shapes_.transpose().cast<cd>();
+      at.reduced_stiffness[s] = h_rr.partialPivLu().inverse();
+      at.retained_forced_response[s] = retained_shapes_.cast<cd>() * at.modal_receptance[s].cwiseProduct(modal_forcing_[s]);
+      at.reduced_force[s] = at.reduced_stiffness[s] * at.retained_forced_response[s];
     }
   }
 
-  VectorXcd omega_derivative(int j, const VectorXcd& z, double amplitude) const override {
+  VectorXcd omega_derivative(int j, const VectorXcd& z, double amplitude, const CondensedOperators& at) const override {
     const size_t s = static_cast<size_t>(j);
-    const VectorXcd& d = modal_receptance_[s];
+    const VectorXcd& d = at.modal_receptance[s];
     // d/domega of 1/(w_r^2 - (j w)^2 + i j w c_r)
     VectorXcd dd(d.size());
     for (Eigen::Index r = 0; r < d.size(); ++r)
-      dd(r) = -d(r) * d(r) * cd(-2.0 * j * j * omega_, j * modal_damping_(r));
-    const MatrixXcd& zr = reduced_stiffness_[s];
-    const VectorXcd u = zr * (z - amplitude * retained_forced_response_[s]);  // = -g at a solution
+      dd(r) = -d(r) * d(r) * cd(-2.0 * j * j * at.omega, j * modal_damping_(r));
+    const MatrixXcd& zr = at.reduced_stiffness[s];
+    const VectorXcd u = zr * (z - amplitude * at.retained_forced_response[s]);  // = -g at a solution
     const VectorXcd dh_u = retained_shapes_.cast<cd>() * dd.cwiseProduct(retained_shapes_.transpose().cast<cd>() * u);
     const VectorXcd dh_f = retained_shapes_.cast<cd>() * dd.cwiseProduct(modal_forcing_[s]);
     return -zr * (dh_u + amplitude * dh_f);
   }
 
-  VectorXcd recover(int j, const VectorXcd& z, double amplitude) const override {
+  VectorXcd recover(int j, const VectorXcd& z, double amplitude, const CondensedOperators& at) const override {
     const size_t s = static_cast<size_t>(j);
     // g = amplitude Fr - Zr z is the nonlinear force that balances z; x = H (amplitude F - P^T g).
-    const VectorXcd g = amplitude * reduced_force_[s] - reduced_stiffness_[s] * z;
-    const VectorXcd modal = modal_receptance_[s].cwiseProduct(amplitude * modal_forcing_[s] - retained_shapes_.transpose().cast<cd>() * g);
+    const VectorXcd g = amplitude * at.reduced_force[s] - at.reduced_stiffness[s] * z;
+    const VectorXcd modal =
+        at.modal_receptance[s].cwiseProduct(amplitude * modal_forcing_[s] - retained_shapes_.transpose().cast<cd>() * g);
     return shapes_.cast<cd>() * modal;
   }
 
@@ -194,8 +196,6 @@ class ModalCondenser final : public LinearCondenser {
   Eigen::VectorXd frequencies_, modal_damping_;
   MatrixXd retained_shapes_;
   std::vector<VectorXcd> modal_forcing_;
-  std::vector<VectorXcd> modal_receptance_;
-  std::vector<VectorXcd> retained_forced_response_;
 };
 
 }  // namespace

@@ -24,7 +24,7 @@ json parameter_continuation_options(const std::string& parameter, double omega, 
   return {{"parameter", parameter}, {"omega", omega}, {"range", {start, end}}};
 }
 
-void add_parameter_branch_summary(json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const ParameterBranchResult& r,
+void add_parameter_branch_summary(json& summary, const CaseDefinition& c, const HarmonicBalance& hbm, const ParameterBranchResult& r,
                                   int parameter) {
   const auto& s = r.continuation.summary;
   const std::string& name = hbm.parameters().names()[static_cast<size_t>(parameter)];
@@ -32,17 +32,16 @@ void add_parameter_branch_summary(json& summary, const CaseDefinition& c, Harmon
   summary["options"]["continuation"]["length_scale"] = r.length_scale;
   summary["outputs"] = outputs_json(c);
   const double omega = summary["options"]["continue"]["omega"].get<double>();
-  const double kept = hbm.parameters().value(parameter);
+  HarmonicBalance at_point(hbm);  // the outputs of each point at its own value
   json special = json::array();
   for (const auto& sp : r.continuation.special_points) {
     json j = {{"type", sp.type}, {"index", sp.index}, {"omega", omega}, {name, sp.lambda}, {"located", sp.located}};
     j["parameters"] = summary["options"]["parameters"];
     j["parameters"][name] = sp.lambda;
-    hbm.parameters().value(parameter) = sp.lambda;  // the outputs of the point itself
-    add_outputs(j, c, record_point(hbm, sp.u, omega, c.outputs));
+    at_point.set_parameter(parameter, sp.lambda);
+    add_outputs(j, c, record_point(at_point, sp.u, omega, c.outputs));
     special.push_back(j);
   }
-  hbm.parameters().value(parameter) = kept;
   summary["special_points"] = special;
 }
 

@@ -44,13 +44,9 @@ std::vector<double> dof_state_values(HarmonicBalance& hbm, const Eigen::VectorXd
   return values;
 }
 
-std::vector<double> dof_state_values(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int parameter, double value) {
-  double& current = hbm.parameters().value(parameter);
-  const double kept = current;
-  current = value;
-  std::vector<double> values = dof_state_values(hbm, x, omega);
-  hbm.parameters().value(parameter) = kept;
-  return values;
+std::vector<double> dof_state_values(const HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int parameter, double value) {
+  HarmonicBalance at = hbm.with_parameter(parameter, value);
+  return dof_state_values(at, x, omega);
 }
 
 std::vector<std::string> dof_state_header(const HarmonicBalance& hbm) {
@@ -72,7 +68,7 @@ std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eige
   return row_at(omega, dof_state_values(hbm, x, omega));
 }
 
-std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x, int parameter, double value) {
+std::vector<double> dof_state_row(const HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x, int parameter, double value) {
   return row_at(omega, dof_state_values(hbm, x, omega, parameter, value));
 }
 

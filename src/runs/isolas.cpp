@@ -34,7 +34,7 @@ RunReport isolas(const CaseDefinition& c, const IsolaOptions& o, ResultSink& sin
   double lo = o.at, hi = o.at;
   for (const auto& curve : o.curves)
     for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);
-  hbm.parameters().value(parameter) = o.at;
+  hbm.set_parameter(parameter, o.at);
   const FoldScales scales = tracking_scales(hbm, c.nfrc, std::max(hi - lo, 1e-300));
   sink.open();
   json summary = {{"verb", "isolas"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
@@ -61,7 +61,6 @@ RunReport isolas(const CaseDefinition& c, const IsolaOptions& o, ResultSink& sin
     const IsolaCandidate& f = found[k];
     json j = {{"status", f.status}, {"omega", f.start.omega}, {"converged", f.start.converged}};
     if (f.same_as >= 0) j["same_as"] = f.same_as;
-    hbm.parameters().value(parameter) = o.at;
     if (f.start.converged) add_outputs(j, c, record_point(hbm, f.start.x, f.start.omega, c.outputs));
     if (f.status == "isola" || f.status == "open") {
       const std::string name = f.status == "isola" ? "isola_" + std::to_string(++isola_count) : "open_" + std::to_string(k + 1);

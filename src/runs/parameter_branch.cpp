@@ -31,7 +31,6 @@ RunReport continue_in_parameter(const CaseDefinition& c, const ParameterBranchOp
   if (sink.keeps_unknowns()) unknowns = sink.table("unknowns", state_header(hbm.unknowns()));
   sink.summary(summary);
 
-  const double nominal = hbm.parameters().value(parameter);
   Coverage coverage = Coverage::one_way(o.start, o.end);
   ParameterBranchResult r;
   try {
@@ -48,7 +47,6 @@ RunReport continue_in_parameter(const CaseDefinition& c, const ParameterBranchOp
     sink.summary(summary);
     throw;
   }
-  hbm.parameters().value(parameter) = nominal;
   const auto& s = r.continuation.summary;
   const std::string stop_reason = to_string(monitor.stop_reason(s.stop_reason));
   add_parameter_branch_summary(summary, c, hbm, r, parameter);

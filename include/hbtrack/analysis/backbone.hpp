@@ -23,11 +23,12 @@ struct BackboneOptions {
 };
 
 // The EPMC residual on every dof (the harmonic balance system must be built with
-// condensation "none" and its forcing switched off: amplitude = 0).
+// condensation "none"). It evaluates its own copy of hbm with the forcing switched off
+// (amplitude = 0): the negative damping replaces it.
 class EpmcProblem final : public ContinuationProblem {
  public:
   // mode: mass-normalised linear mode shape (phase reference); scales of psi, omega, xi.
-  EpmcProblem(HarmonicBalance& hbm, const Eigen::VectorXd& mode, double psi_scale, double omega_scale, double xi_scale,
+  EpmcProblem(const HarmonicBalance& hbm, const Eigen::VectorXd& mode, double psi_scale, double omega_scale, double xi_scale,
               double log_amplitude_scale, double residual_scale);
   int size() const override { return hbm_.unknowns() + 2; }
   void evaluate(const Eigen::VectorXd& u, double lambda, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
@@ -40,7 +41,7 @@ class EpmcProblem final : public ContinuationProblem {
   // out = (nabla x M) psi: the velocity coefficients at unit frequency, times M.
   void mass_derivative(const Eigen::VectorXd& psi, Eigen::VectorXd& out) const;
 
-  HarmonicBalance& hbm_;
+  HarmonicBalance hbm_;
   Eigen::VectorXd mode_m_;  // M * mode
   int first_cosine_ = 1;    // coefficient index of harmonic 1's cosine
   double psi_scale_, omega_scale_, xi_scale_, log_amplitude_scale_, residual_scale_;
@@ -68,7 +69,7 @@ using BackboneObserver = std::function<bool(const BranchPoint&, const BackbonePo
 // The backbone of `options.mode`. Sets the system's amplitude parameter to 0 (no forcing).
 // Throws std::invalid_argument for bad options or a condensed system, std::runtime_error when
 // Newton fails at the start (amplitude_start too large for the linear mode to be a guess).
-BackboneResult compute_backbone(HarmonicBalance& hbm, const BackboneOptions& options, const std::vector<OutputDof>& outputs,
+BackboneResult compute_backbone(const HarmonicBalance& hbm, const BackboneOptions& options, const std::vector<OutputDof>& outputs,
                                 const BackboneObserver& observer = {});
 
 // A point of the result's branch as recorded (outputs from x = a psi).

@@ -34,7 +34,8 @@ struct FoldScales {
 
 class FoldSystem : public ContinuationProblem {
  public:
-  FoldSystem(HarmonicBalance& hbm, int parameter, const FoldScales& scales);
+  // The system evaluates its own copy of hbm (same constant system), with gamma set per point.
+  FoldSystem(const HarmonicBalance& hbm, int parameter, const FoldScales& scales);
   virtual std::string method() const = 0;
   // Harmonics and frequency of the unknown vector u.
   Eigen::VectorXd harmonics(const Eigen::VectorXd& u) const { return u.head(q_); }
@@ -87,7 +88,7 @@ class FoldSystem : public ContinuationProblem {
   LeftSecondDerivatives left_second_;
   Eigen::VectorXd base_product_;  // J_nl(x)^T w in along_left
 
-  HarmonicBalance& hbm_;
+  HarmonicBalance hbm_;
   int parameter_;
   bool linear_in_parameter_;  // the amplitude: R_gamma does not depend on x
   FoldScales scales_;

@@ -77,7 +77,7 @@ struct FoldTrackingRestart {
 
 // Follows the limit point near (x, omega) (an LP located on an NFRC at the parameter's current
 // value) while parameter `parameter` of hbm moves within [parameter_min, parameter_max].
-FoldTrackingResult track_fold(HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
+FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
                               const FoldScales& scales, const FoldTrackingOptions& options,
                               const std::vector<OutputDof>& outputs, const FoldObserver& observer = {},
                               const FoldTrackingRestart& restart = {});
@@ -90,7 +90,7 @@ struct LocatedFold {
   Eigen::VectorXd x;
   double omega = 0;
 };
-LocatedFold locate_fold(HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
+LocatedFold locate_fold(const HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
                         const FoldScales& scales, const ContinuationOptions& options, const FoldScales& fallback);
 
 // ---- isolated branches ---------------------------------------------------------------------
@@ -111,7 +111,7 @@ struct IsolaCandidate {
 // range until it closes. Stability as options.stability. With follow_branches false only the
 // limit points are located (the cheap check that a validation NFRC's LPs lie on the curves).
 // `observer` sees the points of every branch followed (index 0 starts a branch).
-std::vector<IsolaCandidate> compute_isolas(HarmonicBalance& hbm, int parameter, double value,
+std::vector<IsolaCandidate> compute_isolas(const HarmonicBalance& hbm, int parameter, double value,
                                            const std::vector<std::vector<FoldCurvePoint>>& curves,
                                            const FoldScales& scales, const NfrcOptions& options,
                                            const std::vector<OutputDof>& outputs, bool follow_branches = true,

@@ -10,10 +10,11 @@
 
 namespace hbtrack {
 
-// R(x; p) at fixed omega, lambda = p (the parameter `parameter` of the system's ParameterSet).
+// R(x; p) at fixed omega, lambda = p (the parameter `parameter` of the system's ParameterSet),
+// evaluated by its own copy of hbm (the same constant system).
 class ParameterProblem final : public ContinuationProblem {
  public:
-  ParameterProblem(HarmonicBalance& hbm, int parameter, double omega, double length_scale, double parameter_scale,
+  ParameterProblem(const HarmonicBalance& hbm, int parameter, double omega, double length_scale, double parameter_scale,
                    double force_scale);
   int size() const override { return hbm_.unknowns(); }
   void evaluate(const Eigen::VectorXd& u, double p, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, Eigen::VectorXd* r_p) override;
@@ -24,7 +25,7 @@ class ParameterProblem final : public ContinuationProblem {
   bool has_corners() const override { return hbm_.has_corners(); }
 
  private:
-  HarmonicBalance& hbm_;
+  HarmonicBalance hbm_;
   int parameter_;
   double omega_, length_scale_, parameter_scale_, force_scale_;
 };
@@ -45,10 +46,10 @@ struct ParameterBranchResult {
 using ParameterObserver = std::function<bool(const BranchPoint&, const ParameterBranchPoint&, int)>;
 
 // The branch at frequency `omega` from parameter = start (solved by Newton from the linear
-// solution there) towards `end`, with the case's continuation and stability options. The
-// system's parameter is left at the last value evaluated; the caller restores it if needed.
+// solution there) towards `end`, with the case's continuation and stability options. hbm's
+// other parameter values hold; its own are not changed (the branch is evaluated on copies).
 // Throws std::runtime_error when Newton fails at the start.
-ParameterBranchResult continue_in_parameter(HarmonicBalance& hbm, int parameter, double omega, double start, double end,
+ParameterBranchResult continue_in_parameter(const HarmonicBalance& hbm, int parameter, double omega, double start, double end,
                                             const NfrcOptions& options, const std::vector<OutputDof>& outputs,
                                             const ParameterObserver& observer = {});
 

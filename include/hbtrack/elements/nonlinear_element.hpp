@@ -122,7 +122,8 @@ class NonlinearElement {
                                       bool want_property_derivatives) const;
 
   int local_dofs() const { return static_cast<int>(dofs.size()); }
-  std::vector<double> property_values(const ParameterSet& parameters) const;
+  std::vector<double> property_values(const ParameterValues& parameters) const;
+  std::vector<double> property_values(const ParameterSet& parameters) const { return property_values(parameters.values()); }
 
   std::vector<int> dofs;                     // model dof indices, size k
   std::vector<ParameterBinding> properties;  // one per property_names()

@@ -6,6 +6,10 @@
 
 namespace hbtrack {
 
+// Values of a ParameterSet's parameters, in its order: what an evaluation depends on besides
+// the unknowns (HarmonicBalanceSystem takes them explicitly).
+using ParameterValues = std::vector<double>;
+
 class ParameterSet {
  public:
   // Adds a parameter or, when the name exists, overwrites its value. Returns its index.
@@ -14,12 +18,13 @@ class ParameterSet {
   double value(int index) const { return values_[static_cast<size_t>(index)]; }
   double& value(int index) { return values_[static_cast<size_t>(index)]; }
   double value(const std::string& name) const;  // throws std::out_of_range
+  const ParameterValues& values() const { return values_; }
   const std::vector<std::string>& names() const { return names_; }
   int size() const { return static_cast<int>(names_.size()); }
 
  private:
   std::vector<std::string> names_;
-  std::vector<double> values_;
+  ParameterValues values_;
 };
 
 // A property of an element: a constant, or an affine function of one named parameter.
@@ -32,7 +37,8 @@ struct ParameterBinding {
   static ParameterBinding linked(int index, double scale_ = 1.0, double offset_ = 0.0) {
     return {offset_, scale_, index};
   }
-  double value(const ParameterSet& p) const { return parameter < 0 ? offset : offset + scale * p.value(parameter); }
+  double value(const ParameterValues& p) const { return parameter < 0 ? offset : offset + scale * p[static_cast<size_t>(parameter)]; }
+  double value(const ParameterSet& p) const { return value(p.values()); }
   // d value / d parameter `index`.
   double derivative(int index) const { return parameter == index ? scale : 0.0; }
 };

@@ -20,7 +20,7 @@ nlohmann::json parameter_continuation_options(const std::string& parameter, doub
 
 // What `continue` adds to summary.json: stop_reason, counts, length scale, outputs and
 // special_points (type, index, omega, PARAM, located, parameters at the point, outputs).
-void add_parameter_branch_summary(nlohmann::json& summary, const CaseDefinition& c, HarmonicBalance& hbm,
+void add_parameter_branch_summary(nlohmann::json& summary, const CaseDefinition& c, const HarmonicBalance& hbm,
                                   const ParameterBranchResult& r, int parameter);
 
 }  // namespace hbtrack

@@ -25,13 +25,13 @@ std::vector<std::string> dof_state_columns(const HarmonicBalance& hbm);
 std::vector<double> dof_state_values(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega);
 
 // The same at a point of a curve in parameter `parameter` (a tracking curve), at its own `value`
-// of it (the condensed dofs' recovery depends on it); the parameter is restored afterwards.
-std::vector<double> dof_state_values(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int parameter, double value);
+// of it (the condensed dofs' recovery depends on it), by an evaluator of its own: hbm's values hold.
+std::vector<double> dof_state_values(const HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int parameter, double value);
 // states.csv of a branch: omega, then the dof columns.
 std::vector<std::string> dof_state_header(const HarmonicBalance& hbm);
 std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x);
 // The same at a point of a branch in parameter `parameter` (hbtrack continue), at its `value`.
-std::vector<double> dof_state_row(HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x, int parameter, double value);
+std::vector<double> dof_state_row(const HarmonicBalance& hbm, double omega, const Eigen::VectorXd& x, int parameter, double value);
 
 // True for the layout written before the dof columns: x0, x1, ... the unknowns themselves, the
 // mean as a0 (x = a0/2 + ...).
