@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -23,6 +24,9 @@ inline std::filesystem::path fresh_temp_dir(const std::string& name, bool create
   if (create) std::filesystem::create_directories(dir);
   return dir;
 }
+
+// A result folder's JSON file (summary.json, a checkpoint), parsed.
+inline nlohmann::json read_json(const std::filesystem::path& p) { return nlohmann::json::parse(std::ifstream(p)); }
 
 struct CliRun {
   int exit_code;

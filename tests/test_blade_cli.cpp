@@ -39,7 +39,7 @@ class BladeCli : public ::testing::Test {
   fs::path dir_;
 };
 
-json read_json(const std::string& path) { return json::parse(std::ifstream(path)); }
+using hbtrack::test::read_json;
 
 // Writes M and K as sparse variables of a MATLAB v5 file (libmatio).
 void write_mat(const std::string& path, const Eigen::SparseMatrix<double>& m, const Eigen::SparseMatrix<double>& k) {

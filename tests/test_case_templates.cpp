@@ -43,11 +43,11 @@ omega_start = 0.5
 omega_end = 2.0
 )";
 
-fs::path test_dir() { return fs::temp_directory_path() / ("hbtrack_template_tests_" + std::to_string(getpid())); }
+fs::path templates_dir() { return fs::temp_directory_path() / ("hbtrack_template_tests_" + std::to_string(getpid())); }
 
 fs::path write_file(const std::string& name, const std::string& text) {
-  fs::create_directories(test_dir());
-  const fs::path p = test_dir() / name;
+  fs::create_directories(templates_dir());
+  const fs::path p = templates_dir() / name;
   std::ofstream(p) << text;
   return p;
 }

@@ -16,7 +16,6 @@ using Eigen::VectorXd;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // normal_stiffness, tangential_stiffness, mu, normal_preload
 const std::vector<double> kProps{5.0, 20.0, 0.4, 1.0};
 
@@ -31,7 +30,7 @@ std::shared_ptr<FrictionalContact> contact(std::vector<int> dofs) {
 MatrixXd motion(int n, double an, double at) {
   MatrixXd x(n, 2);
   for (int t = 0; t < n; ++t) {
-    const double th = 2 * kPi * t / n;
+    const double th = 2 * std::numbers::pi * t / n;
     x(t, 0) = an * std::cos(th + 0.3) + 0.2 * an * std::sin(2 * th);
     x(t, 1) = at * std::cos(th) + 0.3 * at * std::sin(3 * th + 0.5);
   }

@@ -29,7 +29,6 @@ using Eigen::VectorXd;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 template <class Element>
 std::shared_ptr<Element> with_properties(std::shared_ptr<Element> e, std::vector<int> dofs, const std::vector<double>& props) {
@@ -93,7 +92,7 @@ TEST(HistoryTimeStepping, SteppingFromThePeriodicHistoryReproducesThePeriodicFor
   const int n = 128;
   MatrixXd x(n, 3);
   for (int t = 0; t < n; ++t) {
-    const double th = 2 * kPi * t / n;
+    const double th = 2 * std::numbers::pi * t / n;
     x(t, 0) = 0.3 * std::cos(th) + 0.05 * std::sin(3 * th);
     x(t, 1) = 0.2 * std::sin(th + 0.3) - 0.1 * std::cos(2 * th);
     x(t, 2) = 0.3 * std::cos(th + 1.0);  // separates when 5 x3 < -1
@@ -108,7 +107,7 @@ TEST(HistoryTimeStepping, SteppingFromThePeriodicHistoryReproducesThePeriodicFor
     ASSERT_EQ(history.cols(), e->history_state_size()) << e->type();
     HistoryStep step;
     for (int t = 0; t < n; ++t) {
-      e->history_step(local.row(t), history.row((t + n - 1) % n).transpose(), 2 * kPi / n, 1.0, props, step);
+      e->history_step(local.row(t), history.row((t + n - 1) % n).transpose(), 2 * std::numbers::pi / n, 1.0, props, step);
       EXPECT_LT((step.force.transpose() - r.force.row(t)).cwiseAbs().maxCoeff(), 1e-12) << e->type() << " sample " << t;
       EXPECT_LT((step.state - history.row(t).transpose()).cwiseAbs().maxCoeff(), 1e-12) << e->type() << " sample " << t;
     }
@@ -217,7 +216,7 @@ TEST(HistoryTimeStepping, MonodromyMultipliersMatchTheTimeIntegratorsFlow) {
   // linear oscillator of stiffness 2, multipliers exp((-0.01 +- i sqrt(2 - 1e-4)) T), which RK4
   // with 4000 steps reproduces to (omega_n dt)^4 ~ 1e-10.
   {
-    const double omega = 0.9, period = 2 * kPi / omega;
+    const double omega = 0.9, period = 2 * std::numbers::pi / omega;
     const FixedFrequencySolution s = solve_at_frequency(hbm, omega, {{"x", 0, ""}}, 1e-11, 50);
     ASSERT_TRUE(s.converged);
     ASSERT_LT(s.recorded.outputs[0].max, 0.1);

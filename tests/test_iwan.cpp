@@ -17,7 +17,6 @@ using Eigen::VectorXd;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // limit_force F_S, stiffness K_T, chi, beta
 const std::vector<double> kProps{2.0, 50.0, -0.5, 0.4};
 
@@ -31,7 +30,7 @@ std::shared_ptr<Iwan> iwan(std::vector<int> dofs, VectorXd weights, int sliders 
 
 VectorXd cosine(int n, double amplitude) {
   VectorXd d(n);
-  for (int t = 0; t < n; ++t) d(t) = amplitude * std::cos(2 * kPi * t / n);
+  for (int t = 0; t < n; ++t) d(t) = amplitude * std::cos(2 * std::numbers::pi * t / n);
   return d;
 }
 
@@ -42,8 +41,8 @@ double dissipation(const Iwan& e, const std::vector<double>& props, double a, in
   const VectorXd d = cosine(n, a);
   e.evaluate(d, d, 1.0, props, r, false);
   double s1 = 0;
-  for (int t = 0; t < n; ++t) s1 += r.force(t, 0) * std::sin(2 * kPi * t / n);
-  return -kPi * a * (2.0 / n) * s1;
+  for (int t = 0; t < n; ++t) s1 += r.force(t, 0) * std::sin(2 * std::numbers::pi * t / n);
+  return -std::numbers::pi * a * (2.0 / n) * s1;
 }
 
 // The discrete array's exact dissipation: a Jenkins slider of stiffness k and slip force F
@@ -136,7 +135,7 @@ TEST(Iwan, PropertyDerivativesMatchFiniteDifferences) {
   for (double a : {0.05, 0.6, 4.0}) {  // micro-slip, deep micro-slip, macro-slip
     MatrixXd x(n, 2);
     for (int t = 0; t < n; ++t) {
-      const double th = 2 * kPi * t / n;
+      const double th = 2 * std::numbers::pi * t / n;
       x(t, 0) = a * phi_max * (std::cos(th) + 0.2 * std::sin(2 * th));
       x(t, 1) = 0.3 * a * phi_max * std::sin(th + 0.4);
     }

@@ -18,7 +18,6 @@ using Eigen::VectorXd;
 namespace {
 
 constexpr double kStiffness = 20.0, kLimit = 1.0;
-constexpr double kPi = std::numbers::pi;
 
 std::shared_ptr<ElasticDryFriction> jenkins(std::vector<int> dofs, VectorXd weights) {
   auto e = std::make_shared<ElasticDryFriction>();
@@ -44,8 +43,8 @@ void describing_function(double a, double& c1, double& s1) {
   }
   const double ts = std::acos(1.0 - 2.0 * kLimit / (kStiffness * a));
   const double ka = kStiffness * a, f = kLimit;
-  c1 = 2.0 / kPi * ((2.0 * f - ka) * std::sin(ts) + ka * (ts / 2.0 + std::sin(2.0 * ts) / 4.0));
-  s1 = 2.0 / kPi * ((f - ka) * (1.0 - std::cos(ts)) + ka * std::sin(ts) * std::sin(ts) / 2.0 - f * (1.0 + std::cos(ts)));
+  c1 = 2.0 / std::numbers::pi * ((2.0 * f - ka) * std::sin(ts) + ka * (ts / 2.0 + std::sin(2.0 * ts) / 4.0));
+  s1 = 2.0 / std::numbers::pi * ((f - ka) * (1.0 - std::cos(ts)) + ka * std::sin(ts) * std::sin(ts) / 2.0 - f * (1.0 + std::cos(ts)));
 }
 
 }  // namespace
@@ -56,7 +55,7 @@ TEST(Jenkins, OnePassFromTheMaximumIsThePeriodicSteadyState) {
   const int n = 200;
   VectorXd d(n);
   for (int t = 0; t < n; ++t) {
-    const double th = 2 * kPi * t / n;
+    const double th = 2 * std::numbers::pi * t / n;
     d(t) = 0.3 + 0.2 * std::cos(th + 0.4) + 0.07 * std::sin(3 * th) - 0.04 * std::cos(5 * th);
   }
   double slider = 0.0;
@@ -79,7 +78,7 @@ TEST(Jenkins, StickStateIsContinuousAcrossTheSlipThreshold) {
   const auto e = jenkins({0}, VectorXd::Ones(1));
   const int n = 256;
   VectorXd shape(n);
-  for (int t = 0; t < n; ++t) shape(t) = std::cos(2 * kPi * t / n) + 0.3 * std::cos(2 * 2 * kPi * t / n);
+  for (int t = 0; t < n; ++t) shape(t) = std::cos(2 * std::numbers::pi * t / n) + 0.3 * std::cos(2 * 2 * std::numbers::pi * t / n);
   const double range = shape.maxCoeff() - shape.minCoeff();
   const double threshold = 2 * kLimit / kStiffness / range;
   const VectorXd below = force_of(*e, (threshold * (1 - 1e-9)) * shape), above = force_of(*e, (threshold * (1 + 1e-9)) * shape);
@@ -95,7 +94,7 @@ TEST(Jenkins, FirstHarmonicMatchesTheClosedFormDescribingFunction) {
   const auto e = jenkins({0}, VectorXd::Ones(1));
   const int n = 1 << 14;
   VectorXd c(n), s(n);
-  for (int t = 0; t < n; ++t) c(t) = std::cos(2 * kPi * t / n), s(t) = std::sin(2 * kPi * t / n);
+  for (int t = 0; t < n; ++t) c(t) = std::cos(2 * std::numbers::pi * t / n), s(t) = std::sin(2 * std::numbers::pi * t / n);
   for (double a : {0.01, 0.049, 0.051, 0.2, 1.0, 10.0}) {  // slip amplitude F/k = 0.05
     const VectorXd f = force_of(*e, a * c);
     const double c1 = 2.0 / n * f.dot(c), s1 = 2.0 / n * f.dot(s);
@@ -115,7 +114,7 @@ TEST(Jenkins, PropertyDerivativesMatchFiniteDifferences) {
     auto e = jenkins({0, 1}, (VectorXd(2) << 1.0, -0.7).finished());
     MatrixXd x(n, 2);
     for (int t = 0; t < n; ++t) {
-      const double th = 2 * kPi * t / n;
+      const double th = 2 * std::numbers::pi * t / n;
       x(t, 0) = a * std::cos(th) + 0.3 * a * std::sin(2 * th);
       x(t, 1) = 0.5 * a * std::sin(th + 0.2);
     }

@@ -21,9 +21,9 @@ using nlohmann::json;
 
 namespace {
 
-json read_json(const fs::path& p) { return json::parse(std::ifstream(p)); }
+using hbtrack::test::read_json;
 
-fs::path fresh_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir(name, true); }
+fs::path empty_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir(name, true); }
 
 const std::string kCoupled = hbtrack::test::source_path("examples/coupled_duffing.toml");
 
@@ -34,12 +34,12 @@ fs::path write_case(const fs::path& dir, const std::string& study) {
   return dir / "case.toml";
 }
 
-json without_timings(json j) {
+json without_timing_fields(json j) {
   if (j.is_object()) {
     for (const char* key : {"wall_s", "timings", "resumed_steps", "jobs", "runner"}) j.erase(key);
-    for (auto& [key, value] : j.items()) value = without_timings(value);
+    for (auto& [key, value] : j.items()) value = without_timing_fields(value);
   } else if (j.is_array()) {
-    for (auto& value : j) value = without_timings(value);
+    for (auto& value : j) value = without_timing_fields(value);
   }
   return j;
 }
@@ -51,7 +51,7 @@ TEST(StudyBranchesCli, BackboneAndSwitchedBranchesAreStepsOnThePageAndInTheFigur
   // the sanitizers, where the bad-key test below runs the same reader and the verbs' own tests
   // run the computations.
   if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "a study of several verbs; the Release pass runs it";
-  const fs::path dir = fresh_dir("hbtrack_study_branches");
+  const fs::path dir = empty_dir("hbtrack_study_branches");
   const std::string& study = kCoupled;  // its [study]: backbone = {mode = 1, range = [0.01, 6]}, switch = true
   const fs::path out = dir / "out";
   const CliRun r = run_cli("study " + study + " -q -o " + out.string());
@@ -113,7 +113,7 @@ TEST(StudyBranchesCli, BackboneAndSwitchedBranchesAreStepsOnThePageAndInTheFigur
   EXPECT_NE(resumed.err.find("study: stage 2 of 8, branches: running " + folders[0]), std::string::npos) << resumed.err;
   EXPECT_NE(resumed.err.find("(step 1 of 1)"), std::string::npos) << resumed.err;
   EXPECT_NE(resumed.err.find("study: stage 8 of 8, figures"), std::string::npos) << resumed.err;
-  EXPECT_EQ(without_timings(read_json(out / "summary.json")), without_timings(s));
+  EXPECT_EQ(without_timing_fields(read_json(out / "summary.json")), without_timing_fields(s));
   fs::remove_all(dir);
 }
 
@@ -121,7 +121,7 @@ TEST(StudyBranchesCli, ADuffingStudyRunsItsBackboneAndFindsNoPointToSwitch) {
   // The cheap counterpart of the test above, run under the sanitizers too (a second of
   // computing in Release): the same stage of the study on the Duffing oscillator, whose NFRC
   // has two folds and no BP or PD.
-  const fs::path dir = fresh_dir("hbtrack_study_duffing_backbone");
+  const fs::path dir = empty_dir("hbtrack_study_duffing_backbone");
   const std::string duffing = hbtrack::test::file_bytes(hbtrack::test::source_path("examples/duffing.toml"));
   std::ofstream(dir / "case.toml") << duffing
                                    << "\n[study]\nbackbone = { mode = 1, range = [0.01, 3.0] }\nswitch = true\nsimulate_periods = 0\n";
@@ -146,7 +146,7 @@ TEST(StudyBranchesCli, ADuffingStudyRunsItsBackboneAndFindsNoPointToSwitch) {
 }
 
 TEST(StudyBranchesCli, BadBackboneOrSwitchKeysGiveOneLineErrorsNamingFileFieldAndRule) {
-  const fs::path dir = fresh_dir("hbtrack_study_branches_bad");
+  const fs::path dir = empty_dir("hbtrack_study_branches_bad");
   const struct {
     std::string study, expected;
   } cases[] = {

@@ -23,12 +23,12 @@ namespace {
 
 const std::string kSmallBlade = hbtrack::test::source_path("tests/data/blade_small_study.toml");
 
-json read_json(const fs::path& p) { return json::parse(std::ifstream(p)); }
+using hbtrack::test::read_json;
 
-fs::path fresh_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir(name, false); }
+fs::path absent_dir(const std::string& name) { return hbtrack::test::fresh_temp_dir(name, false); }
 
 TEST(StudyCli, SmallBladeStudyFindsTheCuspAndEveryValidationLimitPointLiesOnTheTrackingCurve) {
-  const fs::path dir = fresh_dir("hbtrack_study_small_blade");
+  const fs::path dir = absent_dir("hbtrack_study_small_blade");
   // Stability off: the study's logic does not depend on it and Hill would double the run time.
   const CliRun r = run_cli("study " + kSmallBlade + " --set stability.method=none -q -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -104,7 +104,7 @@ TEST(StudyCli, SmallBladeStudyFindsTheCuspAndEveryValidationLimitPointLiesOnTheT
 }
 
 TEST(StudyCli, BadStudyInputGivesOneLineErrors) {
-  const fs::path dir = fresh_dir("hbtrack_study_bad");
+  const fs::path dir = absent_dir("hbtrack_study_bad");
   const CliRun no_study = run_cli("study " + hbtrack::test::source_path("examples/duffing.toml") + " -o " + dir.string());
   EXPECT_EQ(no_study.exit_code, 2);
   EXPECT_NE(no_study.err.find("study.track: missing"), std::string::npos) << no_study.err;
@@ -124,7 +124,7 @@ TEST(StudyCli, AStudyWhoseValidationFailsExitsOneAndSaysSoFirst) {
   // The Duffing oscillator's limit points tracked in the amplitude with at most 4 points a leg:
   // the curves stop near the start, so the validation NFRC at amplitude 2.5 (the case's
   // `validate`) has limit points on no tracking curve. The study must not say "completed".
-  const fs::path dir = fresh_dir("hbtrack_study_failing");
+  const fs::path dir = absent_dir("hbtrack_study_failing");
   fs::create_directories(dir);
   {
     std::ifstream duffing(hbtrack::test::source_path("examples/duffing.toml"));

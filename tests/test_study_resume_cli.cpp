@@ -33,7 +33,7 @@ fs::path write_small_study(const fs::path& dir) {
   return dir / "case.toml";
 }
 
-json read_json(const fs::path& p) { return json::parse(std::ifstream(p)); }
+using hbtrack::test::read_json;
 
 // A summary without what differs between two runs of the same study: times, and what the resumed
 // run says about itself.

@@ -18,7 +18,6 @@ using Eigen::VectorXd;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // stiffness, clearance, width, mu, radius, engine_order, rotation_speed, tangential_stiffness
 std::vector<double> properties(double engine_order, double rotation_speed, double tangential_stiffness = 20.0) {
   return {5.0, 0.1, 0.5, 0.4, 0.3, engine_order, rotation_speed, tangential_stiffness};
@@ -35,7 +34,7 @@ std::shared_ptr<TipContact> tip(ContactLawKind law, const std::vector<double>& p
 MatrixXd motion(int n, double ar, double at) {
   MatrixXd x(n, 3);
   for (int t = 0; t < n; ++t) {
-    const double th = 2 * kPi * t / n;
+    const double th = 2 * std::numbers::pi * t / n;
     x(t, 0) = 0.1 + ar * std::cos(th + 0.3) + 0.2 * ar * std::sin(2 * th);
     x(t, 1) = at * std::cos(th) + 0.3 * at * std::sin(3 * th + 0.5);
     x(t, 2) = 0.7 * at * std::sin(th + 0.9) - 0.2 * at * std::cos(2 * th);
@@ -45,7 +44,7 @@ MatrixXd motion(int n, double ar, double at) {
 
 // The law stepped sample by sample from rest over many periods; the tangential force of the last.
 MatrixXd stepped_force(const TipContact& e, const MatrixXd& x, double omega, const std::vector<double>& props, int periods) {
-  const double dt = 2 * kPi / omega / static_cast<double>(x.rows());
+  const double dt = 2 * std::numbers::pi / omega / static_cast<double>(x.rows());
   VectorXd state = VectorXd::Zero(2);
   MatrixXd force(x.rows(), 3);
   HistoryStep step;
@@ -109,7 +108,7 @@ TEST(TipContactStickSlip, StiffSliderOnAFastCasingTendsToTheSlidingLaw) {
   const int n = 256;
   const MatrixXd x = motion(n, 0.3, 0.15);
   MatrixXd v(n, 3);
-  for (int t = 0; t < n; ++t) v.row(t) = (x.row(t) - x.row((t + n - 1) % n)) * (n * omega / (2 * kPi));
+  for (int t = 0; t < n; ++t) v.row(t) = (x.row(t) - x.row((t + n - 1) % n)) * (n * omega / (2 * std::numbers::pi));
   TipContact sliding(ContactLawKind::polynomial);
   sliding.dofs = {0, 1, 2};
   std::vector<double> sliding_props = properties(engine_order, 0.0);

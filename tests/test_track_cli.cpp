@@ -19,16 +19,16 @@ using hbtrack::test::run_cli;
 
 namespace {
 
-const std::string kDuffing = hbtrack::test::source_path("examples/duffing.toml");
+const std::string kDuffingCase = hbtrack::test::source_path("examples/duffing.toml");
 
-nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(std::ifstream(p)); }
+using hbtrack::test::read_json;
 
 // A frc result of the Duffing example, shared by the tests of this file (per process).
 fs::path duffing_frc() {
   static const fs::path dir = [] {
     const fs::path d = fs::temp_directory_path() / ("hbtrack_track_frc_" + std::to_string(getpid()));
     fs::remove_all(d);
-    const CliRun r = run_cli("frc " + kDuffing + " -o " + d.string() + " -q");
+    const CliRun r = run_cli("frc " + kDuffingCase + " -o " + d.string() + " -q");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return d;
   }();
@@ -39,7 +39,7 @@ fs::path duffing_frc() {
 TEST(TrackCli, FollowsTheUpperLimitPointInAmplitudeToItsCusp) {
   const fs::path out = fs::temp_directory_path() / ("hbtrack_track_" + std::to_string(getpid()));
   fs::remove_all(out);
-  const CliRun r = run_cli("track " + kDuffing + " --from " + duffing_frc().string() + " --lp 2 --param amplitude --range 0.25:2 -o " +
+  const CliRun r = run_cli("track " + kDuffingCase + " --from " + duffing_frc().string() + " --lp 2 --param amplitude --range 0.25:2 -o " +
                            out.string() + " -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json s = read_json(out / "summary.json");
@@ -64,7 +64,7 @@ TEST(TrackCli, FollowsTheUpperLimitPointInAmplitudeToItsCusp) {
   // (the continuation from each reaches the frequency range: "open"), and there is no isola.
   const fs::path isolas = fs::temp_directory_path() / ("hbtrack_isolas_" + std::to_string(getpid()));
   fs::remove_all(isolas);
-  const CliRun i = run_cli("isolas " + kDuffing + " --from " + out.string() + " --at 1.5 -o " + isolas.string() + " -q");
+  const CliRun i = run_cli("isolas " + kDuffingCase + " --from " + out.string() + " --at 1.5 -o " + isolas.string() + " -q");
   ASSERT_EQ(i.exit_code, 0) << i.err;
   const nlohmann::json si = read_json(isolas / "summary.json");
   EXPECT_EQ(si["isolas"], 0);
@@ -73,7 +73,7 @@ TEST(TrackCli, FollowsTheUpperLimitPointInAmplitudeToItsCusp) {
   EXPECT_EQ(si["crossings"][0]["status"], "open");
 
   // A limit point beyond the case's frequency range is reported, not followed.
-  const CliRun narrow = run_cli("isolas " + kDuffing + " --from " + out.string() + " --at 1.5 --set continuation.omega_end=1.3 -o " +
+  const CliRun narrow = run_cli("isolas " + kDuffingCase + " --from " + out.string() + " --at 1.5 --set continuation.omega_end=1.3 -o " +
                                 isolas.string() + " -q");
   ASSERT_EQ(narrow.exit_code, 0) << narrow.err;
   int outside = 0;
@@ -184,7 +184,7 @@ TEST(TrackCli, ReadsSubnormalHarmonicsBackAsNumbers) {
   row = row.substr(0, row.find(',') + 1) + "1.0869444208507424e-322" + row.substr(second);
   std::ofstream(copy / "special_states.csv") << header << "\n" << row << "\n" << rest;
   const fs::path out = fs::temp_directory_path() / ("hbtrack_track_subnormal_out_" + std::to_string(getpid()));
-  const CliRun r = run_cli("track " + kDuffing + " --from " + copy.string() + " --lp 1 --param amplitude --range 0.5:1.5 -o " + out.string() +
+  const CliRun r = run_cli("track " + kDuffingCase + " --from " + copy.string() + " --lp 1 --param amplitude --range 0.5:1.5 -o " + out.string() +
                            " -q");
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
@@ -202,12 +202,12 @@ TEST(TrackCli, BadFlagsFailWithOneLineNamingTheFlag) {
       {"--lp 1 --param amplitude --range 0.5:2 --method newton", "--method: must be bordered or extended"},
   };
   for (const auto& [flags, message] : cases) {
-    const CliRun r = run_cli("track " + kDuffing + " --from " + from + " " + flags + out);
+    const CliRun r = run_cli("track " + kDuffingCase + " --from " + from + " " + flags + out);
     EXPECT_EQ(r.exit_code, 2) << flags;
     EXPECT_NE(r.err.find(message), std::string::npos) << flags << " -> " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << flags << " -> " << r.err;
   }
-  const CliRun not_track = run_cli("isolas " + kDuffing + " --from " + from + " --at 1.5" + out);
+  const CliRun not_track = run_cli("isolas " + kDuffingCase + " --from " + from + " --at 1.5" + out);
   EXPECT_EQ(not_track.exit_code, 2);
   EXPECT_NE(not_track.err.find("options.tracking.parameter missing"), std::string::npos) << not_track.err;
 }
@@ -287,12 +287,12 @@ TEST(TrackCli, IsolasAtTheTrackedValueItselfFindsTheLimitPointTheCurveStartsFrom
   // rotor 67 study's validations at the case's own mu and clearance found no crossing) and LP2.
   const fs::path base = fs::temp_directory_path() / ("hbtrack_isolas_at_start_" + std::to_string(getpid()));
   fs::remove_all(base);
-  ASSERT_EQ(run_cli("frc " + kDuffing + " -q -o " + (base / "frc").string()).exit_code, 0);
-  ASSERT_EQ(run_cli("track " + kDuffing + " --from " + (base / "frc").string() + " --lp 1 --param amplitude --range 0.1:2 -q -o " +
+  ASSERT_EQ(run_cli("frc " + kDuffingCase + " -q -o " + (base / "frc").string()).exit_code, 0);
+  ASSERT_EQ(run_cli("track " + kDuffingCase + " --from " + (base / "frc").string() + " --lp 1 --param amplitude --range 0.1:2 -q -o " +
                     (base / "track").string())
                 .exit_code,
             0);
-  ASSERT_EQ(run_cli("isolas " + kDuffing + " --from " + (base / "track").string() + " --at 1 -q -o " + (base / "isolas").string()).exit_code,
+  ASSERT_EQ(run_cli("isolas " + kDuffingCase + " --from " + (base / "track").string() + " --at 1 -q -o " + (base / "isolas").string()).exit_code,
             0);
   const nlohmann::json nfrc = read_json((base / "frc" / "summary.json").string());
   const nlohmann::json isolas = read_json((base / "isolas" / "summary.json").string());

@@ -57,7 +57,7 @@ void add_backbone_verb(CLI::App& app, VerbList& verbs) {
   verbs.push_back({command, [] { return run_backbone(options); }});
 }
 
-const VerbRegistrar registrar(add_backbone_verb);
+const VerbRegistrar backbone_registrar(add_backbone_verb);
 
 }  // namespace
 

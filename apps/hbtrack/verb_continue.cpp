@@ -57,7 +57,7 @@ void add_continue_verb(CLI::App& app, VerbList& verbs) {
   verbs.push_back({command, [] { return run_continue(options); }});
 }
 
-const VerbRegistrar registrar(add_continue_verb);
+const VerbRegistrar continue_registrar(add_continue_verb);
 
 }  // namespace
 

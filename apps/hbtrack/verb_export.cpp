@@ -38,7 +38,7 @@ void add_export_verb(CLI::App& app, VerbList& verbs) {
   verbs.push_back({e, [] { return run_export(options); }});
 }
 
-const VerbRegistrar registrar(add_export_verb);
+const VerbRegistrar export_registrar(add_export_verb);
 
 }  // namespace
 

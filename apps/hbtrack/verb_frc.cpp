@@ -120,7 +120,7 @@ void add_frc_verbs(CLI::App& app, VerbList& verbs) {
   verbs.push_back({solve, [] { return run_solve(solve_options, omega); }});
 }
 
-const VerbRegistrar registrar(add_frc_verbs);
+const VerbRegistrar frc_registrar(add_frc_verbs);
 
 }  // namespace
 

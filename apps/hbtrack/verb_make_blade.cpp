@@ -173,7 +173,7 @@ void add_make_blade_verbs(CLI::App& app, VerbList& verbs) {
   verbs.push_back({make, [] { return run_make_blade(options); }});
 }
 
-const VerbRegistrar registrar(add_make_blade_verbs);
+const VerbRegistrar make_blade_registrar(add_make_blade_verbs);
 
 }  // namespace
 

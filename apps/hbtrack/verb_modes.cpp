@@ -36,7 +36,7 @@ void add_modes_verbs(CLI::App& app, VerbList& verbs) {
   verbs.push_back({modes, [] { return run_modes(options, count); }});
 }
 
-const VerbRegistrar registrar(add_modes_verbs);
+const VerbRegistrar modes_registrar(add_modes_verbs);
 
 }  // namespace
 

@@ -70,7 +70,7 @@ void add_plot_verb(CLI::App& app, VerbList& verbs) {
   verbs.push_back({plot, [] { return run_plot(options); }});
 }
 
-const VerbRegistrar registrar(add_plot_verb);
+const VerbRegistrar plot_registrar(add_plot_verb);
 
 }  // namespace
 

@@ -266,7 +266,7 @@ void add_reduce_verbs(CLI::App& app, VerbList& verbs) {
   verbs.push_back({reduce, [] { return run_reduce(options); }});
 }
 
-const VerbRegistrar registrar(add_reduce_verbs);
+const VerbRegistrar reduce_registrar(add_reduce_verbs);
 
 }  // namespace
 

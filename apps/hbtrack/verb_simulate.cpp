@@ -101,7 +101,7 @@ void add_simulate_verbs(CLI::App& app, VerbList& verbs) {
   verbs.push_back({simulate, [] { return run_simulate(options); }});
 }
 
-const VerbRegistrar registrar(add_simulate_verbs);
+const VerbRegistrar simulate_registrar(add_simulate_verbs);
 
 }  // namespace
 

@@ -584,7 +584,7 @@ void add_study_verb(CLI::App& app, VerbList& verbs) {
   verbs.push_back({s, [] { return run_study(options); }});
 }
 
-const VerbRegistrar registrar(add_study_verb);
+const VerbRegistrar study_registrar(add_study_verb);
 
 }  // namespace
 

@@ -223,7 +223,7 @@ void add_sweep_verb(CLI::App& app, VerbList& verbs) {
   verbs.push_back({s, [] { return run_sweep(options); }});
 }
 
-const VerbRegistrar registrar(add_sweep_verb);
+const VerbRegistrar sweep_registrar(add_sweep_verb);
 
 }  // namespace
 

@@ -84,7 +84,7 @@ void add_switch_verb(CLI::App& app, VerbList& verbs) {
   verbs.push_back({command, [] { return run_switch(options); }});
 }
 
-const VerbRegistrar registrar(add_switch_verb);
+const VerbRegistrar switch_registrar(add_switch_verb);
 
 }  // namespace
 

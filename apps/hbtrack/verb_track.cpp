@@ -206,7 +206,7 @@ void add_track_verbs(CLI::App& app, VerbList& verbs) {
   verbs.push_back({i, [] { return run_isolas(isolas); }});
 }
 
-const VerbRegistrar registrar(add_track_verbs);
+const VerbRegistrar track_registrar(add_track_verbs);
 
 }  // namespace
 

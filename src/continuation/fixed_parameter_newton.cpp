@@ -2,6 +2,7 @@
 
 #include "hbtrack/util/dense_lu.hpp"
 #include "hbtrack/util/phase_timer.hpp"
+#include "scaled_problem.hpp"  // inf_norm
 
 namespace hbtrack::continuation_detail {
 
@@ -9,8 +10,6 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 namespace {
-
-double inf_norm(const VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
 int plain_newton(ContinuationProblem& problem, VectorXd& u, double lambda, double tolerance, int max_iterations, int& used) {
   VectorXd r, r_lambda;
