@@ -89,6 +89,10 @@ TEST(StudyCli, SmallBladeStudyFindsTheCuspAndEveryValidationLimitPointLiesOnTheT
   std::stringstream page;
   page << std::ifstream(dir / "index.md").rdbuf();
   EXPECT_NE(page.str().find("| amplitude | min |"), std::string::npos) << "the cusp is in the page's table";
+  // The nominal NFRC's friction loop gain, one entry per contact node, in the summary and the page.
+  ASSERT_TRUE(s["nfrc"].contains("friction_loop_gain"));
+  EXPECT_EQ(s["nfrc"]["friction_loop_gain"].size(), 3u);
+  EXPECT_NE(page.str().find("## Friction loop gain"), std::string::npos);
   // Two periods cannot be periodic to simulate's criterion (three confirming periods): the
   // comparison says so rather than passing the transient off as the steady state.
   EXPECT_FALSE(s["simulation"]["converged"].get<bool>());

@@ -36,6 +36,26 @@ void nominal_section(std::ostream& out, const json& s) {
         << (key.empty() ? "" : num(sp.value(key, 0.0), "%.4g")) << " |\n";
   }
   out << "\n";
+  const json warnings = n.value("warnings", json::array());
+  for (const auto& w : warnings) out << "- warning: " << w.get<std::string>() << "\n";
+  if (!warnings.empty()) out << "\n";
+}
+
+// Whether friction feeds each contact's normal load (analysis/friction_loop_gain.hpp).
+void friction_loop_gain_section(std::ostream& out, const json& s) {
+  if (!s.contains("nfrc") || !s["nfrc"].contains("friction_loop_gain")) return;
+  auto value = [](const json& e, const char* key, const char* format) {
+    return e.contains(key) && e[key].is_number() ? num(e[key].get<double>(), format) : std::string("-");
+  };
+  out << "## Friction loop gain\n\nmu G_nt / G_nn from the static flexibility at each contact's dofs, and the loop gain "
+         "k G_nn (ratio - 1) (docs/elements.md): above 1 a rigid contact is ill-posed there and the contact stiffness sets "
+         "the result.\n\n| element | dofs | sense | ratio | gain | k for gain 1 | self-energising |\n|---|---|---|---|---|---|---|\n";
+  for (const auto& e : s["nfrc"]["friction_loop_gain"])
+    out << "| " << e.value("element", 0) << " " << e.value("type", "") << " | " << e.value("normal_dof", "") << ", "
+        << e.value("tangential_dof", "") << " | " << e.value("sense", 0) << " (" << e.value("sense_from", "") << ") | "
+        << value(e, "ratio", "%.3f") << " | " << value(e, "gain", "%.3g") << " | " << value(e, "critical_stiffness", "%.3g") << " | "
+        << (e.value("self_energising", false) ? "yes" : "no") << " |\n";
+  out << "\n";
 }
 
 // The backbones and switched branches [study] asked for (study_branches.hpp).
@@ -151,6 +171,7 @@ void write_study_report(const std::string& dir, const json& s) {
   }
   for (const auto& f : s.value("figures", json::array())) out << "![" << f.get<std::string>() << "](" << f.get<std::string>() << ")\n\n";
   nominal_section(out, s);
+  friction_loop_gain_section(out, s);
   branches_section(out, s);
   tracking_section(out, s);
   simulation_section(out, s);

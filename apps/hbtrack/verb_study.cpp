@@ -204,6 +204,11 @@ class Study {
     for (size_t row : limit_point_rows(s["special_points"])) limit_points_.push_back(s["special_points"][row]);  // LP1 lowest omega
     summary_["nfrc"] = {{"points", s["points"]}, {"special_points", s["special_points"]}, {"limit_points", limit_points_.size()},
                         {"stop_reason", s.value("stop_reason", "")}, {"wall_s", s["timings"]["wall_s"]}};
+    // The contacts' loop gain, and the NFRC's warnings, which would otherwise stay in its log.
+    if (s.contains("friction_loop_gain")) summary_["nfrc"]["friction_loop_gain"] = s["friction_loop_gain"];
+    summary_["nfrc"]["warnings"] = s.value("warnings", json::array());
+    if (!o_.common.quiet)
+      for (const auto& w : summary_["nfrc"]["warnings"]) std::fprintf(stderr, "study: warning: nfrc: %s\n", w.get<std::string>().c_str());
     return true;
   }
 

@@ -67,7 +67,8 @@ def frc(case, *, start=None, point=None, progress=None, element_forces=False, **
         ``special_points`` (list of dicts: type LP/BP/PD/NS, index, omega, located, outputs),
         ``special_states``, ``dof_states``, ``dof_special_states`` ({column: array}: every dof's
         harmonics, as states.csv and special_states.csv), ``element_forces`` ({column: array},
-        when asked), ``summary`` (as summary.json; with `start`, ``started_from`` = {point, omega}
+        when asked), ``summary`` (as summary.json: ``warnings``, and ``friction_loop_gain`` for
+        contacts with friction, docs/outputs.md; with `start`, ``started_from`` = {point, omega}
         and ``folder`` for a result read from one) and ``kind`` = "frc".
 
     Raises

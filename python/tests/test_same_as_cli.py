@@ -90,6 +90,11 @@ def test_blade_frc_matches_cli(results_dir):
     assert not in_contact[0] and in_contact[-1]
     assert_same_columns(api["branch"], cli["branch"])
     assert_same_special_points(api["special_points"], cli["special_points"])
+    # The friction loop gain of the 9 tip nodes, and its warnings (n2 and n3 above 1), as the CLI's.
+    assert len(api["summary"]["friction_loop_gain"]) == 9
+    assert api["summary"]["friction_loop_gain"] == cli["summary"]["friction_loop_gain"]
+    assert [g["node"] for g in api["summary"]["friction_loop_gain"] if g["self_energising"]] == ["n2", "n3"]
+    assert api["summary"]["warnings"] == cli["summary"]["warnings"]
 
 
 def test_api_starts_from_a_cli_result_folder(duffing_case, duffing_frc_cli, duffing_track_cli):

@@ -36,6 +36,11 @@ const std::vector<std::string>& FrictionalContact::property_names() const {
   return law_ == ContactFormulation::penalty ? penalty : dlft;
 }
 
+std::optional<FrictionCoupling> FrictionalContact::friction_coupling(const std::vector<double>& props, double /*omega*/) const {
+  if (law_ == ContactFormulation::dlft) return FrictionCoupling{0, 1, props[0], 0.0, 0};  // properties mu, epsilon, gap
+  return FrictionCoupling{0, 1, props[kMu], props[kNormalStiffness], 0};
+}
+
 void FrictionalContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& /*v*/, double /*omega*/,
                                  const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) const {
   if (local_dofs() != 2 || x.cols() != 2) throw std::invalid_argument("frictional_contact: needs 2 dofs [normal, tangential]");

@@ -42,6 +42,14 @@ void TipContact::switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixX
   out[0] = x(0, kR) - p[kClearance];
 }
 
+std::optional<FrictionCoupling> TipContact::friction_coupling(const std::vector<double>& p, double omega) const {
+  // The element's force is the structure's internal one: the casing pushes the tip with
+  // -mu f_N sign(v_theta + rho W) along theta, -sign(W) at rest.
+  const double rotation = p[kEngineOrder] * omega + p[kRotationSpeed];
+  const int sense = rotation > 0 ? -1 : rotation < 0 ? 1 : 0;
+  return FrictionCoupling{kR, kTheta, p[kMu], p[kStiffness], sense};
+}
+
 void TipContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& p,
                           ElementResponse& out, bool want_property_derivatives) const {
   if (friction_ == TipFriction::stick_slip) {

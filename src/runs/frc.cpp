@@ -10,6 +10,7 @@
 #include "hbtrack/runs/branch_tables.hpp"
 #include "hbtrack/runs/case_system.hpp"
 #include "hbtrack/runs/failure_advice.hpp"
+#include "hbtrack/runs/friction_loop_gain_summary.hpp"
 #include "hbtrack/runs/resume.hpp"
 #include "hbtrack/util/coverage.hpp"
 
@@ -23,6 +24,12 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   if (options.start) options.start->require_unknowns(hbm.unknowns());
   json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   if (!options.started_from.is_null()) summary["started_from"] = options.started_from;
+  // Static, so known before the first point: a stopped run has it too.
+  const double from = options.start ? options.start->omega : c.nfrc.omega_start, end = c.nfrc.omega_end;
+  const std::vector<FrictionLoopGain> gains = case_friction_loop_gains(c, from, end);
+  std::vector<std::string> warnings = friction_loop_gain_warnings(gains);
+  if (!gains.empty()) summary["friction_loop_gain"] = friction_loop_gain_json(gains);
+  if (!warnings.empty()) summary["warnings"] = warnings;
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedContinuation> resumed;
   if (sink.resuming())
@@ -41,7 +48,6 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   const std::string checkpoint = sink.checkpoint_path();
   if (!checkpoint.empty())
     restart.on_state = [&](const ContinuationState& state) { write_continuation_state(checkpoint, state, settings); };
-  const double from = options.start ? options.start->omega : c.nfrc.omega_start, end = c.nfrc.omega_end;
   Coverage coverage = Coverage::one_way(from, end);
   const RecordedObserver record = [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
     tables.append(p, rec);
@@ -60,8 +66,8 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};
   tables.append_special_points(r.continuation.special_points);
-  std::vector<std::string> warnings =
-      special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start));
+  for (std::string& w : special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start)))
+    warnings.push_back(std::move(w));
   for (std::string& w :
        unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
     warnings.push_back(std::move(w));

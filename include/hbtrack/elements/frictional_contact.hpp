@@ -52,6 +52,8 @@ class FrictionalContact final : public NonlinearElement {
                     const std::vector<double>& property_values, HistoryStep& out) const override;
   Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega,
                                    const std::vector<double>& property_values) const override;
+  // The slider may slip either way (sense 0); DLFT's contact is rigid (stiffness 0).
+  std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& property_values, double omega) const override;
   ContactFormulation law() const { return law_; }
 
  private:

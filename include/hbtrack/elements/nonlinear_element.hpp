@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,20 @@ struct HistoryStep {
   bool diagonal_state = false;
 };
 
+// How a contact element's friction couples back into its normal load, for the static loop gain
+// of src/analysis/friction_loop_gain.cpp. Local dof `normal` is positive towards the contact
+// (closing the gap): the contact pushes the structure along -normal with its force f_N, and
+// friction pushes it along `sense` * tangential with mu f_N while it slides.
+struct FrictionCoupling {
+  int normal = 0, tangential = 1;  // local dof indices
+  double mu = 0;
+  // d f_N / d x_n in contact (the penalty stiffness); 0 for a rigid contact (DLFT).
+  double stiffness = 0;
+  // +1 or -1 when the law fixes the sliding sense (a turning casing); 0 when the motion sets it
+  // and friction may act either way.
+  int sense = 0;
+};
+
 class NonlinearElement {
  public:
   virtual ~NonlinearElement() = default;
@@ -120,6 +135,12 @@ class NonlinearElement {
   virtual void evaluate_with_residual(const Eigen::MatrixXd& x, const Eigen::MatrixXd& r, double omega,
                                       const std::vector<double>& property_values, ElementResponse& out,
                                       bool want_property_derivatives) const;
+
+  // A contact element with Coulomb friction at frequency omega; nullopt for any other element.
+  virtual std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& /*property_values*/,
+                                                            double /*omega*/) const {
+    return std::nullopt;
+  }
 
   int local_dofs() const { return static_cast<int>(dofs.size()); }
   std::vector<double> property_values(const ParameterValues& parameters) const;

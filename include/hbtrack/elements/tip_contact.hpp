@@ -48,6 +48,8 @@ class TipContact final : public NonlinearElement {
                     const std::vector<double>& property_values, HistoryStep& out) const override;
   Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega,
                                    const std::vector<double>& property_values) const override;
+  // Friction on the tip along -sign(W) theta (the casing drags it the way it turns).
+  std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& property_values, double omega) const override;
   ContactLawKind law_kind() const { return kind_; }
   TipFriction friction() const { return friction_; }
 
