@@ -89,6 +89,21 @@ TEST(StudyCli, SmallBladeStudyFindsTheCuspAndEveryValidationLimitPointLiesOnTheT
   std::stringstream page;
   page << std::ifstream(dir / "index.md").rdbuf();
   EXPECT_NE(page.str().find("| amplitude | min |"), std::string::npos) << "the cusp is in the page's table";
+  // The nominal NFRC's special points in increasing omega, as the figures number them
+  // (summary.json keeps the branch's order).
+  {
+    std::istringstream lines(page.str().substr(page.str().find("| special point | omega (rad/s) |")));
+    std::string line;
+    std::getline(lines, line);
+    std::getline(lines, line);  // |---|
+    std::vector<double> omegas;
+    while (std::getline(lines, line) && line.rfind("| ", 0) == 0) {
+      const std::string omega = line.substr(line.find(" | ") + 3, line.find(" | ", line.find(" | ") + 3) - line.find(" | ") - 3);
+      omegas.push_back(std::stod(omega));
+    }
+    EXPECT_EQ(omegas.size(), s["nfrc"]["special_points"].size());
+    EXPECT_TRUE(std::is_sorted(omegas.begin(), omegas.end())) << page.str();
+  }
   // Two periods cannot be periodic to simulate's criterion (three confirming periods): the
   // comparison says so rather than passing the transient off as the steady state.
   EXPECT_FALSE(s["simulation"]["converged"].get<bool>());
