@@ -21,6 +21,7 @@ if(HBTRACK_PYTHON)
   install(TARGETS _hbtrack LIBRARY DESTINATION ${HBTRACK_PYTHON_INSTALL_DIR}/hbtrack)
   install(DIRECTORY python/hbtrack/ DESTINATION ${HBTRACK_PYTHON_INSTALL_DIR}/hbtrack
           FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
+  install(FILES ${CMAKE_BINARY_DIR}/python/hbtrack/_built_for.txt DESTINATION ${HBTRACK_PYTHON_INSTALL_DIR}/hbtrack)
   # The installed tool finds this package from its own bin folder, so that a moved or copied
   # prefix keeps working (apps/hbtrack/python_package.cpp).
   if(IS_ABSOLUTE "${HBTRACK_PYTHON_INSTALL_DIR}")

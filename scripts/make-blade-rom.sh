@@ -20,6 +20,8 @@ trap 'rm -rf "$work"' EXIT
 
 mkdir -p data/blade
 cp "$work/rom/M.mtx" "$work/rom/K.mtx" "$work/rom/boundary_nodes.csv" "$work/rom/summary.json" data/blade/
+# The full model's summary, with its mode names (1B, 2B, 1T), which `hbtrack modes` shows.
+cp "$work/fe/summary.json" data/blade/full_model_summary.json
 
 /usr/bin/python3 - "$work" <<'PY'
 import json, sys
@@ -35,4 +37,4 @@ for r in range(3):
     label = f"{fe['mode_types'][r]}/{fine['mode_types'][r]}"
     print(f"{label:5} {paper[r]:9.2f} {f:9.2f} {100*(f/paper[r]-1):+8.2f}% {g:9.2f} {100*(f/g-1):+7.2f}% {q:9.2f} {100*(q/f-1):+7.3f}%")
 PY
-echo "data/blade/: M.mtx K.mtx boundary_nodes.csv summary.json"
+echo "data/blade/: M.mtx K.mtx boundary_nodes.csv summary.json full_model_summary.json"

@@ -53,9 +53,10 @@ inline CliRun run_cli(const std::string& args) {
   return {WEXITSTATUS(status), ss.str()};
 }
 
-// `hbtrack ARGS...` started in the background (output discarded), for tests that signal it. In
-// its own process group when asked, so that the test can signal it with its children.
-inline pid_t spawn_cli(const std::vector<std::string>& args, bool own_process_group = false) {
+// `hbtrack ARGS...` started in the background (output discarded, or stderr into `err_file`), for
+// tests that signal it. In its own process group when asked, so that the test can signal it with
+// its children.
+inline pid_t spawn_cli(const std::vector<std::string>& args, bool own_process_group = false, const std::string& err_file = "/dev/null") {
   std::vector<std::string> argv_storage{HBTRACK_CLI};
   argv_storage.insert(argv_storage.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -64,7 +65,7 @@ inline pid_t spawn_cli(const std::vector<std::string>& args, bool own_process_gr
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   if (own_process_group) {

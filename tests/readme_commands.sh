@@ -1,32 +1,51 @@
 #!/usr/bin/env bash
-# Runs every command of a page's command block as written (by default the README's "Using it";
-# docs/tutorial.md's "The commands" too), in a scratch folder that sees the source tree's
-# examples/, python/ and data/, with the built hbtrack first on the PATH.
-#   bash tests/readme_commands.sh HBTRACK_BINARY SOURCE_DIR [PAGE HEADING]
-# Fails (naming the command) when one exits non-zero: the pages' commands stay true.
+# Runs a page's command blocks as written, in order, in one scratch folder that sees the source
+# tree's examples/, python/ and data/, with the built hbtrack first on the PATH: by default the
+# README's "Using it"; the tests name the others (README's Python and "Beyond the NFRC" blocks,
+# docs/tutorial.md's "The commands").
+#   bash tests/readme_commands.sh HBTRACK_BINARY SOURCE_DIR [PAGE HEADING...]
+# Each heading's first fenced block: a shell block line by line (continuation lines joined), a
+# ```python block as one script under /usr/bin/python3 with the build's module
+# (HBTRACK_BINARY's folder/python). Fails (naming the command) when one exits non-zero: the
+# pages' commands stay true.
 set -euo pipefail
 binary=$(realpath "$1")
 source_dir=$(realpath "$2")
 page=${3:-README.md}
-heading=${4:-## Using it}
+shift $(($# < 3 ? $# : 3))
+headings=("$@")
+[ ${#headings[@]} -gt 0 ] || headings=("## Using it")
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/hbtrack_readme.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT
 mkdir "$scratch/bin"
 ln -s "$binary" "$scratch/bin/hbtrack"
 for d in examples python data; do ln -s "$source_dir/$d" "$scratch/$d"; done
-# The first fenced block after the heading, continuation lines joined.
-commands=$(awk -v heading="$heading" 'index($0, heading) == 1 {section = 1} section && /^```/ {if (inside) exit; inside = 1; next} inside' "$source_dir/$page" |
-  sed -e ':join' -e '/\\$/{N; s/\\\n//; b join}')
-[ -n "$commands" ] || { echo "$page: no command block after '$heading'" >&2; exit 1; }
 cd "$scratch"
 count=0
-while IFS= read -r command; do
-  [ -z "${command// }" ] && continue
-  count=$((count + 1))
-  if ! PATH="$scratch/bin:$PATH" MPLBACKEND=Agg bash -c "$command" > log.txt 2>&1; then
-    echo "$page command failed: $command" >&2
-    tail -5 log.txt >&2
-    exit 1
+for heading in "${headings[@]}"; do
+  # The first fenced block after the heading, its opening fence first.
+  block=$(awk -v heading="$heading" 'index($0, heading) == 1 {section = 1} section && /^```/ {if (inside) exit; inside = 1; print; next} inside' "$source_dir/$page")
+  [ -n "$block" ] || { echo "$page: no command block after '$heading'" >&2; exit 1; }
+  fence=$(head -1 <<< "$block")
+  body=$(tail -n +2 <<< "$block")
+  if [ "$fence" = '```python' ]; then
+    count=$((count + 1))
+    if ! PATH="$scratch/bin:$PATH" PYTHONPATH="$(dirname "$binary")/python" MPLBACKEND=Agg /usr/bin/python3 - <<< "$body" > log.txt 2>&1; then
+      echo "$page: the Python block after '$heading' failed" >&2
+      tail -5 log.txt >&2
+      exit 1
+    fi
+    continue
   fi
-done <<< "$commands"
+  commands=$(sed -e ':join' -e '/\\$/{N; s/\\\n//; b join}' <<< "$body")
+  while IFS= read -r command; do
+    [ -z "${command// }" ] && continue
+    count=$((count + 1))
+    if ! PATH="$scratch/bin:$PATH" MPLBACKEND=Agg bash -c "$command" > log.txt 2>&1; then
+      echo "$page command failed: $command" >&2
+      tail -5 log.txt >&2
+      exit 1
+    fi
+  done <<< "$commands"
+done
 echo "$count $page commands ran"

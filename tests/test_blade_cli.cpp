@@ -124,6 +124,8 @@ TEST_F(BladeCli, MakeBladeThenReduceFromMatrixMarketMatAndCalculixGiveTheSameMod
   EXPECT_GT(s["timings"]["wall_s"].get<double>(), 0.0);
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(s["natural_frequencies"][i].get<double>() / s["full_model"]["natural_frequencies"][i].get<double>(), 1.0, 0.005);
+  // make-blade's summary beside the matrices: its mode names kept for `hbtrack modes`.
+  EXPECT_EQ(s["full_model"]["mode_types"], json({"1B", "2B", "1T", "3B", "1E", "2T"}));
   std::ifstream boundary(path("rom_mtx/boundary_nodes.csv"));
   std::string header;
   std::getline(boundary, header);
@@ -241,6 +243,15 @@ TEST_F(BladeCli, ModesOfTheShippedBladeCase) {
   const double paper[] = {2039.78, 6343.69, 10745.26};
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(s["natural_frequencies"][i].get<double>() / paper[i], 1.0, 0.05);
   EXPECT_EQ(s["dofs"], 39);
+  // Without -q: each mode named from the full model's summary, with the full model's frequency.
+  const CliRun shown = run("modes " + hbtrack::test::source_path("examples/blade/nominal.toml") + " --count 4 -o " + path("modes_shown"));
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  for (const char* line : {"  mode 1 1B: 2035.", "  mode 2 2B: 6331.", "  mode 3 1T: 10735.", "  mode 4 3B: "})
+    EXPECT_NE(shown.err.find(line), std::string::npos) << line << "\n" << shown.err;
+  EXPECT_NE(shown.err.find(", full model 2035.2124 (+0.003 %)"), std::string::npos) << shown.err;
+  EXPECT_NE(shown.err.find("the full model's, which the docs quote ("), std::string::npos) << shown.err;
+  EXPECT_NE(shown.err.find("data/blade/summary.json: full_model), differ by the percentages shown"), std::string::npos)
+      << shown.err;
 }
 
 // The nominal contact study end to end, coarsened to keep the suite quick: H = 5 and N = 256

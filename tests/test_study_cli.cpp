@@ -93,6 +93,21 @@ TEST(StudyCli, SmallBladeStudyFindsTheCuspAndEveryValidationLimitPointLiesOnTheT
   ASSERT_TRUE(s["nfrc"].contains("friction_loop_gain"));
   EXPECT_EQ(s["nfrc"]["friction_loop_gain"].size(), 3u);
   EXPECT_NE(page.str().find("## Friction loop gain"), std::string::npos);
+  // The nominal NFRC's special points in increasing omega, as the figures number them
+  // (summary.json keeps the branch's order).
+  {
+    std::istringstream lines(page.str().substr(page.str().find("| special point | omega (rad/s) |")));
+    std::string line;
+    std::getline(lines, line);
+    std::getline(lines, line);  // |---|
+    std::vector<double> omegas;
+    while (std::getline(lines, line) && line.rfind("| ", 0) == 0) {
+      const std::string omega = line.substr(line.find(" | ") + 3, line.find(" | ", line.find(" | ") + 3) - line.find(" | ") - 3);
+      omegas.push_back(std::stod(omega));
+    }
+    EXPECT_EQ(omegas.size(), s["nfrc"]["special_points"].size());
+    EXPECT_TRUE(std::is_sorted(omegas.begin(), omegas.end())) << page.str();
+  }
   // Two periods cannot be periodic to simulate's criterion (three confirming periods): the
   // comparison says so rather than passing the transient off as the steady state.
   EXPECT_FALSE(s["simulation"]["converged"].get<bool>());

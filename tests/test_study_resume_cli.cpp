@@ -161,7 +161,7 @@ TEST(StudyResume, ASecondStudyIntoALiveStudysFolderIsRefusedInOneLine) {
   fs::remove_all(dir);
 }
 
-TEST(StudyResume, AFailedNominalStepStopsTheStudyInOneLineAndResumeRunsItAgain) {
+TEST(StudyResume, AFailedNominalStepStopsTheStudyWithItsReasonAndResumeRunsItAgain) {
   // nfrc/summary.json a folder: the nominal step cannot write its summary (exit 3). The study
   // then ended with "[json.exception.type_error.306] cannot use value() with null", exit 3.
   const fs::path dir = fresh_dir("hbtrack_study_failed_step");
@@ -171,9 +171,13 @@ TEST(StudyResume, AFailedNominalStepStopsTheStudyInOneLineAndResumeRunsItAgain) 
   const CliRun failed = run_cli("study " + study + " -q --jobs 1 -o " + out.string());
   EXPECT_EQ(failed.exit_code, 1) << failed.err;
   EXPECT_NE(failed.err.find("study stopped: nfrc failed (exit 3"), std::string::npos) << failed.err;
-  EXPECT_NE(failed.err.find("--resume"), std::string::npos) << failed.err;
   EXPECT_EQ(failed.err.find("json.exception"), std::string::npos) << failed.err;
-  EXPECT_EQ(std::count(failed.err.begin(), failed.err.end(), '\n'), 1) << failed.err;
+  // The reason, then the command that goes on: the one typed, -o replaced by --resume.
+  EXPECT_EQ(std::count(failed.err.begin(), failed.err.end(), '\n'), 2) << failed.err;
+  EXPECT_NE(failed.err.find("\nstudy stopped: resume with: " + std::string(HBTRACK_CLI) + " study " + study + " -q --jobs 1 --resume " +
+                            out.string() + "\n"),
+            std::string::npos)
+      << failed.err;
   const json s = read_json(out / "summary.json");
   EXPECT_EQ(s["stop_reason"], "nfrc failed (exit 3, see " + out.string() + "/nfrc/log.txt)");
   EXPECT_TRUE(fs::exists(out / "index.md"));

@@ -32,6 +32,7 @@ using VerbList = std::vector<Verb>;
 // reported by throwing hbtrack::CaseError: exit code 2.
 struct RunFailed {
   std::string reason;
+  std::string next_step{};  // a line of its own after the reason: how to go on (resume_command.hpp)
 };
 
 // Options every analysis verb takes: CASE, -o DIR, --set NAME=VALUE..., -q, --progress-file.

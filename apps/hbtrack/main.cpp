@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "cli_common.hpp"
+#include "resume_command.hpp"
 
 namespace hbtrack::cli {
 void on_signal(int);
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   using namespace hbtrack::cli;
   CLI::App app{"hbtrack: nonlinear forced response of structures with contact and friction by harmonic balance"};
   app.require_subcommand(1);
+  remember_command_line(argc, argv);
   VerbList verbs;
   for (VerbFactory add_verbs : verb_factories()) add_verbs(app, verbs);
   try {
@@ -37,6 +39,7 @@ int main(int argc, char** argv) {
       if (v.command->parsed()) return v.run();
   } catch (const RunFailed& e) {
     std::fprintf(stderr, "hbtrack: %s\n", e.reason.c_str());
+    if (!e.next_step.empty()) std::fprintf(stderr, "%s\n", e.next_step.c_str());
     return 1;
   } catch (const hbtrack::CaseError& e) {
     std::fprintf(stderr, "hbtrack: %s\n", e.what());

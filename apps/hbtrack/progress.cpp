@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "hbtrack/io/case_file.hpp"  // CaseError
 
@@ -61,7 +62,22 @@ bool parse_relay_line(const std::string& line, ProgressState& s) {
   return true;
 }
 
-Progress::Progress(bool quiet) : enabled_(!quiet && isatty(STDERR_FILENO)) {}
+double progress_line_interval_s() {
+  constexpr double kDefault = 5;  // a log file a reader scrolls: a line every few seconds
+  const char* text = std::getenv("HBTRACK_PROGRESS_INTERVAL");
+  if (!text) return kDefault;
+  char* end = nullptr;
+  const double seconds = std::strtod(text, &end);
+  return end != text && *end == '\0' && seconds > 0 && std::isfinite(seconds) ? seconds : kDefault;
+}
+
+ProgressStyle progress_style(bool quiet) {
+  return quiet ? ProgressStyle::none : isatty(STDERR_FILENO) ? ProgressStyle::terminal : ProgressStyle::lines;
+}
+
+Progress::Progress(bool quiet) : style_(progress_style(quiet)) {
+  last_line_ = t0_;  // the first line after one interval: a short run writes none
+}
 
 Progress::Progress(bool quiet, double range_start, double range_end) : Progress(quiet) {
   has_range_ = true;
@@ -88,10 +104,21 @@ void Progress::relay_to(const std::string& path) {
 void Progress::finish() {
   if (shown_) std::fprintf(stderr, "\n");
   shown_ = false;
+  if (lines_written_ > 0 && !unwritten_.empty()) write_line(unwritten_);
+  unwritten_.clear();
+}
+
+void Progress::write_line(const std::string& text) {
+  // The terminal's indent and padding are of no use in a log.
+  const size_t first = text.find_first_not_of(' ');
+  const std::string line = first == std::string::npos ? "" : text.substr(first, text.find_last_not_of(' ') + 1 - first);
+  std::fprintf(stderr, "%s\n", line.c_str());
+  std::fflush(stderr);
+  ++lines_written_;
 }
 
 void Progress::update(int index, double omega, const RecordedPoint& p, const std::vector<OutputDof>& outputs) {
-  if (!enabled_ && !relay_) return;
+  if (style_ == ProgressStyle::none && !relay_) return;
   ProgressState s;
   s.index = index;
   s.omega = omega;
@@ -100,7 +127,7 @@ void Progress::update(int index, double omega, const RecordedPoint& p, const std
 
 void Progress::update(int index, double omega, double parameter_value, int leg, const RecordedPoint& p,
                       const std::vector<OutputDof>& outputs) {
-  if (!enabled_ && !relay_) return;
+  if (style_ == ProgressStyle::none && !relay_) return;
   ProgressState s;
   s.index = index;
   s.omega = omega;
@@ -119,10 +146,19 @@ void Progress::show(ProgressState s, double position, int leg, const RecordedPoi
     std::fflush(relay_);
     last_relayed_ = now;
   }
-  if (!enabled_) return;
+  if (style_ == ProgressStyle::none) return;
   if (!outputs.empty() && !p.outputs.empty()) {
     s.output = outputs[0].name;
     s.output_max = p.outputs[0].max;
+  }
+  if (style_ == ProgressStyle::lines) {
+    unwritten_ = progress_text(s);
+    if (std::chrono::duration<double>(now - last_line_).count() >= progress_line_interval_s()) {
+      write_line(unwritten_);
+      unwritten_.clear();
+      last_line_ = now;
+    }
+    return;
   }
   std::fprintf(stderr, "\r%s", progress_text(s).c_str());
   std::fflush(stderr);

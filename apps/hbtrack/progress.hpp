@@ -1,9 +1,12 @@
 #pragma once
-// The one-line progress report of a running verb on a terminal (stderr): the point, omega, the
-// tracked parameter's value, the first output's maximum and, when the verb knows the range it
-// covers, the percentage covered and the time left at the pace so far. Silent when stderr is not
-// a terminal (a log, a pipe, a batch job) or with -q. A --progress-file gets the updates as
-// lines whatever stderr is: `hbtrack study` shows its steps' progress from them (step_progress.hpp).
+// The progress report of a running verb on stderr: the point, omega, the tracked parameter's
+// value, the first output's maximum and, when the verb knows the range it covers, the percentage
+// covered and the time left at the pace so far. On a terminal one line rewritten per point; when
+// stderr is not a terminal (a log, a pipe, a batch job) a plain line at most every
+// progress_line_interval_s() seconds, and the last state once more at the end if any was
+// written (a run shorter than the interval writes none); nothing with -q. A --progress-file gets
+// the updates as lines whatever stderr is: `hbtrack study` shows its steps' progress from them
+// (step_progress.hpp).
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -45,6 +48,15 @@ std::string time_left_text(double fraction, double elapsed_s);
 std::string relay_line(const ProgressState& s);
 bool parse_relay_line(const std::string& line, ProgressState& s);
 
+// Seconds between two progress lines when stderr is not a terminal: 5, or the environment's
+// HBTRACK_PROGRESS_INTERVAL (a positive number; the tests use a short one).
+double progress_line_interval_s();
+
+// How the updates reach stderr.
+enum class ProgressStyle { none, terminal, lines };
+// none with -q, terminal when stderr is one, lines otherwise.
+ProgressStyle progress_style(bool quiet);
+
 class Progress {
  public:
   explicit Progress(bool quiet);
@@ -68,7 +80,14 @@ class Progress {
 
  private:
   void show(ProgressState s, double position, int leg, const RecordedPoint& p, const std::vector<OutputDof>& outputs);
-  bool enabled_, has_range_ = false, shown_ = false;
+  void write_line(const std::string& text);
+  ProgressStyle style_;
+  bool has_range_ = false, shown_ = false;
+  // Lines style: when the last line was written, how many were, and the latest update not
+  // written yet (written by finish(), so that a log ends with where the run stopped).
+  std::chrono::steady_clock::time_point last_line_{};
+  int lines_written_ = 0;
+  std::string unwritten_;
   std::FILE* relay_ = nullptr;
   std::chrono::steady_clock::time_point last_relayed_{};
   Coverage coverage_;

@@ -46,7 +46,7 @@ std::string step_progress_text(const std::string& step, const std::string& file_
   return step + " " + buf + (left.empty() ? "" : " " + left);
 }
 
-StepProgressRelay::StepProgressRelay(bool enabled) : enabled_(enabled) {
+StepProgressRelay::StepProgressRelay(ProgressStyle style) : style_(style), enabled_(style != ProgressStyle::none) {
   if (enabled_) thread_ = std::thread([this] { loop(); });
 }
 
@@ -71,8 +71,10 @@ void StepProgressRelay::forget(const std::string& step) {
   if (!enabled_) return;
   std::lock_guard lock(mutex_);
   if (const auto it = files_.find(step); it != files_.end()) {
-    // Its last progress shows once more: a step shorter than the poll would otherwise never show.
-    if (const std::string text = step_progress_text(step, read_tail(it->second)); !text.empty()) draw_locked("study:   " + text);
+    // Its last progress shows once more on a terminal: a step shorter than the poll would
+    // otherwise never show (in a log its end line follows).
+    const std::string text = style_ == ProgressStyle::terminal ? step_progress_text(step, read_tail(it->second)) : "";
+    if (!text.empty()) draw_locked("study:   " + text);
     std::error_code ignored;
     std::filesystem::remove(it->second, ignored);
     files_.erase(it);
@@ -102,6 +104,14 @@ void StepProgressRelay::loop() {
 }
 
 void StepProgressRelay::draw_locked(std::string line) {
+  if (style_ == ProgressStyle::lines) {
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_line_).count() < progress_line_interval_s()) return;
+    std::fprintf(stderr, "%s\n", line.c_str());
+    std::fflush(stderr);
+    last_line_ = now;
+    return;
+  }
   // Padded over a longer line before it; the terminal's width is not known, so it may wrap.
   const size_t width = line.size();
   if (width < shown_) line += std::string(shown_ - width, ' ');

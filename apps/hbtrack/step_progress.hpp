@@ -2,13 +2,17 @@
 // The progress of a study's running steps on the study's own status line. The steps are child
 // processes whose stderr goes to their log, so they cannot draw on the terminal: each appends its
 // progress to a file (--progress-file, progress.hpp) and this reads the last line of each a few
-// times a second and shows them as one line, "study:   nfrc 37.5 % ~12s left". Only on a
-// terminal: in a log the study writes what it always did, the steps' start and end.
+// times a second and shows them as one line, "study:   nfrc 37.5 % ~12s left": on a terminal
+// rewritten in place, in a log (a pipe, a batch job) as a plain line at most every
+// progress_line_interval_s() seconds between the steps' start and end lines.
+#include <chrono>
 #include <condition_variable>
 #include <map>
 #include <mutex>
 #include <string>
 #include <thread>
+
+#include "progress.hpp"  // ProgressStyle
 
 namespace hbtrack::cli {
 
@@ -18,8 +22,8 @@ std::string step_progress_text(const std::string& step, const std::string& file_
 
 class StepProgressRelay {
  public:
-  // Shows nothing (and watches no file) unless `enabled`.
-  explicit StepProgressRelay(bool enabled);
+  // Shows nothing (and watches no file) with ProgressStyle::none.
+  explicit StepProgressRelay(ProgressStyle style);
   ~StepProgressRelay();  // clears the status line
   StepProgressRelay(const StepProgressRelay&) = delete;
   StepProgressRelay& operator=(const StepProgressRelay&) = delete;
@@ -37,7 +41,9 @@ class StepProgressRelay {
   void loop();
   void clear_locked();
   void draw_locked(std::string line);  // the status line, replacing what is shown
+  ProgressStyle style_;
   bool enabled_;
+  std::chrono::steady_clock::time_point last_line_ = std::chrono::steady_clock::now();  // lines style
   std::mutex mutex_;
   std::condition_variable wake_;
   bool stopping_ = false;

@@ -1,8 +1,10 @@
 #include "study_report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "hbtrack/results/results_writer.hpp"
 
@@ -30,10 +32,14 @@ void nominal_section(std::ostream& out, const json& s) {
   const json& n = s["nfrc"];
   out << "## Nominal NFRC\n\n" << n.value("points", 0) << " points in " << num(n.value("wall_s", 0.0), "%.1f") << " s ([nfrc/](nfrc/)).\n\n";
   out << "| special point | omega (rad/s) | first output max |\n|---|---|---|\n";
-  for (const auto& sp : n["special_points"]) {
+  // In increasing omega, as the figures number them (summary.json keeps the branch's order), with
+  // the digits that tell close points apart (an NS pair, two folds near a resonance).
+  std::vector<json> points(n["special_points"].begin(), n["special_points"].end());
+  std::stable_sort(points.begin(), points.end(), [](const json& a, const json& b) { return a.value("omega", 0.0) < b.value("omega", 0.0); });
+  for (const auto& sp : points) {
     const std::string key = first_output_key(sp);
-    out << "| " << sp.value("type", "") << " | " << num(sp.value("omega", 0.0), "%.2f") << " | "
-        << (key.empty() ? "" : num(sp.value(key, 0.0), "%.4g")) << " |\n";
+    out << "| " << sp.value("type", "") << " | " << num(sp.value("omega", 0.0), "%.7g") << " | "
+        << (key.empty() ? "" : num(sp.value(key, 0.0), "%.5g")) << " |\n";
   }
   out << "\n";
   const json warnings = n.value("warnings", json::array());

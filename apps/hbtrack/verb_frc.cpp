@@ -11,6 +11,7 @@
 #include "hbtrack/runs/frc.hpp"
 #include "result_folder.hpp"
 #include "result_folder_sink.hpp"
+#include "resume_command.hpp"
 
 namespace hbtrack::cli {
 
@@ -84,7 +85,8 @@ int run_frc(const FrcOptions& options) {
   const runs::RunReport report = runs::frc(c, run, sink, monitor);
   progress.finish();
   for (const auto& w : report.summary["warnings"]) std::fprintf(stderr, "frc: warning: %s\n", w.get<std::string>().c_str());
-  if (!report.success()) throw RunFailed{report.failure};
+  if (!report.success())
+    throw RunFailed{report.failure, resume_advice(report.summary.value("stop_reason", ""), resume_command(dir))};
   if (!o.quiet) std::fprintf(stderr, "frc: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), dir.c_str());
   return 0;
 }

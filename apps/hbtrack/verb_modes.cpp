@@ -1,8 +1,10 @@
-// `hbtrack modes`: the undamped natural frequencies of a case's (reduced) model.
+// `hbtrack modes`: the undamped natural frequencies of a case's (reduced) model; for a blade
+// reduced by `hbtrack reduce`, each with its name (1B, 2B, 1T) and the full model's frequency.
 #include <cstdio>
 #include <numbers>
 
 #include "cli_common.hpp"
+#include "full_model_modes.hpp"
 #include "hbtrack/runs/modes.hpp"
 #include "result_folder_sink.hpp"
 
@@ -18,11 +20,27 @@ int run_modes(const CommonOptions& o, int count) {
   if (!report.success()) throw RunFailed{report.failure};
   if (!o.quiet) {
     std::fprintf(stderr, "modes: %s -> %s\n", report.brief.c_str(), o.out_dir.c_str());
-    int mode = 0;
+    const FullModelModes full = full_model_modes(o.case_path);
+    size_t mode = 0;
     for (const auto& w : report.summary["natural_frequencies"]) {
       const double omega = w.get<double>();
-      std::fprintf(stderr, "  mode %d: %.4f rad/s (%.3f Hz)\n", ++mode, omega, omega / (2.0 * std::numbers::pi));
+      const std::string name = mode < full.names.size() ? full.names[mode] : "";
+      std::string line = "  mode " + std::to_string(mode + 1) + (name.empty() ? ":" : " " + name + ":");
+      char numbers[128];
+      std::snprintf(numbers, sizeof numbers, " %.4f rad/s (%.3f Hz)", omega, omega / (2.0 * std::numbers::pi));
+      line += numbers;
+      if (mode < full.frequencies.size()) {
+        std::snprintf(numbers, sizeof numbers, ", full model %.4f (%+.3f %%)", full.frequencies[mode], 100 * (omega / full.frequencies[mode] - 1));
+        line += numbers;
+      }
+      std::fprintf(stderr, "%s\n", line.c_str());
+      ++mode;
     }
+    if (!full.reduce_summary.empty())
+      std::fprintf(stderr,
+                   "modes: these are the reduced model's frequencies; the full model's, which the docs quote (%s: "
+                   "full_model), differ by the percentages shown\n",
+                   full.reduce_summary.c_str());
   }
   return 0;
 }

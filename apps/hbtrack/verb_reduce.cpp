@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include "cli_common.hpp"
@@ -130,6 +131,22 @@ std::vector<NodeRecord> read_nodes(const ReduceOptions& o) {
 
 json to_json(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
+// The names (1B, 2B, 1T) of the full model's lowest `count` modes when `make-blade` wrote its
+// matrices: its summary.json beside them. `hbtrack modes` shows them beside the reduced model's.
+json full_model_mode_types(const ReduceOptions& o, int count) {
+  namespace fs = std::filesystem;
+  const std::string matrices = o.calculix.empty() ? o.mass : o.calculix;
+  std::ifstream in(fs::path(matrices).parent_path() / "summary.json");
+  if (!in) return nullptr;
+  const json blade = json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!blade.is_object() || blade.value("verb", "") != "make-blade" || !blade.contains("mode_types") || !blade["mode_types"].is_array())
+    return nullptr;
+  json types = json::array();
+  for (const json& t : blade["mode_types"])
+    if (static_cast<int>(types.size()) < count) types.push_back(t);
+  return types;
+}
+
 int run_reduce(const ReduceOptions& o) {
   const auto t0 = Clock::now();
   if (o.calculix.empty() == (o.mass.empty() && o.stiffness.empty()))
@@ -231,7 +248,10 @@ int run_reduce(const ReduceOptions& o) {
       {"dof_names", rom.dof_names},
       {"natural_frequencies", to_json(reduced_modes.frequencies)},
       {"fixed_interface_frequencies", to_json(rom.fixed_interface_frequencies)},
-      {"full_model", {{"natural_frequencies", to_json(full_frequencies)}, {"relative_difference_of_reduced", errors}}},
+      {"full_model",
+       {{"natural_frequencies", to_json(full_frequencies)},
+        {"relative_difference_of_reduced", errors},
+        {"mode_types", full_model_mode_types(o, compare)}}},
       {"timings", {{"wall_s", seconds_since(t0)}, {"read_s", read_s}, {"reduction_s", reduce_s}, {"full_modes_s", full_modes_s}}}};
   write_json_atomically(o.out_dir + "/summary.json", summary);
   if (!o.quiet) {

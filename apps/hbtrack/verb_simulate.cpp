@@ -1,8 +1,6 @@
 // `hbtrack simulate`: time integration of the full model to its periodic steady state, from rest
 // or from a point of a harmonic balance result (`--from DIR --point K`), to check HBM solutions
 // and whether the motion stays on them (docs/time-integration.md).
-#include <unistd.h>
-
 #include <cstdio>
 #include <optional>
 
@@ -15,12 +13,19 @@ namespace hbtrack::cli {
 
 namespace {
 
-// The integration's progress on a terminal ("period N change X"), and Ctrl-C.
+// The integration's progress ("period N change X"): rewritten in place on a terminal, a plain
+// line at most every progress_line_interval_s() in a log (progress.hpp); and Ctrl-C.
 class PeriodLine final : public runs::RunMonitor {
  public:
-  explicit PeriodLine(bool shown) : shown_(shown) {}
+  explicit PeriodLine(ProgressStyle style) : style_(style) {}
   bool period(int period, double change, double, double) override {
-    if (shown_) std::fprintf(stderr, "\r  period %6d  change %-10.3e", period + 1, change);
+    if (style_ == ProgressStyle::terminal) {
+      std::fprintf(stderr, "\r  period %6d  change %-10.3e", period + 1, change);
+      shown_ = true;
+    } else if (style_ == ProgressStyle::lines && Clock::now() - last_line_ >= std::chrono::duration<double>(progress_line_interval_s())) {
+      std::fprintf(stderr, "period %d  change %.3e\n", period + 1, change);
+      last_line_ = Clock::now();
+    }
     return !interrupted();
   }
   void finish() const {
@@ -28,7 +33,9 @@ class PeriodLine final : public runs::RunMonitor {
   }
 
  private:
-  bool shown_;
+  ProgressStyle style_;
+  bool shown_ = false;
+  Clock::time_point last_line_ = Clock::now();
 };
 
 // Numeric flags arrive as text and are checked here, so that a bad value gives the tool's
@@ -72,7 +79,7 @@ int run_simulate(const SimulateOptions& o) {
     run.origin = {{"from", o.from}, {"point", point}};
   }
   ResultFolderSink sink(o.common.out_dir);
-  PeriodLine monitor(!o.common.quiet && isatty(STDERR_FILENO));
+  PeriodLine monitor(progress_style(o.common.quiet));
   const runs::RunReport report = runs::simulate(c, run, sink, monitor);
   monitor.finish();
   if (!report.success()) throw RunFailed{report.failure};

@@ -12,8 +12,6 @@
 //   simulate_isola/       time integration from the stable isola point of largest output
 //   converged/            with [study] convergence: the NFRC and tracking curves at more H, N
 //   figures/, index.md    the figures and a page with the numbers (study_report.cpp)
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +24,7 @@
 #include "hbtrack/util/stop_reason.hpp"
 #include "python_package.hpp"
 #include "result_folder.hpp"
+#include "resume_command.hpp"
 #include "step_progress.hpp"
 #include "study_branches.hpp"
 #include "study_comparisons.hpp"
@@ -118,8 +117,10 @@ class Study {
     save();
     write_study_report(dir_, summary_);
     if (!ok)
-      throw RunFailed{"study stopped: " + stop_reason_ + " (results so far in " + dir_ + "; go on with `hbtrack study " + o_.common.case_path +
-                      " --resume " + dir_ + "`, same --set and --only)"};
+      // A failed step may pass when resumed (memory, a killed child): the command is offered
+      // whatever stopped the study.
+      throw RunFailed{"study stopped: " + stop_reason_ + " (results so far in " + dir_ + ")",
+                      "study stopped: resume with: " + resume_command(dir_)};
     if (!failed.empty())
       throw RunFailed{"study: " + std::to_string(failed.size()) + " check(s) failed, first: " + failed[0].get<std::string>() + " (see " + dir_ +
                       "/index.md)"};
@@ -132,8 +133,8 @@ class Study {
   bool run_steps(const std::vector<Step>& steps) {
     if (steps.empty()) return true;
     if (interrupted()) return stop(to_string(StopReason::interrupted));
-    // On a terminal the steps' progress shows on the study's line (step_progress.hpp).
-    StepProgressRelay relay(!o_.common.quiet && isatty(STDERR_FILENO));
+    // The steps' progress on the study's line, or as lines in a log (step_progress.hpp).
+    StepProgressRelay relay(progress_style(o_.common.quiet));
     std::vector<ChildTask> tasks;
     std::vector<size_t> todo;  // steps[todo[k]] is tasks[k]
     std::vector<int> codes(steps.size(), 0);

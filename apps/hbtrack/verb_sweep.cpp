@@ -15,6 +15,7 @@
 #include "hbtrack/results/results_writer.hpp"
 #include "hbtrack/util/stop_reason.hpp"
 #include "result_folder.hpp"
+#include "resume_command.hpp"
 #include "sweep_definition.hpp"
 #include "sweep_table.hpp"
 #include "task_runner.hpp"
@@ -85,7 +86,9 @@ class Sweep {
     save();
     if (interrupted())
       throw RunFailed{"sweep interrupted: " + std::to_string(grid_.tasks.size() - missing) + " of " + std::to_string(grid_.tasks.size()) +
-                      " tasks finished (rerun the same command to compute the rest)"};
+                          " tasks finished",
+                      // A sweep resumes by running again: the finished tasks are skipped.
+                      resume_advice(to_string(StopReason::interrupted), typed_command())};
     if (missing > 0)
       throw RunFailed{std::to_string(missing) + " of " + std::to_string(grid_.tasks.size()) + " tasks left no result (see their log.txt; " + dir_ + "/sweep.csv)"};
     if (!o_.common.quiet) std::fprintf(stderr, "sweep: done in %s -> %s/sweep.csv\n", duration_text(seconds_since(t0)).c_str(), dir_.c_str());

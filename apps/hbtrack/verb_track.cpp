@@ -13,6 +13,7 @@
 #include "hbtrack/runs/track.hpp"
 #include "result_folder.hpp"
 #include "result_folder_sink.hpp"
+#include "resume_command.hpp"
 
 namespace hbtrack::cli {
 
@@ -120,7 +121,8 @@ int run_track(TrackOptions o) {
   }
   progress.finish();
   for (const auto& w : report.summary["warnings"]) std::fprintf(stderr, "track: warning: %s\n", w.get<std::string>().c_str());
-  if (!report.success()) throw RunFailed{report.failure};
+  if (!report.success())
+    throw RunFailed{report.failure, resume_advice(report.summary.value("stop_reason", ""), resume_command(o.common.out_dir))};
   if (!o.common.quiet) std::fprintf(stderr, "track: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }

@@ -14,6 +14,25 @@ Import with PYTHONPATH=build/python (the build assembles the package and its com
 there); plotting and reading result folders also work from python/ without a build.
 """
 import importlib
+import os
+import sys
+
+
+def _interpreter_with_numpy():
+    """The interpreter the compiled module was built for (written by the build beside this file),
+    else Debian's, whose python3-numpy scripts/install-deps.sh installs."""
+    try:
+        with open(os.path.join(os.path.dirname(__file__), "_built_for.txt")) as f:
+            return f.read().strip() or "/usr/bin/python3"
+    except OSError:
+        return "/usr/bin/python3"
+
+
+try:
+    import numpy  # noqa: F401  every run takes and returns numpy arrays
+except ImportError:
+    raise ImportError(f"hbtrack needs numpy, which {sys.executable} does not have: run it with {_interpreter_with_numpy()} "
+                      "(or install numpy for this interpreter)") from None
 
 from ._core import core as _core
 from .analysis import backbone, continuation, frc, isolas, limit_point, solve, switch, track

@@ -75,6 +75,19 @@ def test_numpydoc_sections(name, function):
     assert not missing, f"{name}: parameters not documented: {missing}"
 
 
+def test_import_without_numpy_names_the_interpreter_it_needs():
+    # A Python without numpy (another interpreter than the one the module was built for): one
+    # line, naming that interpreter, not numpy's bare "No module named" from inside the package.
+    code = "import sys; sys.modules['numpy'] = None\nimport hbtrack\n"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=dict(os.environ))
+    assert done.returncode != 0
+    last = done.stderr.strip().splitlines()[-1]
+    assert last.startswith("ImportError: hbtrack needs numpy, which " + sys.executable + " does not have: run it with "), done.stderr
+    built_for = os.path.join(os.path.dirname(hbtrack.__file__), "_built_for.txt")
+    expected = open(built_for).read().strip() if os.path.exists(built_for) else "/usr/bin/python3"
+    assert f"run it with {expected} " in last, last
+
+
 def test_import_without_matplotlib():
     # A subprocess where `import matplotlib` fails: computing still works, plots say why not.
     code = ("import sys; sys.modules['matplotlib'] = None\n"

@@ -1,5 +1,6 @@
 """Progress of `frc`: the callback of hbtrack.frc, and the CLI's line on a terminal (and its
-silence in a log); `study` relaying its steps' progress to its own line."""
+plain lines in a log, none for a run shorter than their interval); `study` relaying its steps'
+progress to its own line, or as plain lines in a log."""
 import os
 import pty
 import re
@@ -60,8 +61,9 @@ def test_cli_progress_line_on_a_terminal_only(tmp_path):
     percentages = [float(u.split("%")[0].split()[-1]) for u in updates if "%" in u]
     assert percentages[-1] == 100.0 and percentages == sorted(percentages), percentages
     assert any(" left" in u for u in updates), updates
-    # stderr a file (a log): no progress at all.
-    logged = subprocess.run([cli_path(), "frc", DUFFING, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=120)
+    # stderr a file (a log), a run shorter than the interval between plain lines: no progress.
+    quiet_env = {k: v for k, v in os.environ.items() if k != "HBTRACK_PROGRESS_INTERVAL"}
+    logged = subprocess.run([cli_path(), "frc", DUFFING, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=120, env=quiet_env)
     assert logged.returncode == 0 and "%" not in logged.stderr, logged.stderr
 
 
@@ -74,7 +76,8 @@ def test_track_progress_line_covers_the_parameter_range_on_a_terminal_only(duffi
     assert len(percentages) > 10 and percentages[-1] == 100.0 and percentages == sorted(percentages), percentages
     assert all(" amplitude " in u for u in updates if "%" in u), updates
     assert any(" left" in u for u in updates), updates
-    logged = subprocess.run([cli_path(), *track, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=120)
+    quiet_env = {k: v for k, v in os.environ.items() if k != "HBTRACK_PROGRESS_INTERVAL"}
+    logged = subprocess.run([cli_path(), *track, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=120, env=quiet_env)
     assert logged.returncode == 0 and "%" not in logged.stderr and "\r" not in logged.stderr, logged.stderr
 
 
@@ -93,10 +96,14 @@ def test_study_relays_its_steps_progress_on_a_terminal_only(tmp_path):
     assert relayed, updates
     percentages = [float(re.search(r"nfrc (\d+\.\d) %", u).group(1)) for u in relayed]
     assert percentages == sorted(percentages) and all(0 <= p <= 100 for p in percentages), percentages
-    # In a log: the stage and step lines only, no progress.
-    logged = subprocess.run([cli_path(), *args, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=300, env=env)
+    # In a log: the stage and step lines, and the steps' progress as plain lines at most every
+    # HBTRACK_PROGRESS_INTERVAL seconds (5 by default; 0.1 here, so that the NFRC shows).
+    log_env = {**env, "HBTRACK_PROGRESS_INTERVAL": "0.1"}
+    logged = subprocess.run([cli_path(), *args, "-o", str(tmp_path / "log")], capture_output=True, text=True, timeout=300, env=log_env)
     assert logged.returncode == code, logged.stderr
-    assert "\r" not in logged.stderr and not re.search(r"study:   \S+ \d+\.\d %", logged.stderr), logged.stderr
+    assert "\r" not in logged.stderr, logged.stderr
+    logged_percentages = [float(p) for p in re.findall(r"^study:   nfrc (\d+\.\d) %", logged.stderr, re.M)]
+    assert logged_percentages and logged_percentages == sorted(logged_percentages), logged.stderr
     assert "stage 1 of 8" in logged.stderr, logged.stderr
     # The same results either way, and no progress file left behind.
     for step in ("nfrc", "track_amplitude_lp1"):

@@ -28,9 +28,19 @@ Coverage Coverage::two_legs(double lo, double hi, double from) {
 double Coverage::add(double value, int leg) {
   if (!std::isfinite(value)) return fraction_;
   if (!two_legs_) return fraction_ = std::max(fraction_, covered_fraction(value, start_, end_));
+  const int this_leg = leg <= 1 ? 1 : 2;
+  if (this_leg != leg_) {  // every leg starts at the limit point
+    leg_ = this_leg;
+    reached_ = travelled_ = 0;
+    last_ = from_;
+  }
+  travelled_ += std::abs(value - last_);
+  last_ = value;
+  reached_ = std::max(reached_, covered_fraction(value, from_, leg_ == 1 ? start_ : end_));
+  const double width = std::abs(end_ - start_);
+  const double way = width > 0 ? reached_ + (1 - reached_) * travelled_ / (travelled_ + width) : reached_;
   const double first = covered_fraction(from_, start_, end_);  // leg 1's share: [lo, from]
-  const double part =
-      leg <= 1 ? first * covered_fraction(value, from_, start_) : first + (1 - first) * covered_fraction(value, from_, end_);
+  const double part = leg_ == 1 ? first * way : first + (1 - first) * way;
   return fraction_ = std::max(fraction_, part);
 }
 
