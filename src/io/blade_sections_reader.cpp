@@ -61,8 +61,12 @@ BladeSections read_blade_sections(const std::string& path) {
     if (text.empty()) continue;
     if (text[0] == '#') {
       const auto equals = text.find('=');
-      if (equals != std::string::npos && trimmed(text.substr(1, equals - 1)) == "blade_count")
+      if (equals != std::string::npos && trimmed(text.substr(1, equals - 1)) == "blade_count") {
+        // A second line would silently replace the first.
+        if (sections.blade_count != 0) fail(path, line, "blade_count: given twice");
         sections.blade_count = parse_index(trimmed(text.substr(equals + 1)), path, line, "blade_count");
+        if (sections.blade_count > kMaxBladeCount) fail(path, line, "blade_count: must be <= " + std::to_string(kMaxBladeCount));
+      }
       continue;
     }
     if (!header_seen) {
@@ -77,7 +81,10 @@ BladeSections read_blade_sections(const std::string& path) {
     if (cells.size() != 6) fail(path, line, "expected 6 columns, got " + std::to_string(cells.size()));
     const int surface = parse_index(cells[0], path, line, kColumns[0]);
     const int point = parse_index(cells[1], path, line, kColumns[1]);
-    if (surface == static_cast<int>(sections.surfaces.size()) + 1) sections.surfaces.emplace_back();
+    if (surface == static_cast<int>(sections.surfaces.size()) + 1) {
+      if (surface > kMaxStreamSurfaces) fail(path, line, "surface: at most " + std::to_string(kMaxStreamSurfaces) + " stream surfaces");
+      sections.surfaces.emplace_back();
+    }
     if (surface != static_cast<int>(sections.surfaces.size())) fail(path, line, "surface: surfaces must be numbered 1, 2, ... in order");
     auto& points = sections.surfaces.back();
     if (point != static_cast<int>(points.size()) + 1) fail(path, line, "point: points must be numbered 1, 2, ... in order on each surface");
