@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "hbtrack/io/json_file.hpp"
 #include "hbtrack/results/state_columns.hpp"
 
 namespace hbtrack::cli {
@@ -75,13 +76,8 @@ ResultFolderContents list_result_folder(const std::string& dir) {
 
 nlohmann::json read_summary(const std::string& dir) {
   const std::string path = dir + "/summary.json";
-  std::ifstream in(path);
-  if (!in) throw CaseError(path + ": cannot read (is " + dir + " a result folder of hbtrack?)");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const std::exception&) {
-    throw CaseError(path + ": not valid JSON");
-  }
+  if (!std::ifstream(path)) throw CaseError(path + ": cannot read (is " + dir + " a result folder of hbtrack?)");
+  return read_json_file(path, "a result summary");
 }
 
 namespace {
@@ -150,7 +146,7 @@ std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinit
   return overrides;
 }
 
-long parse_integer(const std::string& flag, const std::string& text, long min) {
+long parse_integer(const std::string& flag, const std::string& text, long min, long max) {
   size_t used = 0;
   long value = 0;
   try {
@@ -160,6 +156,7 @@ long parse_integer(const std::string& flag, const std::string& text, long min) {
   }
   if (used == 0 || used != text.size() || value < min)
     throw CaseError(flag + ": must be an integer >= " + std::to_string(min) + ", got '" + text + "'");
+  if (value > max) throw CaseError(flag + ": must be at most " + std::to_string(max) + ", got '" + text + "'");
   return value;
 }
 
