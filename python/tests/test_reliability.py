@@ -101,3 +101,11 @@ def test_wrong_result_kinds_are_value_errors():
         hbtrack.track(case, {"summary": {}}, lp=1, param="amplitude", range=(0.5, 2))
     with pytest.raises(ValueError, match="tracks: expected track results"):
         hbtrack.isolas(case, [{"summary": {"options": {}}}], at=1.0)
+
+
+def test_isolas_at_nan_is_a_value_error():
+    """Issue 39: at=nan ran and returned "completed" with nothing found; the CLI refuses --at nan."""
+    case = hbtrack.load_case(DUFFING)
+    for at in (float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="at: must be a finite number"):
+            hbtrack.isolas(case, {}, at=at)
