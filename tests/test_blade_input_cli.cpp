@@ -94,9 +94,12 @@ void expect_bad_input(const CliRun& r, const fs::path& out, const std::string& w
 
 }  // namespace
 
+// A subnormal thickness at the leading edge (strtod's ERANGE) was "not a finite number".
 TEST(BladeInput, TheTwoSurfaceTableIsABlade) {
   const fs::path out = temp_dir() / "good";
-  const CliRun r = make_blade(sections_file("good.csv", "# blade_count = 22\n", two_surfaces()), "", out);
+  auto surfaces = two_surfaces();
+  for (auto& s : surfaces) s.front().cells[5] = "1e-310";
+  const CliRun r = make_blade(sections_file("subnormal.csv", "# blade_count = 22\n", surfaces), "", out);
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 

@@ -1,6 +1,7 @@
 #include "result_folder.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -161,14 +162,12 @@ long parse_integer(const std::string& flag, const std::string& text, long min, l
 }
 
 double parse_number(const std::string& flag, const std::string& text) {
-  size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(value)) throw CaseError(flag + ": must be a finite number, got '" + text + "'");
+  // strtod, not stod: stod refuses a subnormal (1e-310) as out of range.
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  const double value = std::strtod(begin, &end);
+  if (text.empty() || end != begin + text.size() || std::isspace(static_cast<unsigned char>(text[0])) || !std::isfinite(value))
+    throw CaseError(flag + ": must be a finite number, got '" + text + "'");
   return value;
 }
 

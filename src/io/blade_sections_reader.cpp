@@ -33,7 +33,8 @@ double parse_number(const std::string& text, const std::string& path, long line,
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v)) fail(path, line, std::string(column) + ": '" + text + "' is not a finite number");
+  // ERANGE also flags a subnormal such as 1e-310, which is a number: only an overflow is not.
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) fail(path, line, std::string(column) + ": '" + text + "' is not a finite number");
   return v;
 }
 
