@@ -81,3 +81,15 @@ TEST(InputNames, IntegerFlagsBeyondAnIntAreRefused) {
   expect_bad_input(run_cli("backbone " + duffing + " --mode 4294967297 --range 0.01:2 -q -o " + out.string()), out,
                    "--mode: must be at most 2147483647");
 }
+
+// backbone's own refusals came after its folder existed: exit 3, the folder left `running`.
+TEST(InputNames, BackbonesBadInputIsExit2BeforeAnyFolder) {
+  const fs::path out = temp_dir() / "backbone_out";
+  const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
+  expect_bad_input(run_cli("backbone " + duffing + " --set harmonic_balance.subharmonic=2 --range 0.01:2 -q -o " + out.string()), out,
+                   "subharmonic = 1");
+  const fs::path rigid = temp_dir() / "rigid.toml";
+  std::ofstream(rigid) << "[model]\ndofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 1.0]]\nK = [[1.0, -1.0], [-1.0, 1.0]]\n"
+                          "[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"a\"]\ncubic_stiffness = 0.1\n[continuation]\nomega_start = 0.5\nomega_end = 2.0\n";
+  expect_bad_input(run_cli("backbone " + rigid.string() + " --mode 1 --range 0.01:2 -q -o " + out.string()), out, "rigid-body mode");
+}
