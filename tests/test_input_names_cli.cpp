@@ -92,4 +92,6 @@ TEST(InputNames, BackbonesBadInputIsExit2BeforeAnyFolder) {
   std::ofstream(rigid) << "[model]\ndofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 1.0]]\nK = [[1.0, -1.0], [-1.0, 1.0]]\n"
                           "[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"a\"]\ncubic_stiffness = 0.1\n[continuation]\nomega_start = 0.5\nomega_end = 2.0\n";
   expect_bad_input(run_cli("backbone " + rigid.string() + " --mode 1 --range 0.01:2 -q -o " + out.string()), out, "rigid-body mode");
+  const std::string dlft = hbtrack::test::source_path("examples/frictional_contact_dlft.toml");
+  expect_bad_input(run_cli("backbone " + dlft + " --range 0.01:2 -q -o " + out.string()), out, "with law = \"dlft\"");
 }
