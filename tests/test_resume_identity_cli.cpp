@@ -116,3 +116,18 @@ TEST(ResumeIdentity, CornersSteppedOverSurviveAResume) {
   EXPECT_EQ(summary_of(whole)["corners_stepped_over"], summary_of(parts)["corners_stepped_over"]);
   EXPECT_EQ(file_bytes(whole / "branch.csv"), file_bytes(parts / "branch.csv"));
 }
+
+// A checkpoint whose state is consistent but of another size reached the engine, which refused it
+// after the folder was reopened: exit 3 and the summary left at `running`.
+TEST(ResumeIdentity, ACheckpointStateOfAnotherSizeIsBadInput) {
+  const fs::path dir = fresh_dir("size");
+  const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
+  ASSERT_EQ(run_cli("frc " + duffing + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
+  nlohmann::json checkpoint = nlohmann::json::parse(std::ifstream(dir / "checkpoint.json"));
+  for (const char* key : {"x", "x_before", "tangent", "unknown_scale"}) checkpoint["state"][key].erase(0);
+  std::ofstream(dir / "checkpoint.json") << checkpoint.dump();
+  const CliRun r = run_cli("frc " + duffing + " -q --resume " + dir.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("the state holds 14 unknowns, this case 15"), std::string::npos) << r.err;
+  EXPECT_EQ(summary_of(dir)["stop_reason"], "max_points");
+}

@@ -28,6 +28,11 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   if (sink.resuming())
     resumed = checkpoint_to_resume(sink, {StopReason::reached_end, StopReason::left_range, StopReason::closed}, settings,
                                    read_continuation_state);
+  // Checked before the folder is touched: the engine refused it later, exit 3 and the summary
+  // left at running.
+  if (resumed && resumed->state.x.size() != hbm.unknowns() + 1)
+    throw CaseError("--resume: " + sink.checkpoint_path() + ": the state holds " + std::to_string(resumed->state.x.size() - 1) +
+                    " unknowns, this case " + std::to_string(hbm.unknowns()));
   sink.open();
   // A resumed run appends to the tables the checkpoint covers.
   const int rows_kept = resumed ? resumed->state.points : 0;
