@@ -131,3 +131,27 @@ TEST(ResumeIdentity, ACheckpointStateOfAnotherSizeIsBadInput) {
   EXPECT_NE(r.err.find("the state holds 14 unknowns, this case 15"), std::string::npos) << r.err;
   EXPECT_EQ(summary_of(dir)["stop_reason"], "max_points");
 }
+
+// The same for `track`: its checkpoint's settings hold the model's hash as frc's do.
+TEST(ResumeIdentity, TrackRefusesAnEditedModel) {
+  const fs::path root = hbtrack::test::fresh_temp_dir("hbtrack_resume_identity_track", true);
+  const fs::path case_file = root / "nltva.toml";
+  const std::string original = file_bytes(hbtrack::test::source_path("examples/nltva.toml"));
+  std::ofstream(case_file) << original;
+  const std::string frc = (root / "frc").string(), dir = (root / "track").string();
+  ASSERT_EQ(run_cli("frc " + case_file.string() + " -q -o " + frc).exit_code, 0);
+  const std::string track = "track " + case_file.string() + " -q --set continuation.step=0.01 --set continuation.step_max=0.01";
+  const CliRun capped = run_cli(track + " --set continuation.max_points=20 --from " + frc + " --lp 2 --param amplitude --range 0.01:0.4 -o " + dir);
+  ASSERT_EQ(capped.exit_code, 0) << capped.err;
+  std::string edited = original;
+  const std::string from = "cubic_stiffness = 0.0042";
+  ASSERT_NE(edited.find(from), std::string::npos);
+  edited.replace(edited.find(from), from.size(), "cubic_stiffness = 0.0043");
+  std::ofstream(case_file) << edited;
+  const CliRun r = run_cli(track + " --resume " + dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("was computed with another model"), std::string::npos) << r.err;
+  std::ofstream(case_file) << original;
+  const CliRun same = run_cli(track + " --resume " + dir);
+  EXPECT_EQ(same.exit_code, 0) << same.err;
+}
