@@ -158,3 +158,30 @@ TEST(LimitsCli, SecondRunIntoALiveFolderIsRefused) {
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(dir / "summary.json"));
   EXPECT_EQ(count_lines(dir / "branch.csv"), 1 + summary["points"].get<int>());
 }
+
+// On a full disk `continue` (and `switch`, the same path) left a partial last row, after which
+// the folder could not be read or exported, and exited 1 as if the continuation had failed.
+// Every limit from 2 to 9 blocks (1 to 4.5 KB) cuts somewhere else: each must leave whole rows.
+TEST(LimitsCli, ContinueOnAFullDiskLeavesWholeRowsAndExits3) {
+  for (int blocks = 2; blocks <= 9; ++blocks) {
+    const fs::path dir = fresh_dir("continue_full_" + std::to_string(blocks));
+    const std::string command = "sh -c \"ulimit -f " + std::to_string(blocks) + "; exec " + std::string(HBTRACK_CLI) + " continue " + duffing() +
+                                " --param amplitude --omega 1.2 --range 0.05:3 -q -o " + dir.string() + "\" 2> " + dir.string() + ".err";
+    const int status = std::system(command.c_str());
+    std::stringstream err;
+    err << std::ifstream(dir.string() + ".err").rdbuf();
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 3) << blocks << " blocks: " << err.str();
+    EXPECT_NE(err.str().find("write failed"), std::string::npos) << err.str();
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.path().extension() != ".csv") continue;
+      const std::string bytes = hbtrack::test::file_bytes(entry.path());
+      if (bytes.empty()) continue;
+      EXPECT_EQ(bytes.back(), '\n') << entry.path() << " ends in a partial row (" << blocks << " blocks)";
+      const auto columns = hbtrack::test::csv_header(entry.path()).size();
+      std::stringstream rows(bytes);
+      for (std::string line; std::getline(rows, line);)
+        EXPECT_EQ(static_cast<size_t>(std::count(line.begin(), line.end(), ',')) + 1, columns) << entry.path() << ": " << line;
+    }
+  }
+}

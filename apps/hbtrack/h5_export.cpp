@@ -26,7 +26,7 @@ using nlohmann::json;
 class Handle {
  public:
   Handle(hid_t id, herr_t (*closer)(hid_t), const std::string& what) : id_(id), close_(closer) {
-    if (id_ < 0) throw RunFailed{"export: HDF5 could not create " + what};
+    if (id_ < 0) throw std::runtime_error("export: HDF5 could not create " + what);
   }
   ~Handle() {
     if (id_ >= 0) close_(id_);
@@ -48,7 +48,7 @@ class Handle {
 };
 
 void check(herr_t status, const std::string& what) {
-  if (status < 0) throw RunFailed{"export: HDF5 could not write " + what};
+  if (status < 0) throw std::runtime_error("export: HDF5 could not write " + what);
 }
 
 // A dataset name from a column name: HDF5 takes any text but '/' (a path separator) and ".".
@@ -181,16 +181,16 @@ class PendingH5File {
   // Closed (HDF5 flushes and reports a write that failed), synced, then renamed over the target:
   // a crash leaves the old file or the whole new one, never a partial one.
   void commit() {
-    if (!file_.close()) throw RunFailed{"export: could not finish " + temporary_ + " (disk full?)"};
+    if (!file_.close()) throw std::runtime_error("export: could not finish " + temporary_ + " (disk full?)");
     const int fd = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0 || (::fsync(fd) != 0 && errno != EINVAL)) {
       const int error = errno;
       if (fd >= 0) ::close(fd);
-      throw RunFailed{"export: " + temporary_ + ": fsync failed: " + std::strerror(error)};
+      throw std::runtime_error("export: " + temporary_ + ": fsync failed: " + std::strerror(error));
     }
     ::close(fd);
     if (::rename(temporary_.c_str(), final_.c_str()) != 0)
-      throw RunFailed{"export: " + temporary_ + ": cannot rename to " + final_ + ": " + std::strerror(errno)};
+      throw std::runtime_error("export: " + temporary_ + ": cannot rename to " + final_ + ": " + std::strerror(errno));
     committed_ = true;
   }
 
@@ -206,6 +206,9 @@ std::vector<std::string> export_result_folder_h5(const std::string& dir, const s
   const ResultFolderContents contents = list_result_folder(dir);
   const json& summary = contents.summary;
 
+  // HDF5's exit handler flushes files a failed write left open, and segfaulted doing so after a
+  // full disk; the process is ending anyway. Must precede every other HDF5 call.
+  H5dont_atexit();
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // our one-line errors, not HDF5's stack on stderr
   PendingH5File file(h5_path + ".tmp", h5_path);
   std::vector<std::string> written;

@@ -16,6 +16,7 @@
 #include <set>
 
 #include "cli_common.hpp"
+#include "hbtrack/io/mat_header_check.hpp"
 #include "hbtrack/results/results_writer.hpp"
 #include "result_folder.hpp"
 
@@ -42,12 +43,22 @@ Var char_row(const std::string& text, const char* name = nullptr) {
   return Var(Mat_VarCreate(name, MAT_C_CHAR, MAT_T_UTF8, 2, dims, const_cast<char*>(text.data()), 0));
 }
 
+// The variables libmatio finds in a .mat file (-1 when it cannot open it).
+int variables_in(const std::string& path) {
+  mat_t* file = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
+  if (!file) return -1;
+  int count = 0;
+  for (matvar_t* v; (v = Mat_VarReadNextInfo(file)) != nullptr; ++count) Mat_VarFree(v);
+  Mat_Close(file);
+  return count;
+}
+
 // The .mat file being written, into a scratch file always removed at the end.
 class PendingMatFile {
  public:
   PendingMatFile(std::string temporary, std::string final_path) : temporary_(std::move(temporary)), final_(std::move(final_path)) {
     file_ = Mat_CreateVer(temporary_.c_str(), nullptr, MAT_FT_MAT5);
-    if (!file_) throw RunFailed{"export: cannot create " + temporary_};
+    if (!file_) throw std::runtime_error("export: cannot create " + temporary_);
   }
   ~PendingMatFile() {
     if (file_) Mat_Close(file_);
@@ -57,12 +68,22 @@ class PendingMatFile {
   PendingMatFile(const PendingMatFile&) = delete;
   PendingMatFile& operator=(const PendingMatFile&) = delete;
   void write(const Var& v, const std::string& name) {
-    if (!v || Mat_VarWrite(file_, v.get(), MAT_COMPRESSION_NONE) != 0) throw RunFailed{"export: could not write " + name + " into " + temporary_};
+    if (!v || Mat_VarWrite(file_, v.get(), MAT_COMPRESSION_NONE) != 0) throw std::runtime_error("export: could not write " + name + " into " + temporary_);
+    ++written_;
   }
   void commit() {
     const int closed = Mat_Close(file_);
     file_ = nullptr;
-    if (closed != 0) throw RunFailed{"export: could not finish " + temporary_};
+    if (closed != 0) throw std::runtime_error("export: could not finish " + temporary_);
+    // libmatio does not check its writes: a full disk or a file-size limit left a truncated file
+    // that it reported written. Read back, every variable must be whole.
+    try {
+      check_mat_headers(temporary_);
+    } catch (const std::runtime_error&) {
+      throw std::runtime_error("export: " + temporary_ + " was not written whole (disk full or file-size limit?)");
+    }
+    if (variables_in(temporary_) != written_)
+      throw std::runtime_error("export: " + temporary_ + " was not written whole (disk full or file-size limit?)");
     // libmatio writes through stdio without a check at each write: the finished bytes go into
     // place by the checked, synced write of every result file (a full disk fails here).
     std::ifstream in(temporary_, std::ios::binary);
@@ -73,6 +94,7 @@ class PendingMatFile {
  private:
   std::string temporary_, final_;
   mat_t* file_ = nullptr;
+  int written_ = 0;
 };
 
 // A struct (1 x count) with these field names, each element's fields given by `field(i, name)`.
@@ -82,11 +104,11 @@ Var struct_of(const std::string& name, const std::vector<std::string>& fields, s
   for (const std::string& f : fields) names.push_back(f.c_str());
   size_t dims[2] = {1, count};
   Var s(Mat_VarCreateStruct(name.c_str(), 2, dims, names.data(), static_cast<unsigned>(names.size())));
-  if (!s) throw RunFailed{"export: libmatio could not create the struct " + name};
+  if (!s) throw std::runtime_error("export: libmatio could not create the struct " + name);
   for (size_t i = 0; i < count; ++i)
     for (const std::string& f : fields) {
       Var value = field(i, f);
-      if (!value) throw RunFailed{"export: libmatio could not create " + name + "." + f};
+      if (!value) throw std::runtime_error("export: libmatio could not create " + name + "." + f);
       Mat_VarSetStructFieldByName(s.get(), f.c_str(), i, value.release());  // the struct owns it now
     }
   return s;

@@ -1,6 +1,7 @@
 #include "result_folder.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "hbtrack/io/json_file.hpp"
 #include "hbtrack/results/state_columns.hpp"
 
 namespace hbtrack::cli {
@@ -75,13 +77,8 @@ ResultFolderContents list_result_folder(const std::string& dir) {
 
 nlohmann::json read_summary(const std::string& dir) {
   const std::string path = dir + "/summary.json";
-  std::ifstream in(path);
-  if (!in) throw CaseError(path + ": cannot read (is " + dir + " a result folder of hbtrack?)");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const std::exception&) {
-    throw CaseError(path + ": not valid JSON");
-  }
+  if (!std::ifstream(path)) throw CaseError(path + ": cannot read (is " + dir + " a result folder of hbtrack?)");
+  return read_json_file(path, "a result summary");
 }
 
 namespace {
@@ -150,7 +147,7 @@ std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinit
   return overrides;
 }
 
-long parse_integer(const std::string& flag, const std::string& text, long min) {
+long parse_integer(const std::string& flag, const std::string& text, long min, long max) {
   size_t used = 0;
   long value = 0;
   try {
@@ -160,18 +157,17 @@ long parse_integer(const std::string& flag, const std::string& text, long min) {
   }
   if (used == 0 || used != text.size() || value < min)
     throw CaseError(flag + ": must be an integer >= " + std::to_string(min) + ", got '" + text + "'");
+  if (value > max) throw CaseError(flag + ": must be at most " + std::to_string(max) + ", got '" + text + "'");
   return value;
 }
 
 double parse_number(const std::string& flag, const std::string& text) {
-  size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(value)) throw CaseError(flag + ": must be a finite number, got '" + text + "'");
+  // strtod, not stod: stod refuses a subnormal (1e-310) as out of range.
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  const double value = std::strtod(begin, &end);
+  if (text.empty() || end != begin + text.size() || std::isspace(static_cast<unsigned char>(text[0])) || !std::isfinite(value))
+    throw CaseError(flag + ": must be a finite number, got '" + text + "'");
   return value;
 }
 

@@ -4,6 +4,7 @@
 // from a tracking curve). Every problem is a CaseError naming the file and the rule (exit 2).
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,7 +57,8 @@ Eigen::VectorXd read_unknowns(const CsvTable& table, size_t row, size_t first, c
 std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinition& plain);
 
 // Flag values that arrive as text, checked so that a bad one gives a one-line CaseError naming it.
-long parse_integer(const std::string& flag, const std::string& text, long min);
+// Integers are at most `max` (by default INT_MAX: callers store an int, and 4294967297 wrapped to 1).
+long parse_integer(const std::string& flag, const std::string& text, long min, long max = std::numeric_limits<int>::max());
 double parse_number(const std::string& flag, const std::string& text);
 double parse_positive(const std::string& flag, const std::string& text);
 // One of a choice's names (util/choices.hpp), e.g. --method.

@@ -58,4 +58,9 @@ void ResultFolderSink::require_unfinished(const std::vector<StopReason>& finishe
     throw CaseError("--resume: " + dir_ + " finished (" + reason + "), nothing to resume");
 }
 
+nlohmann::json ResultFolderSink::stopped_summary() const {
+  if (!std::filesystem::exists(dir_ + "/summary.json")) return nullptr;
+  return read_summary(dir_);
+}
+
 }  // namespace hbtrack::cli

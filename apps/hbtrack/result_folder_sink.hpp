@@ -24,6 +24,7 @@ class ResultFolderSink final : public runs::ResultSink {
   bool resuming() const override { return resume_; }
   void require_unfinished(const std::vector<StopReason>& finished) const override;
   std::string checkpoint_path() const override { return dir_ + "/checkpoint.json"; }
+  nlohmann::json stopped_summary() const override;
 
  private:
   std::string dir_;

@@ -5,6 +5,7 @@
 
 #include "cli_common.hpp"
 #include "cli_monitor.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "hbtrack/runs/parameter_branch.hpp"
 #include "result_folder.hpp"
 #include "result_folder_sink.hpp"
@@ -37,7 +38,7 @@ int run_continue(const ContinueOptions& o) {
   try {
     report = runs::continue_in_parameter(c, {o.param, omega, start, end}, sink, monitor);
   } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const CaseError*>(&e)) throw;
+    if (dynamic_cast<const CaseError*>(&e) || dynamic_cast<const WriteFailed*>(&e)) throw;  // exit 2, 3
     throw RunFailed{e.what()};
   }
   progress.finish();

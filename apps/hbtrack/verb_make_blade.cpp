@@ -4,6 +4,7 @@
 // blade meshed from published stream-surface sections (data/rotor67/sections.csv: NASA rotor 67).
 // With --calculix also the same mesh as a CalculiX deck, blade.inp.
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <optional>
 
@@ -17,6 +18,7 @@
 #include "hbtrack/model/sparse_modes.hpp"
 #include "hbtrack/results/results_writer.hpp"
 #include "node_table.hpp"
+#include "result_folder.hpp"
 
 namespace hbtrack::cli {
 
@@ -31,7 +33,7 @@ struct MakeBladeOptions {
   std::string out_dir;
   std::string geometry;  // a section table; empty: the parametric blade
   int refinement = 1;
-  double rim_depth = -1;  // m; < 0: the section blade's default
+  std::string rim_depth;  // m; empty: the section blade's default
   int modes = 6;
   bool calculix = false;  // also write blade.inp
   bool quiet = false;
@@ -74,7 +76,11 @@ json section_geometry_json(const std::string& path, const SectionBladeOptions& o
 
 int run_make_blade(const MakeBladeOptions& o) {
   const auto t0 = Clock::now();
-  if (o.refinement < 1) throw CaseError("--refine: must be >= 1");
+  // Nothing to save part-way (each file is written whole at the end): Ctrl-C or SIGTERM end the
+  // meshing and the eigensolver at once instead of being noted for a continuation that never asks.
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (o.refinement < 1 || o.refinement > 16) throw CaseError("--refine: must be in 1..16");
   if (o.modes < 3) throw CaseError("--modes: must be >= 3");
   json geometry;
   // Held by value: BladeMesh has no virtual destructor, so neither blade is owned through it.
@@ -83,7 +89,7 @@ int run_make_blade(const MakeBladeOptions& o) {
   const BladeMesh* blade = nullptr;
   IsotropicMaterial material;
   if (o.geometry.empty()) {
-    if (o.rim_depth >= 0) throw CaseError("--rim-depth: only with --geometry (the parametric blade is clamped at its root)");
+    if (!o.rim_depth.empty()) throw CaseError("--rim-depth: only with --geometry (the parametric blade is clamped at its root)");
     const BladeGeometry parametric;
     parametric_blade.emplace(generate_blade(parametric, o.refinement));
     blade = &*parametric_blade;
@@ -92,9 +98,16 @@ int run_make_blade(const MakeBladeOptions& o) {
   } else {
     SectionBladeOptions options;
     options.refinement = o.refinement;
-    if (o.rim_depth >= 0) options.rim_depth = o.rim_depth;
+    if (!o.rim_depth.empty()) {
+      options.rim_depth = parse_number("--rim-depth", o.rim_depth);
+      if (options.rim_depth < 0) throw CaseError("--rim-depth: must be >= 0 (m), got '" + o.rim_depth + "'");
+    }
     const BladeSections sections = read_blade_sections(o.geometry);
-    section_blade.emplace(generate_section_blade(sections, options));
+    try {
+      section_blade.emplace(generate_section_blade(sections, options));
+    } catch (const std::invalid_argument& e) {
+      throw CaseError(o.geometry + ": " + e.what());  // the table's geometry or the flags: bad input
+    }
     blade = &*section_blade;
     geometry = section_geometry_json(o.geometry, options, *section_blade);
     material = options.material;

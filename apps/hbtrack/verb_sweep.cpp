@@ -12,6 +12,7 @@
 
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
+#include "hbtrack/io/json_file.hpp"
 #include "hbtrack/results/results_writer.hpp"
 #include "hbtrack/util/stop_reason.hpp"
 #include "result_folder.hpp"
@@ -39,12 +40,11 @@ void claim_folder(const std::string& dir, const json& definition) {
   const std::string saved_path = dir + "/sweep.json";
   if (fs::exists(saved_path)) {
     lock_result_folder(dir);
-    std::ifstream in(saved_path);
     json saved;
     try {
-      saved = json::parse(in);
-    } catch (const std::exception&) {
-      throw CaseError("-o: " + saved_path + " is not valid JSON (delete " + dir + " to start over)");
+      saved = read_json_file(saved_path, "a sweep definition");
+    } catch (const CaseError& e) {
+      throw CaseError("-o: " + std::string(e.what()) + " (delete " + dir + " to start over)");
     }
     for (const auto& [key, value] : definition.items())
       if (!saved.contains(key) || saved[key] != value)

@@ -8,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "cli_monitor.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "hbtrack/runs/switch_branch.hpp"
 #include "result_folder.hpp"
 #include "result_folder_sink.hpp"
@@ -65,7 +66,7 @@ int run_switch(const SwitchOptions& o) {
   try {
     report = runs::switch_branch(period_one, run, sink, monitor);
   } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const CaseError*>(&e)) throw;
+    if (dynamic_cast<const CaseError*>(&e) || dynamic_cast<const WriteFailed*>(&e)) throw;  // exit 2, 3
     throw RunFailed{e.what()};
   }
   progress.finish();

@@ -16,6 +16,8 @@ its points; bad arguments raise ValueError naming the argument. The columns are 
 docs/outputs.md. Every computation takes the case's settings for that run as keywords
 (``continuation={...}``, ``set={...}``: hbtrack.with_settings) and ``progress=callable``.
 """
+import math
+
 import numpy as np
 
 from ._core import require_core
@@ -447,6 +449,9 @@ def isolas(case, tracks, *, at, progress=None, **settings):
     >>> sorted(found["branches"])
     >>> hill = hbtrack.isolas(case, curve, at=0.15, stability={"method": "hill"})
     """
+    # As the CLI's --at: nan ran and reported "completed" with nothing found.
+    if not math.isfinite(float(at)):
+        raise ValueError(f"at: must be a finite number, got {at!r}")
     if isinstance(tracks, dict):
         tracks = [tracks]
     if not tracks:

@@ -9,6 +9,7 @@ beside ``build/python``; the installed ``bin/hbtrack`` of the prefix holding thi
 """
 import os
 import shutil
+import signal
 import subprocess
 
 import numpy as np
@@ -64,6 +65,39 @@ def _case_file(case, caller):
                     f"keywords, e.g. set={{...}}), not a {type(case).__name__}")
 
 
+def _run_as_group(args, quiet):
+    """Runs ARGS in a process group of its own. On KeyboardInterrupt (or any exception) the whole
+    group, the tool and its task processes, gets SIGTERM (they stop at their next point and write
+    their summaries), then SIGKILL if still there after 10 s: subprocess.run killed the tool
+    alone, and its tasks went on computing."""
+    with subprocess.Popen(args, stderr=subprocess.PIPE if quiet else None, text=True, start_new_session=True) as process:
+        try:
+            _, err = process.communicate()
+        except BaseException:
+            _end_group(process)
+            raise
+        return subprocess.CompletedProcess(args, process.returncode, None, err)
+
+
+def _end_group(process):
+    for sig, wait_s in ((signal.SIGTERM, 10.0), (signal.SIGKILL, None)):
+        try:
+            os.killpg(process.pid, sig)
+        except ProcessLookupError:
+            break
+        try:
+            process.wait(timeout=wait_s)
+        except subprocess.TimeoutExpired:
+            continue
+        # The tool ended: any task it left is still in the group.
+        try:
+            os.killpg(process.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        break
+    process.wait()
+
+
 def _run_tool(verb, case_path, output, options, settings, quiet):
     """Runs `hbtrack VERB CASE OPTIONS --set ...` (OPTIONS name the folder OUTPUT); returns the
     folder read back."""
@@ -72,7 +106,7 @@ def _run_tool(verb, case_path, output, options, settings, quiet):
         args += ["--set", override]
     if quiet:
         args.append("-q")
-    done = subprocess.run(args, stderr=subprocess.PIPE if quiet else None, text=True)
+    done = _run_as_group(args, quiet)
     if done.returncode == 2:  # bad input: nothing was computed
         raise ValueError((done.stderr or "").strip() or f"hbtrack {verb}: bad input")
     if done.returncode not in (0, 1):

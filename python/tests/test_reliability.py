@@ -101,3 +101,38 @@ def test_wrong_result_kinds_are_value_errors():
         hbtrack.track(case, {"summary": {}}, lp=1, param="amplitude", range=(0.5, 2))
     with pytest.raises(ValueError, match="tracks: expected track results"):
         hbtrack.isolas(case, [{"summary": {"options": {}}}], at=1.0)
+
+
+def test_isolas_at_nan_is_a_value_error():
+    """Issue 39: at=nan ran and returned "completed" with nothing found; the CLI refuses --at nan."""
+    case = hbtrack.load_case(DUFFING)
+    for at in (float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="at: must be a finite number"):
+            hbtrack.isolas(case, {}, at=at)
+
+
+def test_keyboard_interrupt_in_sweep_ends_its_task_processes(tmp_path):
+    """Issue 39: after a KeyboardInterrupt, hbtrack.sweep had killed the tool alone; its task
+    processes went on computing."""
+    folder = tmp_path / "sweep"
+    script = textwrap.dedent(f"""
+        import signal, hbtrack
+        def stop(*_):
+            raise KeyboardInterrupt
+        signal.signal(signal.SIGALRM, stop)
+        signal.setitimer(signal.ITIMER_REAL, 1.5)
+        try:
+            hbtrack.sweep({DUFFING!r}, {str(folder)!r}, grid={{"amplitude": [0.5, 1.0, 1.5, 2.0]}}, jobs=2,
+                          set={{"continuation.step": 0.0002, "continuation.step_max": 0.0002, "continuation.max_points": 100000}})
+            print("finished")
+        except KeyboardInterrupt:
+            print("interrupted")
+    """)
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120,
+                          env={**os.environ, "PYTHONPATH": os.pathsep.join(sys.path)})
+    assert done.stdout.strip() == "interrupted", done.stderr
+    time.sleep(0.5)
+    left = subprocess.run(["pgrep", "-f", str(folder)], capture_output=True, text=True).stdout.split()
+    for pid in left:
+        os.kill(int(pid), signal.SIGKILL)
+    assert not left, "task processes still running after the KeyboardInterrupt"

@@ -33,7 +33,8 @@ double parse_number(const std::string& text, const std::string& path, long line,
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v)) fail(path, line, std::string(column) + ": '" + text + "' is not a finite number");
+  // ERANGE also flags a subnormal such as 1e-310, which is a number: only an overflow is not.
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) fail(path, line, std::string(column) + ": '" + text + "' is not a finite number");
   return v;
 }
 
@@ -61,8 +62,12 @@ BladeSections read_blade_sections(const std::string& path) {
     if (text.empty()) continue;
     if (text[0] == '#') {
       const auto equals = text.find('=');
-      if (equals != std::string::npos && trimmed(text.substr(1, equals - 1)) == "blade_count")
+      if (equals != std::string::npos && trimmed(text.substr(1, equals - 1)) == "blade_count") {
+        // A second line would silently replace the first.
+        if (sections.blade_count != 0) fail(path, line, "blade_count: given twice");
         sections.blade_count = parse_index(trimmed(text.substr(equals + 1)), path, line, "blade_count");
+        if (sections.blade_count > kMaxBladeCount) fail(path, line, "blade_count: must be <= " + std::to_string(kMaxBladeCount));
+      }
       continue;
     }
     if (!header_seen) {
@@ -77,7 +82,10 @@ BladeSections read_blade_sections(const std::string& path) {
     if (cells.size() != 6) fail(path, line, "expected 6 columns, got " + std::to_string(cells.size()));
     const int surface = parse_index(cells[0], path, line, kColumns[0]);
     const int point = parse_index(cells[1], path, line, kColumns[1]);
-    if (surface == static_cast<int>(sections.surfaces.size()) + 1) sections.surfaces.emplace_back();
+    if (surface == static_cast<int>(sections.surfaces.size()) + 1) {
+      if (surface > kMaxStreamSurfaces) fail(path, line, "surface: at most " + std::to_string(kMaxStreamSurfaces) + " stream surfaces");
+      sections.surfaces.emplace_back();
+    }
     if (surface != static_cast<int>(sections.surfaces.size())) fail(path, line, "surface: surfaces must be numbered 1, 2, ... in order");
     auto& points = sections.surfaces.back();
     if (point != static_cast<int>(points.size()) + 1) fail(path, line, "point: points must be numbered 1, 2, ... in order on each surface");

@@ -23,7 +23,8 @@ std::vector<std::string> names_from_text(const CaseReader& in, const toml::value
   if (const std::size_t bad = first_invalid_utf8(text); bad != std::string_view::npos)
     in.fail(&where, field, path + ": not valid UTF-8 (byte " + std::to_string(bad) + ")");
   std::vector<std::string> names;
-  const std::string_view all(text);
+  std::string_view all(text);
+  if (all.substr(0, 3) == "\xEF\xBB\xBF") all.remove_prefix(3);  // a UTF-8 byte-order mark (Windows editors) is not part of the first name
   std::size_t start = 0;
   for (long line = 1; start <= all.size(); ++line) {
     const std::size_t end = std::min(all.find('\n', start), all.size());
@@ -79,6 +80,26 @@ std::vector<std::string> names_from_file(const CaseReader& in, const toml::value
 
 }  // namespace
 
+std::string column_name_problem(const std::string& what, const std::string& name) {
+  // Dof and parameter names head CSV columns (states.csv: NAME_c1, ...; continue's parameter)
+  // that export, --from and read_result split at commas and lines.
+  if (name.empty()) return "a " + what + " is empty";
+  bool bad = false;
+  std::string shown;  // control characters as \xNN: the error stays one line
+  for (const char ch : name) {
+    const auto byte = static_cast<unsigned char>(ch);
+    bad = bad || byte < 0x20 || byte == 0x7f || ch == ',' || ch == '"';
+    if (byte < 0x20 || byte == 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      shown += std::string("\\x") + hex[byte >> 4] + hex[byte & 15];
+    } else {
+      shown += ch;
+    }
+  }
+  if (bad) return what + " " + quoted(std::string_view(shown)) + " holds a comma, a double quote or a control character (it heads CSV columns)";
+  return "";
+}
+
 std::vector<std::string> numbered_dof_names(int n) {
   std::vector<std::string> names;
   names.reserve(static_cast<std::size_t>(std::max(n, 0)));
@@ -99,8 +120,10 @@ std::vector<std::string> read_dof_names(const CaseReader& in, const toml::value&
     in.fail(&dofs, field, "expected an array of dof names, a dof count N (names x1 .. xN) or { file = \"names.txt\" }");
   }
   std::set<std::string> seen;
-  for (const auto& name : names)
+  for (const auto& name : names) {
+    if (const std::string problem = column_name_problem("dof name", name); !problem.empty()) in.fail(&dofs, field, problem);
     if (!seen.insert(name).second) in.fail(&dofs, field, "dof name '" + name + "' appears twice");
+  }
   return names;
 }
 

@@ -12,6 +12,10 @@ namespace hbtrack {
 // model whose dense matrices would not fit in memory.
 inline constexpr std::size_t kMaxDofNamesFileBytes = std::size_t{16} << 20;
 
+// Why `name` cannot head a CSV column ("" when it can): empty, or holding a comma, a double quote
+// or a control character (tab, newline, NUL). `what` names it in the message ("dof name").
+std::string column_name_problem(const std::string& what, const std::string& name);
+
 // "x1" .. "xN": the names of `dofs = N` and of the chain model.
 std::vector<std::string> numbered_dof_names(int n);
 

@@ -159,7 +159,10 @@ void read_parameters(const CaseReader& in, const toml::value& root, CaseDefiniti
     // Sorted for a stable order in outputs.
     std::map<std::string, const toml::value*> sorted;
     for (const auto& [key, value] : p->as_table()) sorted[key] = &value;
-    for (const auto& [key, value] : sorted) c.parameters.set(key, in.number(*value, "parameters." + key));
+    for (const auto& [key, value] : sorted) {
+      if (const std::string problem = column_name_problem("parameter name", key); !problem.empty()) in.fail(value, "parameters", problem);
+      c.parameters.set(key, in.number(*value, "parameters." + key));
+    }
   }
   if (c.parameters.find("amplitude") < 0) c.parameters.set("amplitude", 1.0);
 }

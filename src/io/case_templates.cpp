@@ -98,11 +98,15 @@ void expand_element_templates(const CaseReader& in, toml::value& root) {
     from_templates += nodes.size();
     if (from_templates > kMaxTemplateElements)
       in.fail(nodes_value, field + ".nodes", "templates give more than " + std::to_string(kMaxTemplateElements) + " elements");
+    // The block without its node and per_node lists, copied per node: copying the whole block
+    // copied every list once per node (20 000 nodes and 5 lists: minutes). A copy keeps the
+    // lines of its values for the errors of read_elements.
+    toml::value skeleton = block;
+    skeleton.as_table().erase("nodes");
+    for (const std::string& key : per_node) skeleton.as_table().at(key) = toml::value();
     for (std::size_t i = 0; i < nodes.size(); ++i) {
-      // A copy of the block keeps the lines of its values for the errors of read_elements.
-      toml::value element = block;
+      toml::value element = skeleton;
       toml::table& table = element.as_table();
-      table.erase("nodes");
       toml::value& element_dofs = table.at("dofs");
       if (element_dofs.is_array())
         for (toml::value& d : element_dofs.as_array()) replace_marks(d, nodes[i]);

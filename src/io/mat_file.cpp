@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "mat_header_check.hpp"
+#include "hbtrack/io/mat_header_check.hpp"
 #include "matrix_file_limits.hpp"
 
 namespace hbtrack {

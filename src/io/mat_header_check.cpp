@@ -1,4 +1,4 @@
-#include "mat_header_check.hpp"
+#include "hbtrack/io/mat_header_check.hpp"
 
 #include <zlib.h>
 

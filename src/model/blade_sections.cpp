@@ -38,6 +38,7 @@ std::vector<SectionPoint> tip_section(const std::vector<SectionPoint>& casing, d
 
 void BladeSections::validate() const {
   if (surfaces.size() < 2) invalid("at least 2 stream surfaces are needed (hub and tip)");
+  if (surfaces.size() > kMaxStreamSurfaces) invalid("at most " + std::to_string(kMaxStreamSurfaces) + " stream surfaces");
   for (size_t s = 0; s < surfaces.size(); ++s) {
     const auto& surface = surfaces[s];
     const std::string where = "surface " + std::to_string(s + 1) + ": ";
@@ -50,7 +51,7 @@ void BladeSections::validate() const {
       if (p.tangential_thickness < 0) invalid(where + "tangential thickness must be >= 0");
     }
   }
-  if (blade_count < 1) invalid("blade count must be >= 1");
+  if (blade_count < 1 || blade_count > kMaxBladeCount) invalid("blade count must be in 1.." + std::to_string(kMaxBladeCount));
 }
 
 RotationSense rotation_sense(const BladeSections& sections) {

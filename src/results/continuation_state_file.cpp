@@ -3,6 +3,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "hbtrack/io/json_file.hpp"
 #include "hbtrack/results/results_writer.hpp"
 
 namespace hbtrack {
@@ -33,7 +34,8 @@ json summary_json(const ContinuationSummary& s) {
           {"jacobian_evaluations", s.jacobian_evaluations},
           {"residual_evaluations", s.residual_evaluations},
           {"chord_iterations", s.chord_iterations},
-          {"factorizations", s.factorizations}};
+          {"factorizations", s.factorizations},
+          {"corners_stepped_over", s.corners_stepped_over}};
 }
 
 json state_json(const ContinuationState& state) {
@@ -75,6 +77,7 @@ ContinuationSummary summary_from_json(const json& summary) {
   s.residual_evaluations = summary.value("residual_evaluations", 0);
   s.chord_iterations = summary.value("chord_iterations", 0);
   s.factorizations = summary.value("factorizations", 0);
+  s.corners_stepped_over = summary.value("corners_stepped_over", 0);
   return s;
 }
 
@@ -117,10 +120,10 @@ StopReason stop_reason_from_json(const json& leg, const std::string& where) {
 // Parses path as a checkpoint of `format`; read(document) builds the result. Errors name the path.
 template <class Read>
 auto read_checkpoint(const std::string& path, int format, Read read) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open (no checkpoint: the run stopped before its first step)");
+  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open (no checkpoint: the run stopped before its first step)");
+  // Bounded in size and depth before parsing: settings nested 200 000 deep overflowed the stack.
+  const json document = read_json_file(path, "a checkpoint");
   try {
-    const json document = json::parse(in);
     if (document.at("format").get<int>() != format)
       throw std::runtime_error("format " + document.at("format").dump() + " is not " + std::to_string(format));
     return read(document);
@@ -133,13 +136,16 @@ auto read_checkpoint(const std::string& path, int format, Read read) {
 
 }  // namespace
 
-void write_continuation_state(const std::string& path, const ContinuationState& state, const nlohmann::json& settings) {
-  write_json_atomically(path, {{"format", kFormat}, {"settings", settings}, {"state", state_json(state)}});
+void write_continuation_state(const std::string& path, const ContinuationState& state, const nlohmann::json& settings,
+                              const nlohmann::json& tallies) {
+  write_json_atomically(path, {{"format", kFormat}, {"settings", settings}, {"state", state_json(state)}, {"tallies", tallies}});
 }
 
 SavedContinuation read_continuation_state(const std::string& path) {
   return read_checkpoint(path, kFormat, [](const json& document) {
-    return SavedContinuation{state_from_json(document.at("state")), document.at("settings")};
+    const json tallies = document.value("tallies", json::object());
+    if (!tallies.is_object()) throw std::runtime_error("tallies: expected an object");
+    return SavedContinuation{state_from_json(document.at("state")), document.at("settings"), tallies};
   });
 }
 

@@ -6,6 +6,8 @@
 #include <complex>
 #include <nlohmann/json.hpp>
 
+#include "hbtrack/results/model_fingerprint.hpp"
+
 namespace hbtrack {
 
 using nlohmann::json;
@@ -27,6 +29,7 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
   for (int i = 0; i < hbm.parameters().size(); ++i) params[hbm.parameters().names()[static_cast<size_t>(i)]] = hbm.parameters().value(i);
   const auto& co = c.nfrc.continuation;
   return {{"case", c.path},
+          {"model_fnv1a", model_fingerprint(c.model, c.elements)},  // refuses a --resume on an edited model
           {"parameters", params},
           {"harmonic_balance", harmonic_balance},
           {"continuation",

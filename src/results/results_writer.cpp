@@ -19,6 +19,7 @@ CsvAppender::CsvAppender(const std::string& path, const std::vector<std::string>
   for (size_t i = 0; i < header.size(); ++i) out_ << (i ? "," : "") << header[i];
   out_ << '\n';
   out_.flush();
+  if (!out_) throw WriteFailed(path + ": write failed (disk full?)");
 }
 
 CsvAppender::CsvAppender(const std::string& path, size_t columns) : path_(path), out_(path, std::ios::app), columns_(columns) {
@@ -62,13 +63,26 @@ CsvAppender CsvAppender::continuing_points(const std::string& path, const std::v
 void CsvAppender::append(const std::vector<double>& row) {
   if (row.size() != columns_) throw std::logic_error(path_ + ": row has the wrong number of columns");
   char buffer[32];
+  std::string line;
   for (size_t i = 0; i < row.size(); ++i) {
     std::snprintf(buffer, sizeof buffer, "%.17g", row[i]);
-    out_ << (i ? "," : "") << buffer;
+    if (i) line += ',';
+    line += buffer;
   }
-  out_ << '\n';
+  line += '\n';
+  // Every earlier row is flushed: the file's size is where this one starts. A row the disk took
+  // only part of is cut off again, or the table could not be read back (export, --from).
+  std::error_code ec;
+  const auto before = std::filesystem::file_size(path_, ec);
+  out_.write(line.data(), static_cast<std::streamsize>(line.size()));
   out_.flush();
-  if (!out_) throw std::runtime_error(path_ + ": write failed (disk full?)");
+  if (!out_) {
+    if (!ec) {
+      out_.close();
+      [[maybe_unused]] const int ignored = ::truncate(path_.c_str(), static_cast<off_t>(before));
+    }
+    throw WriteFailed(path_ + ": write failed (disk full?)");
+  }
 }
 
 void write_file_atomically(const std::string& path, const std::string& bytes) {
@@ -77,10 +91,10 @@ void write_file_atomically(const std::string& path, const std::string& bytes) {
   const std::string tmp = path + ".tmp";
   const auto fail = [&](const std::string& what, int error) {
     ::unlink(tmp.c_str());
-    throw std::runtime_error(tmp + ": " + what + ": " + std::strerror(error) + (error == ENOSPC || error == EFBIG ? " (disk full?)" : ""));
+    throw WriteFailed(tmp + ": " + what + ": " + std::strerror(error) + (error == ENOSPC || error == EFBIG ? " (disk full?)" : ""));
   };
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) throw std::runtime_error(tmp + ": cannot open for writing: " + std::strerror(errno));
+  if (fd < 0) throw WriteFailed(tmp + ": cannot open for writing: " + std::strerror(errno));
   for (std::size_t done = 0; done < bytes.size();) {
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
     if (n < 0 && errno == EINTR) continue;

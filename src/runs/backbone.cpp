@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "hbtrack/model/damping.hpp"
 #include "hbtrack/results/backbone_tables.hpp"
 #include "hbtrack/results/result_tables.hpp"
 #include "hbtrack/results/state_columns.hpp"
@@ -22,6 +23,17 @@ RunReport backbone(CaseDefinition c, BackboneOptions options, ResultSink& sink, 
                     " modes");
   c.harmonic_balance.condensation = Condensation::none;
   HarmonicBalance hbm = make_system(c);
+  // What compute_backbone refuses, refused before the folder exists (it was exit 3 after it).
+  try {
+    hbm.refuse_residual_elements("the backbone (EPMC)");
+  } catch (const std::invalid_argument& e) {
+    throw CaseError(std::string("elements: ") + e.what());
+  }
+  if (hbm.subharmonic() != 1 || hbm.basis().cosine_index(1) < 0)
+    throw CaseError("harmonic_balance: the backbone needs harmonic 1 among the harmonics and subharmonic = 1");
+  const NormalModes modes = normal_modes(c.model.mass, c.model.stiffness);
+  if (!(modes.frequencies(options.mode - 1) > 1e-6 * modes.frequencies.maxCoeff()))
+    throw CaseError("--mode: mode " + std::to_string(options.mode) + " has no positive frequency (a rigid-body mode): follow a flexible one");
   options.continuation = c.nfrc.continuation;
   json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["backbone"] = backbone_options_json(options);

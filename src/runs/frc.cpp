@@ -35,6 +35,11 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   if (sink.resuming())
     resumed = checkpoint_to_resume(sink, {StopReason::reached_end, StopReason::left_range, StopReason::closed}, settings,
                                    read_continuation_state);
+  // Checked before the folder is touched: the engine refused it later, exit 3 and the summary
+  // left at running.
+  if (resumed && resumed->state.x.size() != hbm.unknowns() + 1)
+    throw CaseError("--resume: " + sink.checkpoint_path() + ": the state holds " + std::to_string(resumed->state.x.size() - 1) +
+                    " unknowns, this case " + std::to_string(hbm.unknowns()));
   sink.open();
   // A resumed run appends to the tables the checkpoint covers.
   const int rows_kept = resumed ? resumed->state.points : 0;
@@ -45,12 +50,19 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   ContinuationRestart restart;
   if (resumed) restart.resume_from = &resumed->state;
   // After every accepted point (and step-size update): what a resumed run goes on from.
+  // The stability methods of the points so far, kept in the checkpoint: r.recorded below holds
+  // this run's points only, and a resumed run's summary counted those alone.
+  const json earlier_methods = resumed ? resumed->tallies.value("stability_methods", json::object()) : json::object();
+  json methods = earlier_methods;
   const std::string checkpoint = sink.checkpoint_path();
   if (!checkpoint.empty())
-    restart.on_state = [&](const ContinuationState& state) { write_continuation_state(checkpoint, state, settings); };
+    restart.on_state = [&](const ContinuationState& state) {
+      write_continuation_state(checkpoint, state, settings, {{"stability_methods", methods}});
+    };
   Coverage coverage = Coverage::one_way(from, end);
   const RecordedObserver record = [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
     tables.append(p, rec);
+    if (!rec.stability_method.empty()) methods[rec.stability_method] = methods.value(rec.stability_method, 0) + 1;
     return monitor.point({index, p.lambda, p.lambda, 0, coverage.add(p.lambda), &rec});
   };
   NfrcResult r;
@@ -63,6 +75,11 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   const auto& s = r.continuation.summary;
   const std::string stop_reason = to_string(monitor.stop_reason(s.stop_reason));
   add_nfrc_summary(summary, c, hbm, r);
+  if (summary.contains("stability_methods"))
+    for (const auto& [method, count] : earlier_methods.items()) {
+      json& points = summary["stability_methods"]["points"];
+      if (count.is_number_integer()) points[method] = points.value(method, 0) + count.get<int>();
+    }
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};
   tables.append_special_points(r.continuation.special_points);

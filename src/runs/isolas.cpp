@@ -1,6 +1,7 @@
 #include "hbtrack/runs/isolas.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "hbtrack/results/result_tables.hpp"
 #include "hbtrack/runs/branch_tables.hpp"
@@ -31,6 +32,8 @@ RunReport isolas(const CaseDefinition& c, const IsolaOptions& o, ResultSink& sin
   const auto t0 = RunClock::now();
   HarmonicBalance hbm = make_system(c);
   const int parameter = parameter_index(hbm.parameters(), o.parameter, "--param");
+  // The CLI's --at refuses it as text; Python's at=nan reached the run and found no crossing.
+  if (!std::isfinite(o.at)) throw CaseError("at: must be a finite number, got " + std::to_string(o.at));
   double lo = o.at, hi = o.at;
   for (const auto& curve : o.curves)
     for (const auto& p : curve) lo = std::min(lo, p.parameter), hi = std::max(hi, p.parameter);

@@ -6,6 +6,7 @@
 #include "hbtrack/analysis/parameter_continuation.hpp"
 #include "hbtrack/results/parameter_tables.hpp"
 #include "hbtrack/results/result_tables.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "hbtrack/results/state_columns.hpp"
 #include "hbtrack/runs/case_system.hpp"
 #include "hbtrack/util/coverage.hpp"
@@ -41,6 +42,8 @@ RunReport continue_in_parameter(const CaseDefinition& c, const ParameterBranchOp
                                 if (unknowns) unknowns->append(state_row(o.omega, p.u));
                                 return monitor.point({index, o.omega, p.lambda, 0, coverage.add(p.lambda), &point.recorded});
                               });
+  } catch (const WriteFailed&) {
+    throw;  // the disk, not the continuation: no summary can be written either
   } catch (const std::runtime_error& e) {
     summary["stop_reason"] = to_string(StopReason::no_convergence);
     summary["points"] = 0;

@@ -6,6 +6,7 @@
 #include "hbtrack/analysis/branch_switching.hpp"
 #include "hbtrack/analysis/period_doubling.hpp"
 #include "hbtrack/results/result_tables.hpp"
+#include "hbtrack/results/results_writer.hpp"
 #include "hbtrack/runs/branch_tables.hpp"
 #include "hbtrack/runs/case_system.hpp"
 #include "hbtrack/util/coverage.hpp"
@@ -52,6 +53,8 @@ RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o
   try {
     s = o.type == "PD" ? switch_at_period_doubling(system, hbm.basis(), c.nfrc, c.outputs, o.at.x, omega, known, observer)
                        : switch_at_branch_point(system, c.nfrc, c.outputs, o.at.x, omega, known, true, false, observer);
+  } catch (const WriteFailed&) {
+    throw;  // the disk, not the continuation: no summary can be written either
   } catch (const std::runtime_error&) {
     summary["stop_reason"] = to_string(StopReason::no_convergence);
     sink.summary(summary);

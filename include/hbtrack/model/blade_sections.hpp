@@ -16,11 +16,17 @@ struct SectionPoint {
   double axial = 0, radius = 0, rtheta_suction = 0, tangential_thickness = 0;
 };
 
+// Far above any rotor (rotor 67: 14 surfaces, 22 blades); a larger table is a wrong file, and the
+// span elements (one layer per gap between surfaces) grow with the surfaces.
+inline constexpr int kMaxStreamSurfaces = 100;
+inline constexpr int kMaxBladeCount = 1000;
+
 struct BladeSections {
   std::vector<std::vector<SectionPoint>> surfaces;  // hub (0) to casing; each leading to trailing edge
   int blade_count = 0;                               // blades on the rotor (the disk sector's pitch)
   // Throws std::invalid_argument naming the rule broken (fewer than 2 surfaces or 4 points, a
-  // negative thickness or radius, a non-finite value, surfaces of different point counts).
+  // negative thickness or radius, a non-finite value, surfaces of different point counts,
+  // more than kMaxStreamSurfaces surfaces, a blade count outside 1..kMaxBladeCount).
   void validate() const;
 };
 

@@ -8,6 +8,10 @@
 
 namespace hbtrack {
 
+// A mesh of more elements is refused before it is built: its modes would take hours (rotor 67 at
+// --refine 4 has 34 816).
+inline constexpr long kMaxSectionBladeElements = 50'000;
+
 struct SectionBladeOptions {
   // NASA's running clearance at 100 % speed, 0.024 inch, and a tangential thickness floor at
   // the edges (where the published thickness goes to zero) of 0.5 mm.

@@ -11,12 +11,16 @@
 
 namespace hbtrack {
 
-// Writes {"format", "settings", "state"} to path atomically (temp file + rename).
-void write_continuation_state(const std::string& path, const ContinuationState& state, const nlohmann::json& settings);
+// Writes {"format", "settings", "state", "tallies"} to path atomically (temp file + rename).
+// `tallies` are the run's own counts over the points the state covers (frc: the stability
+// methods), which a resumed run adds its own to.
+void write_continuation_state(const std::string& path, const ContinuationState& state, const nlohmann::json& settings,
+                              const nlohmann::json& tallies = nlohmann::json::object());
 
 struct SavedContinuation {
   ContinuationState state;
   nlohmann::json settings;
+  nlohmann::json tallies;  // an object; empty in checkpoints written before tallies
 };
 // Throws std::runtime_error "<path>: <what is wrong>" for a missing or malformed file.
 SavedContinuation read_continuation_state(const std::string& path);

@@ -3,12 +3,20 @@
 // killed run keeps what it computed, and summary.json replaced atomically.
 #include <Eigen/Dense>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
 namespace hbtrack {
+
+// A result file that could not be written (a full disk, a file-size limit): the system failed the
+// run (exit code 3), which a run must not report as a continuation that did not converge.
+class WriteFailed : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 class CsvAppender {
  public:
@@ -34,7 +42,7 @@ class CsvAppender {
 
 // Writes `bytes` to PATH.tmp, checks every write, fsyncs and closes it, then renames it over
 // PATH: PATH is the old file or the complete new one, never a partial one. Throws
-// std::runtime_error naming the file and the reason (a full disk) and removes PATH.tmp.
+// WriteFailed naming the file and the reason (a full disk) and removes PATH.tmp.
 void write_file_atomically(const std::string& path, const std::string& bytes);
 
 // write_file_atomically of the document, indented by 2.

@@ -56,6 +56,9 @@ class ResultSink {
   // The file a resumable run keeps its checkpoint in, written after every accepted point ("" for
   // none: results in memory are not resumed).
   virtual std::string checkpoint_path() const { return ""; }
+  // The stopped run's last summary (null when it wrote none), for a run stopped before its first
+  // checkpoint: the settings it was computed with.
+  virtual nlohmann::json stopped_summary() const;
 };
 
 }  // namespace hbtrack::runs
