@@ -17,7 +17,10 @@ if command -v ccache > /dev/null; then
   # clone of the same sources hits the same entries.
   export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime CCACHE_BASEDIR="$PWD"
 fi
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 -DHBTRACK_BUILD_BENCH=$bench "${launcher[@]}"
+# Unity builds: the suite builds from scratch twice below, and batches of files compile the
+# shared Eigen, JSON, CLI11 and GoogleTest templates once per batch (docs/performance.md, CI).
+unity=(-DHBTRACK_UNITY_BUILD=ON)
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 -DHBTRACK_BUILD_BENCH=$bench "${unity[@]}" "${launcher[@]}"
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs"
 
@@ -28,7 +31,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   # than -g and writes a third of the object size (measured on harmonic_balance.cpp: 75 s
   # against 98 s, 14 against 43 MB).
   cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-    -DHBTRACK_SANITIZE=ON -DHBTRACK_BUILD_BENCH=OFF -DHBTRACK_PYTHON=OFF "${launcher[@]}"
+    -DHBTRACK_SANITIZE=ON -DHBTRACK_BUILD_BENCH=OFF -DHBTRACK_PYTHON=OFF "${unity[@]}" "${launcher[@]}"
   cmake --build build-sanitize -j "$jobs"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-sanitize --output-on-failure -j "$jobs"

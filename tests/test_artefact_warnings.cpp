@@ -4,6 +4,10 @@
 
 #include "hbtrack/runs/artefact_warnings.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_artefact_warnings {
+
 using namespace hbtrack;
 
 namespace {
@@ -49,3 +53,5 @@ TEST(ArtefactWarnings, AMinNextToAMaxAtTheSameParameterIsAWiggleNotABirthAndAMer
   EXPECT_TRUE(runs::extremum_pairs_below_resolution({extremum("max", 40, 1.2, 0.3), extremum("min", 41, 1.3, 0.29999)}, "mu", 1.0, 0.4).empty());
   EXPECT_TRUE(runs::extremum_pairs_below_resolution({extremum("max", 1, 1.2, 0.3), extremum("max", 2, 1.2, 0.3)}, "mu", 1.0, 0.4).empty());
 }
+
+}  // namespace hbtrack_tests::file_artefact_warnings

@@ -14,6 +14,10 @@
 #include "hbtrack/model/damping.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_backbone {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -168,3 +172,5 @@ TEST(BackboneCli, WritesTheBackboneAndRejectsBadFlags) {
   }
   fs::remove_all(out);
 }
+
+}  // namespace hbtrack_tests::file_backbone

@@ -14,6 +14,10 @@
 #include "hbtrack/model/blade_generator.hpp"
 #include "hbtrack/model/calculix_deck.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_blade_calculix_reader {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -202,3 +206,5 @@ TEST_F(CalculixReader, RealCalculixOutputMatchesHbtrackAssembly) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_blade_calculix_reader

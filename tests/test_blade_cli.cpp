@@ -16,6 +16,10 @@
 #include "hbtrack/io/matrix_market.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_blade_cli {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -291,3 +295,5 @@ TEST_F(BladeCli, NominalContactCaseRunsEndToEndBelowTheLinearResonance) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_blade_cli

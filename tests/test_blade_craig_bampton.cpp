@@ -5,6 +5,10 @@
 #include "hbtrack/model/craig_bampton.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_blade_craig_bampton {
+
 namespace {
 
 using namespace hbtrack;
@@ -97,3 +101,5 @@ TEST(CraigBampton, RejectsBadInput) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_blade_craig_bampton

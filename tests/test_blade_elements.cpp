@@ -11,6 +11,10 @@
 #include "hbtrack/model/solid_mesh.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_blade_elements {
+
 namespace {
 
 using namespace hbtrack;
@@ -142,3 +146,5 @@ TEST(Hex20, CantileverFirstBendingMatchesEulerBernoulli) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_blade_elements

@@ -15,6 +15,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_blade_input_cli {
+
 namespace fs = std::filesystem;
 
 using hbtrack::test::CliRun;
@@ -156,3 +160,5 @@ TEST(BladeInput, SigtermEndsAMakeBladeAtOnce) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
 }
+
+}  // namespace hbtrack_tests::file_blade_input_cli

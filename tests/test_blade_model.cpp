@@ -9,6 +9,10 @@
 #include "hbtrack/model/blade_mode_classifier.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_blade_model {
+
 namespace {
 
 using namespace hbtrack;
@@ -108,3 +112,5 @@ TEST(BladeGenerator, RejectsBadGeometry) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_blade_model

@@ -15,6 +15,10 @@
 #include "hbtrack/results/state_columns.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_blade_simulation {
+
 namespace fs = std::filesystem;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
@@ -99,3 +103,5 @@ TEST(BladeSimulation, NewmarkStaysOnTheHbmOrbitAtTheContactResonance) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_blade_simulation

@@ -12,6 +12,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_branch_switching {
+
 using namespace hbtrack;
 using Eigen::VectorXd;
 namespace fs = std::filesystem;
@@ -92,3 +96,5 @@ TEST(SwitchCli, FollowsTheNewBranchAndRejectsAPointThatIsNoBranchPoint) {
   fs::remove_all(frc);
   fs::remove_all(out);
 }
+
+}  // namespace hbtrack_tests::file_branch_switching

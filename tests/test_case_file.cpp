@@ -11,6 +11,10 @@
 #include "hbtrack/model/damping.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_case_file {
+
 using namespace hbtrack;
 namespace fs = std::filesystem;
 
@@ -227,3 +231,5 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
     }
   }
 }
+
+}  // namespace hbtrack_tests::file_case_file

@@ -12,6 +12,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_case_file_docs {
+
 namespace {
 
 using KeySet = std::set<std::string>;
@@ -82,3 +86,5 @@ TEST(CaseFileDocs, EveryKeyTableListsExactlyTheKeysTheReaderAccepts) {
   }
   EXPECT_EQ(documented.size(), 6u) << "a new key table: add its section above";
 }
+
+}  // namespace hbtrack_tests::file_case_file_docs

@@ -8,6 +8,10 @@
 #include "hbtrack/results/result_tables.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_case_settings {
+
 using namespace hbtrack;
 
 namespace {
@@ -50,3 +54,5 @@ TEST(CaseSettings, RefusesWhatTheCaseFileRefuses) {
   EXPECT_NE(error_of(c, {"harmonic_balance.harmonics=0"}).find("harmonic_balance.harmonics"), std::string::npos);
   EXPECT_NE(error_of(c, {"elements[0].cubic_stiffness=2"}).find("'elements' is the case's"), std::string::npos);
 }
+
+}  // namespace hbtrack_tests::file_case_settings

@@ -12,6 +12,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_case_templates {
+
 using namespace hbtrack;
 namespace fs = std::filesystem;
 
@@ -238,3 +242,5 @@ TEST(CaseTemplates, RewrittenExamplesLoadAsTheirNineBlocks) {
     EXPECT_EQ(set.model.dof_names[static_cast<size_t>(set.elements[8]->dofs[0])], "n9_r");
   }
 }
+
+}  // namespace hbtrack_tests::file_case_templates

@@ -11,6 +11,10 @@
 #include "hbtrack/util/choices.hpp"
 #include "hbtrack/util/stop_reason.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_choices {
+
 using namespace hbtrack;
 
 namespace {
@@ -101,3 +105,5 @@ TEST(Choices, ACallerMayNameTheFieldItsOwnWay) {
     EXPECT_STREQ(e.what(), "--method: must be bordered or extended, got 'minimal'");
   }
 }
+
+}  // namespace hbtrack_tests::file_choices

@@ -11,6 +11,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_cli {
+
 namespace fs = std::filesystem;
 
 using hbtrack::test::CliRun;
@@ -172,3 +176,5 @@ TEST(Cli, FrcFromAPointOfAnotherResultExtendsItsRange) {
   EXPECT_EQ(run_cli("frc " + duffing + " --point 3 -o " + (out / "x").string()).exit_code, 2);
   fs::remove_all(out);
 }
+
+}  // namespace hbtrack_tests::file_cli

@@ -14,7 +14,12 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
-namespace hbtrack {
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_constant_system {
+
+using namespace hbtrack;
+
 namespace {
 
 using Eigen::MatrixXd;
@@ -168,4 +173,5 @@ TEST(ConstantSystem, AWorkspaceOfAnotherSystemOrWrongValuesAreRefused) {
 }
 
 }  // namespace
-}  // namespace hbtrack
+
+}  // namespace hbtrack_tests::file_constant_system

@@ -10,6 +10,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_continuation {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -214,3 +218,5 @@ TEST(Continuation, AllPredictorCorrectorVariantsGiveTheSameDuffingLimitPoints) {
     EXPECT_NEAR(lps[i][1], lps[0][1], 2e-3);
   }
 }
+
+}  // namespace hbtrack_tests::file_continuation

@@ -8,6 +8,10 @@
 
 #include "hbtrack/continuation/continuation.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_continuation_corners {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -158,3 +162,5 @@ TEST(ContinuationCorners, DampedNewtonStartsWherePlainNewtonCycles) {
   EXPECT_EQ(r.summary.stop_reason, StopReason::reached_end);
   EXPECT_NEAR(r.points.back().u(0), 1.5, 1e-9);
 }
+
+}  // namespace hbtrack_tests::file_continuation_corners

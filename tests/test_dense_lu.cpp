@@ -7,6 +7,10 @@
 
 #include "hbtrack/util/dense_lu.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_dense_lu {
+
 using hbtrack::DenseLU;
 using hbtrack::estimate_norm1;
 using Eigen::MatrixXd;
@@ -59,3 +63,5 @@ TEST(DenseLU, InverseNormEstimateIsALowerBoundWithinAFactorOfThree) {
     EXPECT_GE(estimate, exact / 3) << n;            // Hager's estimate is rarely worse (Higham 1988)
   }
 }
+
+}  // namespace hbtrack_tests::file_dense_lu

@@ -14,6 +14,10 @@
 #include "hbtrack/timeint/equation_of_motion.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_dlft {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -217,3 +221,5 @@ TEST(Dlft, CaseFileFormAndItsLimits) {
     EXPECT_NE(std::string(e.what()).find("elements[0].law: \"dlft\" has no stability analysis"), std::string::npos) << e.what();
   }
 }
+
+}  // namespace hbtrack_tests::file_dlft

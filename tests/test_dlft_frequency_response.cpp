@@ -14,6 +14,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_dlft_frequency_response {
+
 using namespace hbtrack;
 using Eigen::VectorXd;
 
@@ -66,3 +70,5 @@ TEST(DlftFrequencyResponse, ExampleReachesTheEndOfItsRangeOnTheDirectSolutions) 
     EXPECT_LT(gap, 1e-8) << "omega " << omega;
   }
 }
+
+}  // namespace hbtrack_tests::file_dlft_frequency_response

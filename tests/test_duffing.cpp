@@ -9,6 +9,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_duffing {
+
 using namespace hbtrack;
 using Eigen::VectorXd;
 
@@ -175,3 +179,5 @@ TEST(Duffing, ChordIterationsFindTheSameLimitPointsWithFewerFactorizations) {
     EXPECT_NEAR(b[i].lambda, a[i].lambda, 1e-8 * a[i].lambda) << a[i].type << " " << i;
   }
 }
+
+}  // namespace hbtrack_tests::file_duffing

@@ -10,6 +10,10 @@
 
 #include "hbtrack/io/case_file.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_element_bindings {
+
 using namespace hbtrack;
 namespace fs = std::filesystem;
 
@@ -125,3 +129,5 @@ TEST(ElementBindings, CoversEveryElementTypeTheReaderKnows) {
     EXPECT_EQ(count, covered.size()) << msg;
   }
 }
+
+}  // namespace hbtrack_tests::file_element_bindings

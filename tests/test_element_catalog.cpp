@@ -13,6 +13,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_element_catalog {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -152,3 +156,5 @@ TEST(ElementCatalog, TheReaderFillsDefaultsAndChecksRangesFromTheSpecs) {
     }
   }
 }
+
+}  // namespace hbtrack_tests::file_element_catalog

@@ -14,6 +14,10 @@
 #include "hbtrack/elements/element_catalog.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_element_catalog_docs {
+
 namespace {
 
 // One `name` [unit] (part; part; ...) of the element table's keys column.
@@ -107,3 +111,5 @@ TEST(ElementCatalogDocs, TheElementTableIsTheElementCatalogue) {
   for (const auto& [type, keys] : documented) documented_types.insert(type);
   EXPECT_EQ(documented_types, types) << "docs/case-file.md: element types not in the catalogue";
 }
+
+}  // namespace hbtrack_tests::file_element_catalog_docs

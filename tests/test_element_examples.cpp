@@ -6,6 +6,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_element_examples {
+
 using namespace hbtrack;
 
 class ElementExample : public testing::TestWithParam<const char*> {};
@@ -33,3 +37,5 @@ INSTANTIATE_TEST_SUITE_P(Cases, ElementExample,
                            std::string name = param.param;
                            return name.substr(0, name.find('.'));
                          });
+
+}  // namespace hbtrack_tests::file_element_examples

@@ -11,6 +11,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_element_library {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -207,3 +211,5 @@ TEST(ElementLibraryCase, BadInputIsOneClearLine) {
     }
   }
 }
+
+}  // namespace hbtrack_tests::file_element_library

@@ -6,6 +6,10 @@
 #include "hbtrack/elements/lanczos.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_elements {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -143,3 +147,5 @@ TEST(Lanczos, SigmaFactors) {
   EXPECT_GT(s(1), s(7));
   EXPECT_TRUE(lanczos_factors(4, 0.0).isOnes());
 }
+
+}  // namespace hbtrack_tests::file_elements

@@ -12,6 +12,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_export_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
@@ -138,3 +142,5 @@ TEST(ExportCli, RefusesAMissingFolderAndAnUnknownFormatInOneLine) {
   EXPECT_TRUE(fs::is_empty(folder)) << "nothing half-written";
   fs::remove_all(folder);
 }
+
+}  // namespace hbtrack_tests::file_export_cli

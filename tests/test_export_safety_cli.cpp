@@ -11,6 +11,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_export_safety_cli {
+
 namespace fs = std::filesystem;
 
 using hbtrack::test::CliRun;
@@ -98,3 +102,5 @@ TEST(ExportSafety, ADeeplyNestedOrMalformedSummaryIsBadInput) {
   EXPECT_EQ(r.err.find("json.exception"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
+
+}  // namespace hbtrack_tests::file_export_safety_cli

@@ -12,7 +12,12 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
-namespace hbtrack {
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_fold_tracking {
+
+using namespace hbtrack;
+
 namespace {
 
 using Eigen::MatrixXd;
@@ -262,4 +267,5 @@ TEST(Continuation, ClosedBranchStopsBackOnItsFirstPoint) {
 }
 
 }  // namespace
-}  // namespace hbtrack
+
+}  // namespace hbtrack_tests::file_fold_tracking

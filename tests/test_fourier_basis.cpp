@@ -6,6 +6,10 @@
 
 #include "hbtrack/hbm/fourier_basis.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_fourier_basis {
+
 using hbtrack::FourierBasis;
 
 TEST(FourierBasis, AnalysisInvertsSynthesisUpToH) {
@@ -69,3 +73,5 @@ TEST(FourierBasis, RejectsTooFewSamples) {
   EXPECT_THROW(FourierBasis(5, 10), std::invalid_argument);
   EXPECT_NO_THROW(FourierBasis(5, 11));
 }
+
+}  // namespace hbtrack_tests::file_fourier_basis

@@ -13,6 +13,10 @@
 #include "hbtrack/runs/friction_loop_gain_summary.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_friction_loop_gain {
+
 using namespace hbtrack;
 using Eigen::Matrix4d;
 
@@ -199,3 +203,5 @@ TEST(FrictionLoopGain, Rotor67SelfEnergisesAtN3AndN4InTheGeometrysSenseOnly) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_friction_loop_gain

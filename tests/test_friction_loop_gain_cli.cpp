@@ -9,6 +9,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_friction_loop_gain_cli {
+
 namespace {
 
 using hbtrack::test::fresh_temp_dir;
@@ -101,3 +105,5 @@ TEST(FrictionLoopGainCli, FrcOfACaseWithoutFrictionHasNoField) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_friction_loop_gain_cli

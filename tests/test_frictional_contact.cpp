@@ -10,6 +10,10 @@
 #include "hbtrack/elements/frictional_contact.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_frictional_contact {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -147,3 +151,5 @@ TEST(FrictionalContact, AftJacobianMatchesFiniteDifferences) {
     EXPECT_LT(test::residual_jacobian_error(hbm, x, 1.1, 1e-7), 1e-6) << "normal amplitude " << an;
   }
 }
+
+}  // namespace hbtrack_tests::file_frictional_contact

@@ -21,6 +21,10 @@
 #include "hbtrack/io/matrix_market.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_fuzz_corpora {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -80,3 +84,5 @@ TEST(FuzzCorpora, CalculixInputsLoadOrGiveOneLineErrors) {
                         [](const std::string& p) { hbtrack::read_calculix_input_nodes(p); }});
   EXPECT_GE(n, 3);
 }
+
+}  // namespace hbtrack_tests::file_fuzz_corpora

@@ -11,6 +11,10 @@
 #include "hbtrack/hbm/recorded_outputs.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_harmonic_balance {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -186,3 +190,5 @@ TEST(HarmonicBalance, CondensedAndFullSystemsGiveTheSameSolution) {
     EXPECT_GT(dof_signal(full_solutions[0], 9, 5, 0, 512).maxCoeff(), f.parameters.value("clearance"));
   }
 }
+
+}  // namespace hbtrack_tests::file_harmonic_balance

@@ -14,6 +14,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_harmonic_selection {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -267,3 +271,5 @@ TEST(HarmonicSelection, TheCliNamesTheColumnsByTheHarmonicsBalanced) {
   EXPECT_TRUE(std::filesystem::exists(out / "sim" / "summary.json")) << sim.err;
   std::filesystem::remove_all(out);
 }
+
+}  // namespace hbtrack_tests::file_harmonic_selection

@@ -23,6 +23,10 @@
 #include "hbtrack/timeint/steady_state.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_history_time_stepping {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -298,3 +302,5 @@ TEST(HistoryTimeStepping, ThreeOscillatorsMonodromyVerdictsAreTheSimulations) {
     }
   }
 }
+
+}  // namespace hbtrack_tests::file_history_time_stepping

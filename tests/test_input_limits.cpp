@@ -21,6 +21,10 @@
 #include "hbtrack/results/results_writer.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_input_limits {
+
 namespace fs = std::filesystem;
 using hbtrack::CaseError;
 using hbtrack::load_case;
@@ -205,3 +209,5 @@ TEST(InputLimits, TemplateExpansionIsLinearInTheNodes) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
   EXPECT_NE(error.find("elements[0]"), std::string::npos) << error;
 }
+
+}  // namespace hbtrack_tests::file_input_limits

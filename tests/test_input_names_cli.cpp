@@ -10,6 +10,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_input_names_cli {
+
 namespace fs = std::filesystem;
 
 using hbtrack::test::CliRun;
@@ -95,3 +99,5 @@ TEST(InputNames, BackbonesBadInputIsExit2BeforeAnyFolder) {
   const std::string dlft = hbtrack::test::source_path("examples/frictional_contact_dlft.toml");
   expect_bad_input(run_cli("backbone " + dlft + " --range 0.01:2 -q -o " + out.string()), out, "with law = \"dlft\"");
 }
+
+}  // namespace hbtrack_tests::file_input_names_cli

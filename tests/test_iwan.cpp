@@ -11,6 +11,10 @@
 #include "hbtrack/hbm/harmonic_balance.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_iwan {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -176,3 +180,5 @@ TEST(Iwan, AftJacobianMatchesFiniteDifferencesInMicroAndMacroSlip) {
     EXPECT_LT(test::residual_jacobian_error(hbm, x, 0.9, 1e-7 * phi_max), 1e-6) << "a / phi_max = " << a;
   }
 }
+
+}  // namespace hbtrack_tests::file_iwan

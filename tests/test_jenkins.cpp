@@ -11,6 +11,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_jenkins {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -198,3 +202,5 @@ TEST(Jenkins, NlvibThreeOscillatorFrequencyResponseReachesTheEnd) {
   for (const RecordedPoint& p : r.recorded) peak = std::max(peak, p.outputs[0].max);
   EXPECT_GT(peak, kLimit / kStiffness);
 }
+
+}  // namespace hbtrack_tests::file_jenkins

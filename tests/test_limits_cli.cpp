@@ -16,6 +16,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_limits_cli {
+
 namespace fs = std::filesystem;
 
 using hbtrack::test::CliRun;
@@ -185,3 +189,5 @@ TEST(LimitsCli, ContinueOnAFullDiskLeavesWholeRowsAndExits3) {
     }
   }
 }
+
+}  // namespace hbtrack_tests::file_limits_cli

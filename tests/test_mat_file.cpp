@@ -16,6 +16,10 @@
 
 #include "matrix_file_test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_mat_file {
+
 namespace {
 
 using namespace hbtrack::test;  // TempDirTest, expect_error, example_matrix, sparse_from, fs
@@ -431,3 +435,5 @@ TEST_F(MatFileTest, TruncatedFileNeverCrashes) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_mat_file

@@ -10,6 +10,10 @@
 
 #include "matrix_file_test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_matrix_market {
+
 namespace {
 
 using namespace hbtrack::test;  // TempDirTest, expect_error, example_matrix, sparse_from, fs
@@ -307,3 +311,5 @@ TEST_F(MatrixMarketTest, TruncatedOrCorruptedInputNeverCrashes) {
     }
 }
 }  // namespace
+
+}  // namespace hbtrack_tests::file_matrix_market

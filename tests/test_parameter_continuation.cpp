@@ -13,6 +13,10 @@
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_parameter_continuation {
+
 using namespace hbtrack;
 using Eigen::VectorXd;
 namespace fs = std::filesystem;
@@ -130,3 +134,5 @@ TEST(ContinueCli, WritesTheBranchWithTheParameterColumnAndItsFolds) {
   EXPECT_NE(bad_range.err.find("--range"), std::string::npos) << bad_range.err;
   fs::remove_all(out);
 }
+
+}  // namespace hbtrack_tests::file_parameter_continuation

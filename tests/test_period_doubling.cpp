@@ -20,6 +20,10 @@
 #include "hbtrack/timeint/initial_state.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_period_doubling {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -227,3 +231,5 @@ TEST(PeriodDoubling, TheCliSwitchesAtAPdOntoTheBranchAtHalfTheFrequency) {
   fs::remove_all(frc);
   fs::remove_all(out);
 }
+
+}  // namespace hbtrack_tests::file_period_doubling

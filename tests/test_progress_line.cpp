@@ -18,6 +18,10 @@
 #include "step_progress.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_progress_line {
+
 namespace fs = std::filesystem;
 using hbtrack::cli::Coverage;
 using hbtrack::cli::covered_fraction;
@@ -222,3 +226,5 @@ TEST(ProgressLine, TrackShareMovesOnEveryLegInALog) {
   EXPECT_LE(longest_stall(percentages), 6u) << track.err;
   fs::remove_all(dir);
 }
+
+}  // namespace hbtrack_tests::file_progress_line

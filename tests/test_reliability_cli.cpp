@@ -12,6 +12,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_reliability_cli {
+
 namespace fs = std::filesystem;
 
 using hbtrack::test::CliRun;
@@ -220,3 +224,5 @@ TEST(Reliability, InterruptedTrackResumesToTheSameCurveInEitherLeg) {
   EXPECT_EQ(no_from.exit_code, 2);
   EXPECT_NE(no_from.err.find("--from is required (or --resume DIR)"), std::string::npos) << no_from.err;
 }
+
+}  // namespace hbtrack_tests::file_reliability_cli

@@ -16,6 +16,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_result_columns_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::test::csv_header;
 using hbtrack::test::run_cli;
@@ -155,3 +159,5 @@ TEST_F(ResultColumns, StabilityTableHoldsTheExponentsThatDecidedStable) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_result_columns_cli

@@ -14,6 +14,10 @@
 #include "resume_command.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_resume_command_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::cli::resume_advice;
 using hbtrack::cli::resume_command;
@@ -116,3 +120,5 @@ TEST(ResumeCommand, TrackStoppedBySigtermPrintsItsResumeCommand) {
   EXPECT_EQ(summary_of(root / "track")["stop_reason"], "completed");
   fs::remove_all(root);
 }
+
+}  // namespace hbtrack_tests::file_resume_command_cli

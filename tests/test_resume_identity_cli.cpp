@@ -11,6 +11,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_resume_identity_cli {
+
 namespace fs = std::filesystem;
 
 using hbtrack::test::CliRun;
@@ -155,3 +159,5 @@ TEST(ResumeIdentity, TrackRefusesAnEditedModel) {
   const CliRun same = run_cli(track + " --resume " + dir);
   EXPECT_EQ(same.exit_code, 0) << same.err;
 }
+
+}  // namespace hbtrack_tests::file_resume_identity_cli

@@ -9,6 +9,10 @@
 #include "hbtrack/model/section_blade.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_rotor67_case {
+
 namespace {
 
 using namespace hbtrack;
@@ -49,3 +53,5 @@ TEST(BladeCase, FrictionOpposesTheBladeMotionReadFromTheGeometry) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_rotor67_case

@@ -12,6 +12,10 @@
 #include "hbtrack/util/cubic_spline.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_rotor67_geometry {
+
 namespace {
 
 using namespace hbtrack;
@@ -168,3 +172,5 @@ TEST(CylindricalFrame, AboutAnyAxisIsTheFrameAboutXRotated) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_rotor67_geometry

@@ -17,6 +17,10 @@
 #include "hbtrack/model/sparse_modes.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_rotor67_model {
+
 namespace {
 
 using namespace hbtrack;
@@ -101,3 +105,5 @@ TEST(Rotor67Case, NominalNfrcRunsEndToEndAndFoldsBelowTheLinearResonance) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_rotor67_model

@@ -13,6 +13,10 @@
 #include "hbtrack/util/dense_eigen.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_stability {
+
 using namespace hbtrack;
 using Eigen::VectorXd;
 
@@ -296,3 +300,5 @@ TEST(Stability, ArnoldiExponentsAreEigenvaluesOfThePencilOnABasisWithoutTheMean)
   }
   EXPECT_GT(compared, 10);
 }
+
+}  // namespace hbtrack_tests::file_stability

@@ -14,6 +14,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_stability_contact {
+
 using namespace hbtrack;
 
 namespace {
@@ -261,3 +265,5 @@ TEST(StabilityContact, HillAloneFindsEveryReferencePointWithItsType) {
       }
   }
 }
+
+}  // namespace hbtrack_tests::file_stability_contact

@@ -14,6 +14,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_state_columns_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::test::csv_header;
 using hbtrack::test::csv_records;
@@ -154,3 +158,5 @@ TEST(ElementForces, AreTheLawAppliedToTheStatesHarmonics) {
   EXPECT_FALSE(fs::exists(dir / "without" / "element_forces.csv"));
   fs::remove_all(dir);
 }
+
+}  // namespace hbtrack_tests::file_state_columns_cli

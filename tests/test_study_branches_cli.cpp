@@ -14,6 +14,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_study_branches_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
@@ -174,3 +178,5 @@ TEST(StudyBranchesCli, BadBackboneOrSwitchKeysGiveOneLineErrorsNamingFileFieldAn
   }
   fs::remove_all(dir);
 }
+
+}  // namespace hbtrack_tests::file_study_branches_cli

@@ -4,6 +4,10 @@
 
 #include "study_checks.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_study_checks {
+
 using nlohmann::json;
 
 namespace {
@@ -53,3 +57,5 @@ TEST(StudyChecks, ANominalNfrcThatStoppedEarlyFailsTheStudy) {
   s["nfrc"]["stop_reason"] = "reached_end";
   EXPECT_TRUE(hbtrack::cli::failed_checks(s).empty());
 }
+
+}  // namespace hbtrack_tests::file_study_checks

@@ -14,6 +14,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_study_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
@@ -167,3 +171,5 @@ TEST(StudyCli, AStudyWhoseValidationFailsExitsOneAndSaysSoFirst) {
   EXPECT_LT(index.find("## Failed checks"), index.find("!["));
   fs::remove_all(dir);
 }
+
+}  // namespace hbtrack_tests::file_study_cli

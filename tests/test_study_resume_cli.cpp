@@ -14,6 +14,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_study_resume_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
@@ -189,3 +193,5 @@ TEST(StudyResume, AFailedNominalStepStopsTheStudyWithItsReasonAndResumeRunsItAga
   EXPECT_TRUE(r["stop_reason"] == "completed" || r["stop_reason"] == "checks_failed") << r["stop_reason"];
   fs::remove_all(dir);
 }
+
+}  // namespace hbtrack_tests::file_study_resume_cli

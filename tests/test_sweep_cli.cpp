@@ -13,6 +13,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_sweep_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::test::CliRun;
 using hbtrack::test::file_bytes;
@@ -216,3 +220,5 @@ TEST(SweepCli, BadInputGivesOneLineErrorsAndWritesNothing) {
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_sweep_cli

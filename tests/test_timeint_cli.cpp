@@ -10,6 +10,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_timeint_cli {
+
 namespace fs = std::filesystem;
 
 using hbtrack::test::CliRun;
@@ -134,3 +138,5 @@ TEST(TimeIntegrationCli, PointBeyondTheResultIsRejected) {
   EXPECT_NE(r.err.find("--point: 1 is beyond the last point"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
+
+}  // namespace hbtrack_tests::file_timeint_cli

@@ -10,6 +10,10 @@
 #include "hbtrack/timeint/steady_state.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_timeint_contact {
+
 using namespace hbtrack;
 
 namespace {
@@ -147,3 +151,5 @@ TEST(TimeIntegrationContact, StiffPenaltyContactNeedsTheRefinedSteps) {
   std::printf("[ measured ] k = 5e4, fixed step: %s after %d periods, last change %.2e\n", to_string(unrefined.stop_reason).c_str(),
               unrefined.periods, unrefined.last_change);
 }
+
+}  // namespace hbtrack_tests::file_timeint_contact

@@ -13,6 +13,10 @@
 #include "hbtrack/timeint/steady_state.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_timeint_duffing {
+
 using namespace hbtrack;
 
 namespace {
@@ -103,3 +107,5 @@ TEST_P(DuffingTimeIntegration, LeavesAnUnstableMiddleBranchSolutionForAStableOne
 
 INSTANTIATE_TEST_SUITE_P(Methods, DuffingTimeIntegration, ::testing::Values("newmark", "dopri5"),
                          [](const ::testing::TestParamInfo<std::string>& method) { return method.param; });
+
+}  // namespace hbtrack_tests::file_timeint_duffing

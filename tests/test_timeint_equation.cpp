@@ -14,6 +14,10 @@
 #include "hbtrack/timeint/steady_state.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_timeint_equation {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -95,3 +99,5 @@ TEST(TimeIntegrationEquation, BothMethodsMatchTheHbmOnEveryElementType) {
                 r.statistics.steps, worst);
   }
 }
+
+}  // namespace hbtrack_tests::file_timeint_equation

@@ -12,6 +12,10 @@
 #include "hbtrack/timeint/period_summary.hpp"
 #include "hbtrack/timeint/steady_state.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_timeint_linear {
+
 using namespace hbtrack;
 using cd = std::complex<double>;
 
@@ -221,3 +225,5 @@ TEST(TimeIntegrationPeriodSummary, ExtremesBetweenSamplesAreRefined) {
   EXPECT_NEAR(s.max, 1.0, std::pow(h, 4) / 24);
   EXPECT_NEAR(s.min, -1.0, std::pow(h, 4) / 24);
 }
+
+}  // namespace hbtrack_tests::file_timeint_linear

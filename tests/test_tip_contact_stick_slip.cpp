@@ -12,6 +12,10 @@
 #include "hbtrack/elements/tip_contact.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_tip_contact_stick_slip {
+
 using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -232,3 +236,5 @@ TEST(TipContactStickSlip, StuckSliderMeetsTheSlippingOneAtTheThreshold) {
     EXPECT_LT((below - above).cwiseAbs().maxCoeff(), 1e-7 * above.cwiseAbs().maxCoeff()) << directions << " direction(s)";
   }
 }
+
+}  // namespace hbtrack_tests::file_tip_contact_stick_slip

@@ -12,6 +12,10 @@
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_track_cli {
+
 namespace fs = std::filesystem;
 using hbtrack::test::CliRun;
 using hbtrack::test::csv_header;
@@ -307,3 +311,5 @@ TEST(TrackCli, IsolasAtTheTrackedValueItselfFindsTheLimitPointTheCurveStartsFrom
 }
 
 }  // namespace
+
+}  // namespace hbtrack_tests::file_track_cli

@@ -13,6 +13,10 @@
 #include "hbtrack/results/continuation_state_file.hpp"
 #include "hbtrack/results/results_writer.hpp"
 
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_tracking_checkpoint {
+
 using namespace hbtrack;
 namespace fs = std::filesystem;
 
@@ -85,3 +89,5 @@ TEST_F(TrackingCheckpoint, AnUnknownStopReasonIsBadInputNamingTheFileAndField) {
     EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
   }
 }
+
+}  // namespace hbtrack_tests::file_tracking_checkpoint
