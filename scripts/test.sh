@@ -6,9 +6,9 @@ cd "$(dirname "$0")/.."
 jobs=${JOBS:-$(nproc)}
 
 # /usr/bin/python3: the first python3 on PATH may lack numpy (the Python module and its tests).
-# CI (CI=true) runs no benchmark and skips building them: its target is 45 minutes on 2 cores.
+# The benchmarks are built (so that CI sees them break) but not run: speed is measured on a quiet
+# machine (bench/run.sh), never asserted by the suite.
 bench=ON
-[ -n "${CI:-}" ] && bench=OFF
 # ccache when installed: a second build of unchanged sources takes seconds.
 launcher=()
 if command -v ccache > /dev/null; then
