@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   ccache                 # rebuilds (and CI runs on a machine that built before) reuse compiled objects
+  clang-format           # scripts/check-format.sh: the tree's layout, checked by CI
   libeigen3-dev          # dense/sparse linear algebra
   libcli11-dev           # command line
   nlohmann-json3-dev     # summary.json
