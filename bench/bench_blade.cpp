@@ -49,9 +49,8 @@ void print_row(const Run& r, double per_nfrc_point) {
   const double per_iteration = r.wall / std::max(1, r.iterations);
   const double per_point = r.wall / std::max(1, r.points);
   std::printf("| %s | %d | %d | %d (%d) | %d | %.2f | %.2f | %.2f / %.2f | %.2f | %.2f | %s | %.2f |\n", r.name.c_str(), r.unknowns,
-              r.points, r.iterations, r.chord, r.factorizations, r.wall, 1e3 * per_iteration, 1e3 * lu, 1e3 * eigen_lu,
-              per_iteration / lu, per_iteration / eigen_lu, r.breakdown.cells().c_str(),
-              per_nfrc_point > 0 ? per_point / per_nfrc_point : 1.0);
+              r.points, r.iterations, r.chord, r.factorizations, r.wall, 1e3 * per_iteration, 1e3 * lu, 1e3 * eigen_lu, per_iteration / lu,
+              per_iteration / eigen_lu, r.breakdown.cells().c_str(), per_nfrc_point > 0 ? per_point / per_nfrc_point : 1.0);
 }
 
 }  // namespace
@@ -126,15 +125,18 @@ int main(int argc, char** argv) {
   }
 
   std::printf("Dense LU: %s\n\n", DenseLU::backend().c_str());
-  std::printf("| run | unknowns | points | iterations (chord) | LUs | wall [s] | per it. [ms] | dense LU [ms] (backend / Eigen) | "
-              "per it. / LU | per it. / Eigen LU | AFT | Jacobian | factorization | rest | per point / NFRC per point |\n");
+  std::printf(
+      "| run | unknowns | points | iterations (chord) | LUs | wall [s] | per it. [ms] | dense LU [ms] (backend / Eigen) | "
+      "per it. / LU | per it. / Eigen LU | AFT | Jacobian | factorization | rest | per point / NFRC per point |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Run& r : nfrc_runs) print_row(r, per_point);
   for (const Run& r : tracking) print_row(r, per_point);
-  std::printf("\nIterations: the corrector's, Newton and chord (in parentheses: chord iterations, a residual and a solve with "
-              "kept factors each). LUs: the continuation's dense factorizations (the bordered fold system also factors "
-              "its own bordered matrix at each Newton iteration; its chord residuals refine from those factors).\n");
-  std::printf("\nStability (Hill's method, %zu points sampled, %d unstable): %.0f ms per point, %.2f x the continuation's cost per point.\n",
-              hill_times.size(), unstable, 1e3 * hill_point, hill_point / per_point);
+  std::printf(
+      "\nIterations: the corrector's, Newton and chord (in parentheses: chord iterations, a residual and a solve with "
+      "kept factors each). LUs: the continuation's dense factorizations (the bordered fold system also factors "
+      "its own bordered matrix at each Newton iteration; its chord residuals refine from those factors).\n");
+  std::printf(
+      "\nStability (Hill's method, %zu points sampled, %d unstable): %.0f ms per point, %.2f x the continuation's cost per point.\n",
+      hill_times.size(), unstable, 1e3 * hill_point, hill_point / per_point);
   return 0;
 }

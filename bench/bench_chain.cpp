@@ -90,9 +90,19 @@ Row measure(int n, int harmonics, const std::string& condensation, int samples =
       hbtrack::hill_floquet(hbm, r.continuation.points[i].u, r.continuation.points[i].lambda);
     stability = seconds_since(t1) / timed * std::max(1, s.points);  // per point x points
   }
-  Row row{n,         harmonics, hbm.basis().samples(), hbm.unknowns(), s.points, s.newton_iterations, hbm.condensation_method(),
-          hbtrack::to_string(s.stop_reason), wall, dense_lu_seconds(hbm.unknowns() + 1), wall / std::max(1, s.newton_iterations),
-          stability, breakdown};
+  Row row{n,
+          harmonics,
+          hbm.basis().samples(),
+          hbm.unknowns(),
+          s.points,
+          s.newton_iterations,
+          hbm.condensation_method(),
+          hbtrack::to_string(s.stop_reason),
+          wall,
+          dense_lu_seconds(hbm.unknowns() + 1),
+          wall / std::max(1, s.newton_iterations),
+          stability,
+          breakdown};
   return row;
 }
 
@@ -107,13 +117,15 @@ int main(int argc, char** argv) {
   for (int n : sizes)
     for (int h : harmonics) rows.push_back(measure(n, h, "auto"));
   // The number of samples N at one size, then condensation against the full system.
-  for (int samples : quick ? std::vector<int>{1024} : std::vector<int>{1024, 4096}) rows.push_back(measure(quick ? 8 : 32, quick ? 5 : 10, "auto", samples));
+  for (int samples : quick ? std::vector<int>{1024} : std::vector<int>{1024, 4096})
+    rows.push_back(measure(quick ? 8 : 32, quick ? 5 : 10, "auto", samples));
   if (!quick)
     for (const char* method : {"schur", "none"}) rows.push_back(measure(32, 10, method));
 
   std::printf("Dense LU: %s\n\n", hbtrack::DenseLU::backend().c_str());
-  std::printf("| n | H | N | condensation | unknowns | points | Newton it. | NFRC wall [s] | per Newton it. [ms] | dense LU [ms] | per it. / LU | "
-              "AFT | Jacobian | factorization | rest | Hill per point [ms] | stability / continuation | stop |\n");
+  std::printf(
+      "| n | H | N | condensation | unknowns | points | Newton it. | NFRC wall [s] | per Newton it. [ms] | dense LU [ms] | per it. / LU | "
+      "AFT | Jacobian | factorization | rest | Hill per point [ms] | stability / continuation | stop |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows)
     std::printf("| %d | %d | %d | %s | %d | %d | %d | %.4f | %.4f | %.4f | %.1f | %s | %.3f | %.1f | %s |\n", r.n, r.harmonics, r.samples,

@@ -37,8 +37,8 @@ struct CliRun {
 // tests in parallel processes.
 inline CliRun run_cli(const std::string& args) {
   static int calls = 0;
-  const std::filesystem::path err = std::filesystem::temp_directory_path() /
-                                    ("hbtrack_cli_stderr_" + std::to_string(getpid()) + "_" + std::to_string(calls++) + ".txt");
+  const std::filesystem::path err =
+      std::filesystem::temp_directory_path() / ("hbtrack_cli_stderr_" + std::to_string(getpid()) + "_" + std::to_string(calls++) + ".txt");
   // Appended, not one chain of +: GCC 12 at -O1 reports a false -Warray-bounds on the chain where
   // it inlines this function (a test file that calls it once or twice).
   std::string cmd = HBTRACK_CLI;

@@ -30,8 +30,8 @@ class TempDirTest : public ::testing::Test {
     for (char& c : test_name)
       if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
     std::random_device entropy;
-    dir_ = fs::temp_directory_path() /
-           ("hbtrack_matrix_readers_" + test_name + "_" + std::to_string(entropy()) + std::to_string(entropy()));
+    dir_ =
+        fs::temp_directory_path() / ("hbtrack_matrix_readers_" + test_name + "_" + std::to_string(entropy()) + std::to_string(entropy()));
     fs::create_directories(dir_);
   }
   void TearDown() override {

@@ -50,17 +50,26 @@ TEST(Backbone, EpmcJacobianMatchesFiniteDifferences) {
   EpmcProblem problem(hbm, modes.shapes.col(0), 1, 1, 1, 1, 1);
   const int size = problem.size();
   VectorXd u = VectorXd::Random(size) * 0.3;
-  u(size - 2) = 1.1;   // omega
-  u(size - 1) = 0.07;  // xi
+  u(size - 2) = 1.1;                       // omega
+  u(size - 1) = 0.07;                      // xi
   const double lambda = std::log10(0.02);  // slipping and sticking within the period
   VectorXd r, r_lambda;
   MatrixXd J;
   problem.evaluate(u, lambda, r, &J, &r_lambda);
-  auto residual = [&](const VectorXd& v) { VectorXd out; problem.evaluate(v, lambda, out, nullptr, nullptr); return out; };
+  auto residual = [&](const VectorXd& v) {
+    VectorXd out;
+    problem.evaluate(v, lambda, out, nullptr, nullptr);
+    return out;
+  };
   // Central differences with h = 1e-6: truncation O(h^2 f''') and round-off O(eps |r| / h).
   EXPECT_LT(test::relative_error(J, test::fd_jacobian(residual, u, 1e-6)), 1e-6);
   const VectorXd fd_lambda = test::central_difference(
-      [&](double l) { VectorXd out; problem.evaluate(u, l, out, nullptr, nullptr); return out; }, lambda, 1e-6);
+      [&](double l) {
+        VectorXd out;
+        problem.evaluate(u, l, out, nullptr, nullptr);
+        return out;
+      },
+      lambda, 1e-6);
   EXPECT_LT(test::relative_error(r_lambda, fd_lambda), 1e-6);
 }
 
@@ -92,7 +101,8 @@ TEST(Backbone, DuffingFollowsTheOneTermBackboneUpToTheNeglectedHarmonics) {
 }
 
 TEST(Backbone, NfrcPeaksLieOnTheDuffingBackbone) {
-  const CaseDefinition c = example("duffing.toml", {"continuation.step=0.01", "continuation.step_max=0.01", "continuation.tolerance=1e-11"});
+  const CaseDefinition c =
+      example("duffing.toml", {"continuation.step=0.01", "continuation.step_max=0.01", "continuation.tolerance=1e-11"});
   for (const double forcing : {0.5, 1.0, 2.0}) {
     HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
     hbm.set_parameter(hbm.amplitude_parameter(), forcing);

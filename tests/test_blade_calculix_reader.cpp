@@ -69,9 +69,9 @@ TEST_F(CalculixReader, ReadsUpperTriangleAndDofMap) {
   EXPECT_EQ(m.dofs[4].direction, 3);
   Eigen::MatrixXd k(5, 5);
   k << 4, -1, 0, 0, 0.5,  //
-      -1, 4, -1, 0, 0,     //
-      0, -1, 4, 0, 0,      //
-      0, 0, 0, 2, 0,       //
+      -1, 4, -1, 0, 0,    //
+      0, -1, 4, 0, 0,     //
+      0, 0, 0, 2, 0,      //
       0.5, 0, 0, 0, 3;
   EXPECT_EQ(Eigen::MatrixXd(m.stiffness), k);
   EXPECT_EQ(Eigen::MatrixXd(m.mass), 2.0 * Eigen::MatrixXd::Identity(5, 5));
@@ -195,7 +195,8 @@ TEST_F(CalculixReader, RealCalculixOutputMatchesHbtrackAssembly) {
   ASSERT_EQ(static_cast<int>(ccx.dofs.size()), blade.dofs.free_dofs());
   // Permutation from ccx rows to hbtrack's free dofs.
   Eigen::VectorXi to_own(static_cast<Eigen::Index>(ccx.dofs.size()));
-  for (size_t r = 0; r < ccx.dofs.size(); ++r) to_own(static_cast<Eigen::Index>(r)) = blade.dofs.dof(ccx.dofs[r].node - 1, ccx.dofs[r].direction - 1);
+  for (size_t r = 0; r < ccx.dofs.size(); ++r)
+    to_own(static_cast<Eigen::Index>(r)) = blade.dofs.dof(ccx.dofs[r].node - 1, ccx.dofs[r].direction - 1);
   const Eigen::PermutationMatrix<Eigen::Dynamic> permutation(to_own);
   const Eigen::MatrixXd k_ccx = permutation * Eigen::MatrixXd(ccx.stiffness) * permutation.transpose();
   const Eigen::MatrixXd m_ccx = permutation * Eigen::MatrixXd(ccx.mass) * permutation.transpose();

@@ -198,7 +198,8 @@ TEST_F(BladeCli, ReduceFromCalculixOwnOutputOfTheMakeBladeDeck) {
   const std::string boundary = " --boundary-file " + path("fe/boundary.txt") + " --modes 6 -q -o ";
   CliRun r = run("reduce --calculix " + path("fe/blade") + boundary + path("rom_ccx"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run("reduce --mass " + path("fe/M.mtx") + " --stiffness " + path("fe/K.mtx") + " --nodes " + path("fe/nodes.csv") + boundary + path("rom_own"));
+  r = run("reduce --mass " + path("fe/M.mtx") + " --stiffness " + path("fe/K.mtx") + " --nodes " + path("fe/nodes.csv") + boundary +
+          path("rom_own"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json ccx = read_json(path("rom_ccx/summary.json")), own = read_json(path("rom_own/summary.json"));
   EXPECT_EQ(ccx["inputs"]["nodes"], path("fe/blade.inp"));
@@ -222,7 +223,8 @@ TEST_F(BladeCli, ReduceRejectsBadInputWithOneLineErrors) {
       {matrices + " --boundary " + tip + "," + tip, "is on the boundary twice"},
       {matrices + " --boundary " + tip + " --modes 100000", "fixed-interface modes asked"},
       {" --mass " + path("fe/M.mtx") + " --nodes " + path("fe/nodes.csv") + " --boundary " + tip, "go together"},
-      {" --mass " + path("fe/nodes.csv") + " --stiffness " + path("fe/K.mtx") + " --nodes " + path("fe/nodes.csv") + " --boundary " + tip, "--mass: "},
+      {" --mass " + path("fe/nodes.csv") + " --stiffness " + path("fe/K.mtx") + " --nodes " + path("fe/nodes.csv") + " --boundary " + tip,
+       "--mass: "},
       {" --mass x.mat --stiffness " + path("fe/K.mtx") + " --nodes " + path("fe/nodes.csv") + " --boundary " + tip, "name the variable"},
       {matrices + " --boundary " + tip + " --axis 0,0", "--axis: '0,0' must be x, y, z or a nonzero direction AX,AY,AZ"},
       {matrices + " --boundary " + tip + " --axis 0,0,0", "must be x, y, z or a nonzero direction"},
@@ -254,8 +256,7 @@ TEST_F(BladeCli, ModesOfTheShippedBladeCase) {
     EXPECT_NE(shown.err.find(line), std::string::npos) << line << "\n" << shown.err;
   EXPECT_NE(shown.err.find(", full model 2035.2124 (+0.003 %)"), std::string::npos) << shown.err;
   EXPECT_NE(shown.err.find("the full model's, which the docs quote ("), std::string::npos) << shown.err;
-  EXPECT_NE(shown.err.find("data/blade/summary.json: full_model), differ by the percentages shown"), std::string::npos)
-      << shown.err;
+  EXPECT_NE(shown.err.find("data/blade/summary.json: full_model), differ by the percentages shown"), std::string::npos) << shown.err;
 }
 
 // The nominal contact study end to end, coarsened to keep the suite quick: H = 5 and N = 256

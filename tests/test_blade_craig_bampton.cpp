@@ -72,7 +72,8 @@ TEST(CraigBampton, BoundaryCoordinatesAreLocalDisplacementsAndModesAreDecoupled)
   for (size_t j = 0; j < c.boundary.size(); ++j)
     for (size_t i = 0; i < c.boundary.size(); ++i) {
       Eigen::Matrix3d block;
-      for (int d = 0; d < 3; ++d) block.row(d) = rom.transformation.row(c.boundary[i].dofs[static_cast<size_t>(d)]).segment<3>(static_cast<Eigen::Index>(3 * j));
+      for (int d = 0; d < 3; ++d)
+        block.row(d) = rom.transformation.row(c.boundary[i].dofs[static_cast<size_t>(d)]).segment<3>(static_cast<Eigen::Index>(3 * j));
       const Eigen::Matrix3d expected = i == j ? c.boundary[j].frame : Eigen::Matrix3d::Zero();
       EXPECT_LT((block - expected).cwiseAbs().maxCoeff(), 1e-14);
     }

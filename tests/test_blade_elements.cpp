@@ -130,7 +130,8 @@ TEST(Hex20, CantileverFirstBendingMatchesEulerBernoulli) {
   // 0.3 % at this slenderness and the clamped face (Poisson) stiffens it slightly: 1 % bounds both.
   const double length = 1.0, side = 0.05;
   const IsotropicMaterial steel{210e9, 0.3, 7800.0};
-  const StructuredHex20Grid grid({2, 2, 16}, [&](const Eigen::Vector3d& u) { return Eigen::Vector3d(side * u.x(), side * u.y(), length * u.z()); });
+  const StructuredHex20Grid grid({2, 2, 16},
+                                 [&](const Eigen::Vector3d& u) { return Eigen::Vector3d(side * u.x(), side * u.y(), length * u.z()); });
   std::vector<bool> clamped(static_cast<size_t>(grid.mesh().node_count()), false);
   for (int j = 0; j <= 4; ++j)
     for (int i = 0; i <= 4; ++i)

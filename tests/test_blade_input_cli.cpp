@@ -63,8 +63,7 @@ std::string number(double v) {
 
 // The table with `preamble` lines before the header, and `between` surfaces interpolated between
 // the first two.
-std::string sections_file(const std::string& name, const std::string& preamble, std::vector<std::vector<Row>> surfaces,
-                          int between = 0) {
+std::string sections_file(const std::string& name, const std::string& preamble, std::vector<std::vector<Row>> surfaces, int between = 0) {
   const fs::path path = temp_dir() / name;
   std::ofstream out(path);
   out << preamble << "surface,point,axial_m,radius_m,rtheta_suction_m,tangential_thickness_m\n";
@@ -73,8 +72,7 @@ std::string sections_file(const std::string& name, const std::string& preamble, 
     const double f = double(k) / (between + 1);
     std::vector<Row> surface = hub;
     for (size_t p = 0; p < surface.size(); ++p)
-      for (int c = 2; c < 6; ++c)
-        surface[p].cells[c] = number((1 - f) * std::stod(hub[p].cells[c]) + f * std::stod(tip[p].cells[c]));
+      for (int c = 2; c < 6; ++c) surface[p].cells[c] = number((1 - f) * std::stod(hub[p].cells[c]) + f * std::stod(tip[p].cells[c]));
     surfaces.insert(surfaces.end() - 1, surface);
   }
   for (size_t s = 0; s < surfaces.size(); ++s)
@@ -116,13 +114,16 @@ TEST(BladeInput, PointsTrailingEdgeFirstOrNoThicknessAreBadInputNotAnAbort) {
   for (auto& s : flat)
     for (auto& p : s) p.cells[5] = "0";
   const fs::path out = temp_dir() / "reversed";
-  expect_bad_input(make_blade(sections_file("reversed.csv", "# blade_count = 22\n", reversed), "", out), out, "not the blade of a compressor rotor");
-  expect_bad_input(make_blade(sections_file("flat.csv", "# blade_count = 22\n", flat), "", out), out, "not the blade of a compressor rotor");
+  expect_bad_input(make_blade(sections_file("reversed.csv", "# blade_count = 22\n", reversed), "", out), out,
+                   "not the blade of a compressor rotor");
+  expect_bad_input(make_blade(sections_file("flat.csv", "# blade_count = 22\n", flat), "", out), out,
+                   "not the blade of a compressor rotor");
 }
 
 TEST(BladeInput, BladeCountIsBoundedAndGivenOnce) {
   const fs::path out = temp_dir() / "count";
-  expect_bad_input(make_blade(sections_file("million.csv", "# blade_count = 1000000\n", two_surfaces()), "", out), out, "blade_count: must be <= 1000");
+  expect_bad_input(make_blade(sections_file("million.csv", "# blade_count = 1000000\n", two_surfaces()), "", out), out,
+                   "blade_count: must be <= 1000");
   expect_bad_input(make_blade(sections_file("twice.csv", "# blade_count = 22\n# blade_count = 30\n", two_surfaces()), "", out), out,
                    "blade_count: given twice");
 }
@@ -135,7 +136,8 @@ TEST(BladeInput, TooManyStreamSurfacesAreRefusedAtOnce) {
   expect_bad_input(make_blade(sections_file("many.csv", "# blade_count = 22\n", two_surfaces(), 150), "", out), out,
                    "at most 100 stream surfaces");
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
-  expect_bad_input(make_blade(sections_file("good.csv", "# blade_count = 22\n", two_surfaces()), "--refine 17", out), out, "--refine: must be in 1..16");
+  expect_bad_input(make_blade(sections_file("good.csv", "# blade_count = 22\n", two_surfaces()), "--refine 17", out), out,
+                   "--refine: must be in 1..16");
 }
 
 // A negative or NaN depth meant "the default" (any value < 0 did).

@@ -72,9 +72,14 @@ TEST(BladeModeClassifier, NamesSyntheticShapes) {
   const BladeModel blade = generate_blade(coarse_geometry());
   const double pi = std::numbers::pi;
   EXPECT_EQ(classify_blade_mode(blade, synthetic_shape(blade, false, [](double s, double) { return s * s; })).label(), "1B");
-  EXPECT_EQ(classify_blade_mode(blade, synthetic_shape(blade, false, [&](double s, double) { return std::sin(1.5 * pi * s); })).label(), "2B");
-  EXPECT_EQ(classify_blade_mode(blade, synthetic_shape(blade, false, [&](double s, double c) { return c * std::sin(0.5 * pi * s); })).label(), "1T");
-  EXPECT_EQ(classify_blade_mode(blade, synthetic_shape(blade, false, [&](double s, double c) { return c * std::sin(1.5 * pi * s); })).label(), "2T");
+  EXPECT_EQ(classify_blade_mode(blade, synthetic_shape(blade, false, [&](double s, double) { return std::sin(1.5 * pi * s); })).label(),
+            "2B");
+  EXPECT_EQ(
+      classify_blade_mode(blade, synthetic_shape(blade, false, [&](double s, double c) { return c * std::sin(0.5 * pi * s); })).label(),
+      "1T");
+  EXPECT_EQ(
+      classify_blade_mode(blade, synthetic_shape(blade, false, [&](double s, double c) { return c * std::sin(1.5 * pi * s); })).label(),
+      "2T");
   EXPECT_EQ(classify_blade_mode(blade, synthetic_shape(blade, true, [](double s, double) { return s * s; })).label(), "1E");
   EXPECT_EQ(classify_blade_mode(blade, Eigen::VectorXd::Zero(blade.dofs.free_dofs())).label(), "?");
 }

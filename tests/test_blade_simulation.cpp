@@ -70,7 +70,8 @@ TEST(BladeSimulation, NewmarkStaysOnTheHbmOrbitAtTheContactResonance) {
   hbtrack::HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const std::vector<double>& state = states[last];
   const std::vector<std::string> state_header = hbtrack::test::csv_header(dir / "hbm" / "states.csv");
-  const Eigen::VectorXd x = hbtrack::unknowns_from_state(hbm, {state_header.begin() + 1, state_header.end()}, {state.begin() + 1, state.end()});
+  const Eigen::VectorXd x =
+      hbtrack::unknowns_from_state(hbm, {state_header.begin() + 1, state_header.end()}, {state.begin() + 1, state.end()});
   ASSERT_EQ(x.size(), hbm.unknowns());
   const Eigen::VectorXd full = hbm.expand(x, state[0]);
   const int n = static_cast<int>(c.model.dof_names.size()), harmonics = c.harmonic_balance.harmonics;

@@ -81,7 +81,8 @@ TEST(SwitchCli, FollowsTheNewBranchAndRejectsAPointThatIsNoBranchPoint) {
     if (f["special_points"][k]["type"] != "BP" && other == 0) other = static_cast<int>(k) + 1;
   }
   ASSERT_GT(bp, 0);
-  const test::CliRun r = test::run_cli("switch " + coupled + " --from " + frc.string() + " --point " + std::to_string(bp) + " -o " + out.string() + " -q");
+  const test::CliRun r =
+      test::run_cli("switch " + coupled + " --from " + frc.string() + " --point " + std::to_string(bp) + " -o " + out.string() + " -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
   EXPECT_EQ(s["verb"], "switch");
@@ -89,7 +90,8 @@ TEST(SwitchCli, FollowsTheNewBranchAndRejectsAPointThatIsNoBranchPoint) {
   EXPECT_EQ(test::csv_header(out / "branch.csv"), test::csv_header(frc / "branch.csv"));
   EXPECT_GT(s["points"].get<int>(), 10);
   if (other > 0) {
-    const test::CliRun bad = test::run_cli("switch " + coupled + " --from " + frc.string() + " --point " + std::to_string(other) + " -o " + out.string());
+    const test::CliRun bad =
+        test::run_cli("switch " + coupled + " --from " + frc.string() + " --point " + std::to_string(other) + " -o " + out.string());
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.err.find("--point"), std::string::npos) << bad.err;
   }

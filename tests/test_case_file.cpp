@@ -96,7 +96,8 @@ TEST(CaseFile, ValidCaseLoadsAsWritten) {
 
 // Multi-byte UTF-8 (2, 3 and 4 bytes) is text like any other: only malformed sequences are refused.
 TEST(CaseFile, OutputDescriptionsAreReadAndWrittenToTheSummary) {
-  const CaseDefinition c = load_case(write_case("described", variant("dof = \"b\"\n", "dof = \"b\"\ndescription = \"tip, radial\"\n")).string());
+  const CaseDefinition c =
+      load_case(write_case("described", variant("dof = \"b\"\n", "dof = \"b\"\ndescription = \"tip, radial\"\n")).string());
   ASSERT_EQ(c.outputs.size(), 1u);
   EXPECT_EQ(c.outputs[0].description, "tip, radial");
   EXPECT_EQ(outputs_json(c)[0].value("description", ""), "tip, radial");
@@ -105,13 +106,14 @@ TEST(CaseFile, OutputDescriptionsAreReadAndWrittenToTheSummary) {
 }
 
 TEST(CaseFile, NonAsciiUtf8TextIsAccepted) {
-  const CaseDefinition c = load_case(write_case("utf8", "# clearance in \u00b5m \u2192 0.1, \U0001F600\n" + variant("name = \"tip\"", "name = \"tip_\u00b5\"")).string());
+  const CaseDefinition c = load_case(
+      write_case("utf8", "# clearance in \u00b5m \u2192 0.1, \U0001F600\n" + variant("name = \"tip\"", "name = \"tip_\u00b5\"")).string());
   EXPECT_EQ(c.outputs[0].name, "tip_\u00b5");
 }
 
 TEST(CaseFile, OverridesSetParametersAndKeys) {
-  const CaseDefinition c = load_case(write_case("valid", kValid).string(),
-                                     {"clearance=0.3", "harmonic_balance.harmonics=6", "continuation.step=0.01"});
+  const CaseDefinition c =
+      load_case(write_case("valid", kValid).string(), {"clearance=0.3", "harmonic_balance.harmonics=6", "continuation.step=0.01"});
   EXPECT_DOUBLE_EQ(c.elements[0]->property_values(c.parameters)[1], 0.3);
   EXPECT_EQ(c.harmonic_balance.harmonics, 6);
   EXPECT_DOUBLE_EQ(c.nfrc.continuation.step, 0.01);
@@ -124,8 +126,8 @@ TEST(CaseFile, OverridesSetParametersAndKeys) {
 }
 
 TEST(CaseFile, MassModeForcingExcitesOnlyThatMode) {
-  const CaseDefinition c = load_case(
-      write_case("mass_mode", variant("dof = \"a\"\ncos = 0.5", "shape = \"mass_mode\"\nmode = 1\nscale = 2.0")).string());
+  const CaseDefinition c =
+      load_case(write_case("mass_mode", variant("dof = \"a\"\ncos = 0.5", "shape = \"mass_mode\"\nmode = 1\nscale = 2.0")).string());
   ASSERT_EQ(c.model.forcing.size(), 1u);
   const NormalModes modes = normal_modes(c.model.mass, c.model.stiffness);
   const Eigen::VectorXd& f = c.model.forcing[0].cos_part;
@@ -156,7 +158,8 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"text_in_matrix", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0, \"x\"], [-1.0, 1.0]]"), "model.K[0][1]: expected a number"},
       {"nonsymmetric", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0, -1.0], [-2.0, 1.0]]"), "model.K: must be symmetric"},
       {"indefinite_mass", variant("M = [[1.0, 0.0], [0.0, 2.0]]", "M = [[1.0, 0.0], [0.0, -2.0]]"), "model.M: must be positive definite"},
-      {"unknown_element", variant("type = \"regularized_contact\"", "type = \"regularised_contact\""), "unknown element type 'regularised_contact' (did you mean 'regularized_contact'?)"},
+      {"unknown_element", variant("type = \"regularized_contact\"", "type = \"regularised_contact\""),
+       "unknown element type 'regularised_contact' (did you mean 'regularized_contact'?)"},
       {"unknown_dof", variant("dofs = [\"b\"]", "dofs = [\"c\"]"), "elements[0].dofs[0]: unknown dof 'c'"},
       {"unknown_parameter", variant("gap = \"clearance\"", "gap = \"clearence\""), "elements[0].gap: unknown parameter 'clearence'"},
       {"missing_property", variant("stiffness = 10.0", ""), "elements[0].stiffness: missing"},
@@ -167,7 +170,8 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"few_samples", variant("harmonics = 3", "harmonics = 3\nsamples = 4"), "harmonic_balance.samples: must be >= 2*harmonics+1"},
       {"no_omega_end", variant("omega_end = 2.0", ""), "continuation.omega_end: missing"},
       {"equal_range", variant("omega_end = 2.0", "omega_end = 0.1"), "continuation.omega_end: must differ"},
-      {"bad_predictor", variant("omega_end = 2.0", "omega_end = 2.0\npredictor = \"euler\""), "continuation.predictor: must be tangent or secant"},
+      {"bad_predictor", variant("omega_end = 2.0", "omega_end = 2.0\npredictor = \"euler\""),
+       "continuation.predictor: must be tangent or secant"},
       {"two_dampings", variant("rayleigh = [0.0, 0.01]", "rayleigh = [0.0, 0.01]\nmodal_ratios = [0.01]"), "damping: give exactly one"},
       {"forcing_dof", variant("dof = \"a\"", "dof = \"z\""), "forcing[0].dof: unknown dof 'z'"},
       {"matrix_file_missing", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"nope.mtx\" }"), "model.K.file: file"},
@@ -176,34 +180,48 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"negative_lanczos", variant("lanczos = 1", "lanczos = -1"), "elements[0].lanczos: must be >= 0"},
       // Issue 24: 1e9 was accepted (and removed every harmonic of the force but the mean).
       {"huge_lanczos", variant("lanczos = 1", "lanczos = 1e9"), "elements[0].lanczos: must be <= 10"},
-      {"forcing_above_truncation", variant("cos = 0.5", "cos = 0.5\nharmonic = 4"), "forcing[0].harmonic: must be <= harmonic_balance.harmonics = 3"},
+      {"forcing_above_truncation", variant("cos = 0.5", "cos = 0.5\nharmonic = 4"),
+       "forcing[0].harmonic: must be <= harmonic_balance.harmonics = 3"},
       // Continuation settings: positive, finite, ordered.
       {"zero_tolerance", variant("omega_end = 2.0", "omega_end = 2.0\ntolerance = 0.0"), "continuation.tolerance: must be > 0 and finite"},
       {"nan_tolerance", variant("omega_end = 2.0", "omega_end = 2.0\ntolerance = nan"), "continuation.tolerance: must be finite"},
       {"tolerance_one", variant("omega_end = 2.0", "omega_end = 2.0\ntolerance = 1.0"), "continuation.tolerance: must be < 1"},
-      {"step_min_above_step", variant("omega_end = 2.0", "omega_end = 2.0\nstep = 0.01\nstep_min = 0.1"), "continuation.step_min: must be <= step"},
-      {"step_above_step_max", variant("omega_end = 2.0", "omega_end = 2.0\nstep = 0.5\nstep_max = 0.1"), "continuation.step: must be <= step_max"},
+      {"step_min_above_step", variant("omega_end = 2.0", "omega_end = 2.0\nstep = 0.01\nstep_min = 0.1"),
+       "continuation.step_min: must be <= step"},
+      {"step_above_step_max", variant("omega_end = 2.0", "omega_end = 2.0\nstep = 0.5\nstep_max = 0.1"),
+       "continuation.step: must be <= step_max"},
       {"zero_max_points", variant("omega_end = 2.0", "omega_end = 2.0\nmax_points = 0"), "continuation.max_points: must be >= 1"},
-      {"zero_max_iterations", variant("omega_end = 2.0", "omega_end = 2.0\nmax_iterations = 0"), "continuation.max_iterations: must be in [1, 1000]"},
+      {"zero_max_iterations", variant("omega_end = 2.0", "omega_end = 2.0\nmax_iterations = 0"),
+       "continuation.max_iterations: must be in [1, 1000]"},
       {"negative_omega", variant("omega_start = 0.1", "omega_start = -0.1"), "continuation.omega_start: must be finite and >= 0"},
       {"infinite_omega", variant("omega_end = 2.0", "omega_end = inf"), "continuation.omega_end: must be finite"},
-      {"negative_time_limit", variant("omega_end = 2.0", "omega_end = 2.0\nwall_time_limit = -1"), "continuation.wall_time_limit: must be >= 0"},
-      {"bad_corrector", variant("omega_end = 2.0", "omega_end = 2.0\ncorrector = \"newton\""), "continuation.corrector: must be pseudo_arclength or hypersphere"},
+      {"negative_time_limit", variant("omega_end = 2.0", "omega_end = 2.0\nwall_time_limit = -1"),
+       "continuation.wall_time_limit: must be >= 0"},
+      {"bad_corrector", variant("omega_end = 2.0", "omega_end = 2.0\ncorrector = \"newton\""),
+       "continuation.corrector: must be pseudo_arclength or hypersphere"},
       {"locate_not_boolean", variant("omega_end = 2.0", "omega_end = 2.0\nlocate = 1"), "continuation.locate: expected true or false"},
-      {"bad_stability_method", variant("", "[stability]\nmethod = \"floquet\""), "stability.method: must be hill, monodromy, shooting or none"},
-      {"bad_condensation", variant("harmonics = 3", "harmonics = 3\ncondensation = \"guyan\""), "harmonic_balance.condensation: must be auto, schur, modal or none"},
+      {"bad_stability_method", variant("", "[stability]\nmethod = \"floquet\""),
+       "stability.method: must be hill, monodromy, shooting or none"},
+      {"bad_condensation", variant("harmonics = 3", "harmonics = 3\ncondensation = \"guyan\""),
+       "harmonic_balance.condensation: must be auto, schur, modal or none"},
       // Model, damping, forcing, elements, outputs.
       {"nan_in_matrix", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = [[3.0, nan], [nan, 1.0]]"), "model.K[0][1]: must be finite"},
-      {"huge_chain", variant("dofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 2.0]]\nK = [[3.0, -1.0], [-1.0, 1.0]]", "chain = { count = 100000 }"),
+      {"huge_chain",
+       variant("dofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 2.0]]\nK = [[3.0, -1.0], [-1.0, 1.0]]", "chain = { count = 100000 }"),
        "model.chain.count: must be in [1, 4000]"},
       {"matrix_file_is_directory", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \".\" }"), "model.K.file: '"},
-      {"matrix_file_wrong_shape", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"K3.mtx\" }"), "model.K: expected 2x2 (one row per dof), got 3x3"},
-      {"matrix_file_malformed", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"garbage.mtx\" }"), "missing '%%MatrixMarket' banner"},
-      {"mat_file_without_variable", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"empty.mat\" }"), "model.K.variable: missing (required for a .mat file)"},
+      {"matrix_file_wrong_shape", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"K3.mtx\" }"),
+       "model.K: expected 2x2 (one row per dof), got 3x3"},
+      {"matrix_file_malformed", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"garbage.mtx\" }"),
+       "missing '%%MatrixMarket' banner"},
+      {"mat_file_without_variable", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"empty.mat\" }"),
+       "model.K.variable: missing (required for a .mat file)"},
       {"rayleigh_one_number", variant("rayleigh = [0.0, 0.01]", "rayleigh = [0.01]"), "damping.rayleigh: expected [alpha, beta]"},
-      {"forcing_vector_length", variant("dof = \"a\"\ncos = 0.5", "cos = [0.5]"), "forcing[0].cos: expected 2 entries (one per dof), got 1"},
+      {"forcing_vector_length", variant("dof = \"a\"\ncos = 0.5", "cos = [0.5]"),
+       "forcing[0].cos: expected 2 entries (one per dof), got 1"},
       {"zero_weights", variant("lanczos = 1", "lanczos = 1\nweights = [0.0]"), "elements[0].weights: must not all be zero"},
-      {"negative_friction", variant("", "[[elements]]\ntype = \"tanh_friction\"\ndofs = [\"a\"]\nmu = -0.2\nnormal_load = 1.0\nregularization_velocity = 0.01"),
+      {"negative_friction",
+       variant("", "[[elements]]\ntype = \"tanh_friction\"\ndofs = [\"a\"]\nmu = -0.2\nnormal_load = 1.0\nregularization_velocity = 0.01"),
        "elements[1].mu: must be >= 0"},
       {"output_name_with_comma", variant("name = \"tip\"", "name = \"tip,x\""), "outputs[0].name: must be non-empty without commas"},
       // Fuzzing finding: toml11 3.7 read out of bounds reporting this (a literal string with 0xE0).

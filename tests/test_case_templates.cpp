@@ -110,16 +110,17 @@ void expect_same_elements(const CaseDefinition& a, const CaseDefinition& b) {
 }  // namespace
 
 TEST(CaseTemplates, DofCountNamesTheDofsX1ToXN) {
-  const std::string text = replaced(replaced(replaced(replaced(kTemplated, "dofs = [\"a_x\", \"a_y\", \"b_x\", \"b_y\"]", "dofs = 4"),
-                                                      "dof = \"a_x\"", "dof = \"x1\""),
-                                             "nodes = [\"a\", \"b\"]\ndofs = [\"{node}_x\", \"{node}_y\"]", "nodes = [\"1\", \"3\"]\ndofs = [\"x{node}\"]"),
-                                    "dofs = [\"b_y\"]", "dofs = [\"x4\"]");
+  const std::string text = replaced(
+      replaced(replaced(replaced(kTemplated, "dofs = [\"a_x\", \"a_y\", \"b_x\", \"b_y\"]", "dofs = 4"), "dof = \"a_x\"", "dof = \"x1\""),
+               "nodes = [\"a\", \"b\"]\ndofs = [\"{node}_x\", \"{node}_y\"]", "nodes = [\"1\", \"3\"]\ndofs = [\"x{node}\"]"),
+      "dofs = [\"b_y\"]", "dofs = [\"x4\"]");
   const CaseDefinition c = load_case(write_file("count.toml", text).string());
   EXPECT_EQ(c.model.dof_names, (std::vector<std::string>{"x1", "x2", "x3", "x4"}));
   ASSERT_EQ(c.elements.size(), 3u);
   EXPECT_EQ(c.elements[1]->dofs, std::vector<int>{2});
   // The count must match M and K, as a list of names must.
-  EXPECT_NE(case_error(write_file("count5.toml", replaced(text, "dofs = 4", "dofs = 5"))).find("model.M: expected 5x5 (one row per dof), got 4x4"),
+  EXPECT_NE(case_error(write_file("count5.toml", replaced(text, "dofs = 4", "dofs = 5")))
+                .find("model.M: expected 5x5 (one row per dof), got 4x4"),
             std::string::npos);
 }
 
@@ -150,11 +151,13 @@ TEST(CaseTemplates, NodesExpandOneElementPerNodeInOrder) {
   EXPECT_EQ(c.elements[1]->lanczos_exponent, 1.0);
   EXPECT_EQ(c.elements[2]->lanczos_exponent, 0.0);
   // --set addresses the expanded list: elements[1] is node b's element, elements[2] the plain one.
-  const CaseDefinition set = load_case(write_file("templated.toml", kTemplated).string(), {"elements[1].cubic_stiffness=7", "elements[2].lanczos=2"});
+  const CaseDefinition set =
+      load_case(write_file("templated.toml", kTemplated).string(), {"elements[1].cubic_stiffness=7", "elements[2].lanczos=2"});
   EXPECT_EQ(set.elements[0]->property_values(set.parameters)[0], 2.0);
   EXPECT_EQ(set.elements[1]->property_values(set.parameters)[0], 7.0);
   EXPECT_EQ(set.elements[2]->lanczos_exponent, 2.0);
-  EXPECT_NE(case_error(write_file("templated.toml", kTemplated), {"elements[3].lanczos=1"}).find("'elements' has 3 entries"), std::string::npos);
+  EXPECT_NE(case_error(write_file("templated.toml", kTemplated), {"elements[3].lanczos=1"}).find("'elements' has 3 entries"),
+            std::string::npos);
 }
 
 TEST(CaseTemplates, BadDofsAndTemplatesGiveOneLineErrorsNamingTheField) {
@@ -174,7 +177,8 @@ TEST(CaseTemplates, BadDofsAndTemplatesGiveOneLineErrorsNamingTheField) {
        "two_on_a_line.txt:2: 'a_y b_x' is not one name (one name per line"},
       {"names_file_empty", replaced(kTemplated, names, "dofs = { file = \"comments_only.txt\" }"), "model.dofs.file: names no dof"},
       {"names_file_twice", replaced(kTemplated, names, "dofs = { file = \"twice.txt\" }"), "model.dofs: dof name 'a_x' appears twice"},
-      {"names_file_short", replaced(kTemplated, names, "dofs = { file = \"three.txt\" }"), "model.M: expected 3x3 (one row per dof), got 4x4"},
+      {"names_file_short", replaced(kTemplated, names, "dofs = { file = \"three.txt\" }"),
+       "model.M: expected 3x3 (one row per dof), got 4x4"},
       {"json_without_names", replaced(kTemplated, names, "dofs = { file = \"other.json\" }"), "other.json: no \"dof_names\" array"},
       {"json_malformed", replaced(kTemplated, names, "dofs = { file = \"bad.json\" }"), "bad.json: not valid JSON"},
       {"json_not_strings", replaced(kTemplated, names, "dofs = { file = \"numbers.json\" }"), "numbers.json: dof_names[1] is not a string"},
@@ -187,12 +191,15 @@ TEST(CaseTemplates, BadDofsAndTemplatesGiveOneLineErrorsNamingTheField) {
       {"mark_without_nodes", replaced(kTemplated, nodes + "\n", ""), "elements[0].dofs[0]: {node} is replaced only in a template"},
       {"per_node_without_nodes", replaced(kTemplated, "cubic_stiffness = 3.0", "cubic_stiffness.per_node = [3.0]"),
        "elements[2].cubic_stiffness.per_node: needs nodes"},
-      {"per_node_short", replaced(kTemplated, "[2.0, \"k\"]", "[2.0]"), "elements[0].cubic_stiffness.per_node: expected an array with one entry per node (2)"},
-      {"per_node_extra_key", replaced(kTemplated, "cubic_stiffness.per_node = [2.0, \"k\"]", "cubic_stiffness = { per_node = [2.0, \"k\"], scale = 2 }"),
+      {"per_node_short", replaced(kTemplated, "[2.0, \"k\"]", "[2.0]"),
+       "elements[0].cubic_stiffness.per_node: expected an array with one entry per node (2)"},
+      {"per_node_extra_key",
+       replaced(kTemplated, "cubic_stiffness.per_node = [2.0, \"k\"]", "cubic_stiffness = { per_node = [2.0, \"k\"], scale = 2 }"),
        "elements[0].cubic_stiffness: a per_node table takes no other key"},
       // Errors of an expanded element name its index in the expanded list.
       {"expanded_unknown_dof", replaced(kTemplated, nodes, "nodes = [\"a\", \"c\"]"), "elements[1].dofs[0]: unknown dof 'c_x'"},
-      {"expanded_bad_property", replaced(kTemplated, "[2.0, \"k\"]", "[2.0, \"kk\"]"), "elements[1].cubic_stiffness: unknown parameter 'kk'"},
+      {"expanded_bad_property", replaced(kTemplated, "[2.0, \"k\"]", "[2.0, \"kk\"]"),
+       "elements[1].cubic_stiffness: unknown parameter 'kk'"},
   };
   write_file("two_on_a_line.txt", "a_x\na_y b_x\nb_y\n");
   write_file("comments_only.txt", "# nothing\n\n   \n");
@@ -209,7 +216,8 @@ TEST(CaseTemplates, BadDofsAndTemplatesGiveOneLineErrorsNamingTheField) {
     EXPECT_EQ(msg.rfind(p.string() + ":", 0), 0u) << bad.name << ": does not start with the file name: " << msg;
   }
   // A template's nodes cannot be set from the command line: it is already expanded there.
-  EXPECT_NE(case_error(write_file("templated.toml", kTemplated), {"elements[0].nodes=[\"a\"]"}).find("elements[0].nodes: templates are expanded before --set"),
+  EXPECT_NE(case_error(write_file("templated.toml", kTemplated), {"elements[0].nodes=[\"a\"]"})
+                .find("elements[0].nodes: templates are expanded before --set"),
             std::string::npos);
 }
 

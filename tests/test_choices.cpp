@@ -59,11 +59,28 @@ TEST(Choices, EveryValueRoundTripsThroughItsName) {
   EXPECT_EQ(round_trip_names<TrackingMethod>(), (std::vector<std::string>{"bordered", "extended"}));
   EXPECT_EQ(round_trip_names<IntegrationMethod>(), (std::vector<std::string>{"newmark", "dopri5"}));
   // Not a setting, but named the same way: summary.json's and the checkpoints' stop_reason.
-  EXPECT_EQ(round_trip_names<StopReason>(),
-            (std::vector<std::string>{"running", "reached_end", "left_range", "closed", "max_points", "step_size_underflow",
-                                      "step_size_underflow_on_curvature", "interrupted", "time_limit", "no_convergence_at_start",
-                                      "rejoined", "not_started", "completed", "converged", "max_periods", "diverged", "newton_failure",
-                                      "integration_failure", "no_convergence", "tasks_failed", "checks_failed", "stopped_by_callback"}));
+  EXPECT_EQ(round_trip_names<StopReason>(), (std::vector<std::string>{"running",
+                                                                      "reached_end",
+                                                                      "left_range",
+                                                                      "closed",
+                                                                      "max_points",
+                                                                      "step_size_underflow",
+                                                                      "step_size_underflow_on_curvature",
+                                                                      "interrupted",
+                                                                      "time_limit",
+                                                                      "no_convergence_at_start",
+                                                                      "rejoined",
+                                                                      "not_started",
+                                                                      "completed",
+                                                                      "converged",
+                                                                      "max_periods",
+                                                                      "diverged",
+                                                                      "newton_failure",
+                                                                      "integration_failure",
+                                                                      "no_convergence",
+                                                                      "tasks_failed",
+                                                                      "checks_failed",
+                                                                      "stopped_by_callback"}));
 }
 
 TEST(Choices, TheNamedParsersAgreeWithTheTables) {

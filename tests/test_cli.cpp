@@ -21,9 +21,7 @@ using hbtrack::test::CliRun;
 using hbtrack::test::csv_header;
 using hbtrack::test::run_cli;
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(Cli, FrcOnDuffingWritesTheContractedResults) {
   const fs::path out = fs::temp_directory_path() / "hbtrack_cli_duffing";
@@ -53,14 +51,15 @@ TEST(Cli, FrcOnDuffingWritesTheContractedResults) {
   // The historical columns first (the harmonics' columns follow: test_result_columns_cli.cpp).
   const std::vector<std::string> header = csv_header(out / "branch.csv");
   ASSERT_GE(header.size(), 5u);
-  EXPECT_EQ(std::vector<std::string>(header.begin(), header.begin() + 5), (std::vector<std::string>{"omega", "stable", "max_x", "min_x", "h1_x"}));
+  EXPECT_EQ(std::vector<std::string>(header.begin(), header.begin() + 5),
+            (std::vector<std::string>{"omega", "stable", "max_x", "min_x", "h1_x"}));
 }
 
 TEST(Cli, SolveAndSetOverride) {
   const fs::path out = fs::temp_directory_path() / "hbtrack_cli_solve";
   fs::remove_all(out);
   const CliRun r = run_cli("solve " + hbtrack::test::source_path("examples/duffing.toml") + " --omega 0.5 --set amplitude=0.5 -o " +
-                        out.string() + " -q");
+                           out.string() + " -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
   EXPECT_TRUE(s["converged"].get<bool>());
@@ -106,8 +105,8 @@ TEST(Cli, FailedContinuationKeepsItsPointsAndExitsNonZero) {
   fs::remove_all(out);
   // A point budget far below what the range needs is not a failure (max_points), but a
   // tolerance below machine precision makes every corrector fail after the first point.
-  const CliRun r = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") +
-                        " --set continuation.tolerance=1e-30 -o " + out.string() + " -q");
+  const CliRun r = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") + " --set continuation.tolerance=1e-30 -o " +
+                           out.string() + " -q");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("continuation stopped"), std::string::npos) << r.err;
   const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));

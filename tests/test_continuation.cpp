@@ -156,8 +156,13 @@ TEST(Continuation, ResumingFromASavedStateRepeatsTheRunExactly) {
   ContinuationRestart resuming;
   resuming.resume_from = &states[static_cast<size_t>(k - 1)];
   std::vector<int> indices;
-  const ContinuationResult rest = continue_within(problem, VectorXd::Zero(1), 1.0, window, o,
-                                                  [&](const BranchPoint&, int index) { indices.push_back(index); return true; }, nullptr, resuming);
+  const ContinuationResult rest = continue_within(
+      problem, VectorXd::Zero(1), 1.0, window, o,
+      [&](const BranchPoint&, int index) {
+        indices.push_back(index);
+        return true;
+      },
+      nullptr, resuming);
   ASSERT_EQ(rest.points.size() + static_cast<size_t>(k), whole.points.size());
   EXPECT_EQ(indices.front(), k);
   // Exact equality: the state holds every double the next step reads.
@@ -200,10 +205,9 @@ TEST(Continuation, AllPredictorCorrectorVariantsGiveTheSameDuffingLimitPoints) {
   std::vector<std::vector<double>> lps;
   for (const char* predictor : {"tangent", "secant"}) {
     for (const char* corrector : {"pseudo_arclength", "hypersphere"}) {
-      CaseDefinition c = load_case(test::source_path("examples/duffing.toml"),
-                                   {std::string("continuation.predictor=\"") + predictor + "\"",
-                                    std::string("continuation.corrector=\"") + corrector + "\"", "continuation.step=0.005",
-                                    "continuation.step_max=0.005"});
+      CaseDefinition c = load_case(test::source_path("examples/duffing.toml"), {std::string("continuation.predictor=\"") + predictor + "\"",
+                                                                                std::string("continuation.corrector=\"") + corrector + "\"",
+                                                                                "continuation.step=0.005", "continuation.step_max=0.005"});
       HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
       const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs);
       ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end) << predictor << "/" << corrector;

@@ -11,10 +11,10 @@
 // as one.
 namespace hbtrack_tests::file_dense_lu {
 
-using hbtrack::DenseLU;
-using hbtrack::estimate_norm1;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+using hbtrack::DenseLU;
+using hbtrack::estimate_norm1;
 
 namespace {
 // log |det A| and its sign from Eigen's factors (det itself overflows for n = 300).
@@ -58,7 +58,8 @@ TEST(DenseLU, InverseNormEstimateIsALowerBoundWithinAFactorOfThree) {
     for (int j = 0; j < n; ++j) a.col(j) *= std::pow(10.0, 3.0 * j / n);
     const double exact = a.inverse().cwiseAbs().colwise().sum().maxCoeff();
     const DenseLU lu(a);
-    const double estimate = estimate_norm1(n, [&](VectorXd& v) { lu.solve_in_place(v); }, [&](VectorXd& v) { lu.solve_transposed_in_place(v); });
+    const double estimate = estimate_norm1(
+        n, [&](VectorXd& v) { lu.solve_in_place(v); }, [&](VectorXd& v) { lu.solve_transposed_in_place(v); });
     EXPECT_LE(estimate, exact * (1 + 1e-10)) << n;  // the norm of A^-1 x for some unit x
     EXPECT_GE(estimate, exact / 3) << n;            // Hager's estimate is rarely worse (Higham 1988)
   }

@@ -83,8 +83,8 @@ TEST(Dlft, JacobianAndDerivativesMatchFiniteDifferences) {
     double tangential, normal_wave;
     std::string condensation;
   };
-  for (const Case& c : {Case{"stick-slip", 0.5, 0.02, "none"}, Case{"stick-slip, condensed", 0.5, 0.02, "schur"},
-                        Case{"separation", 0.5, 0.3, "schur"}}) {
+  for (const Case& c :
+       {Case{"stick-slip", 0.5, 0.02, "none"}, Case{"stick-slip, condensed", 0.5, 0.02, "schur"}, Case{"separation", 0.5, 0.3, "schur"}}) {
     ParameterSet p = dlft_parameters(0.3, 2.0, 0.01);
     p.set("amplitude", 1.0);
     HarmonicBalance hbm(pressed_mass(c.tangential), ElementList{dlft_contact(p)}, p, options(c.condensation));
@@ -189,7 +189,8 @@ TEST(Dlft, PenaltyConvergesToItAsItsStiffnessGrows) {
     error.push_back((s.x - rigid.x).cwiseAbs().maxCoeff() / rigid.x.cwiseAbs().maxCoeff());
     std::printf("[ measured ] k = %.0e: penalty against DLFT %.3e\n", k, error.back());
   }
-  const double slope = (std::log10(error.back()) - std::log10(error.front())) / (std::log10(stiffness.back()) - std::log10(stiffness.front()));
+  const double slope =
+      (std::log10(error.back()) - std::log10(error.front())) / (std::log10(stiffness.back()) - std::log10(stiffness.front()));
   std::printf("[ measured ] log-log slope %.3f\n", slope);
   EXPECT_GT(slope, -1.2);
   EXPECT_LT(slope, -0.8);

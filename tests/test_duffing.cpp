@@ -46,7 +46,8 @@ Peak branch_peak(const NfrcResult& r) {
   if (best > 0 && best + 1 < static_cast<int>(r.recorded.size())) {
     const double y0 = r.recorded[static_cast<size_t>(best - 1)].outputs[0].max, y1 = p.max_x,
                  y2 = r.recorded[static_cast<size_t>(best + 1)].outputs[0].max;
-    const double s0 = -r.continuation.points[static_cast<size_t>(best)].step, s2 = r.continuation.points[static_cast<size_t>(best + 1)].step;
+    const double s0 = -r.continuation.points[static_cast<size_t>(best)].step,
+                 s2 = r.continuation.points[static_cast<size_t>(best + 1)].step;
     // Parabola through (s0, y0), (0, y1), (s2, y2) in arc length; its vertex value.
     const double a = ((y2 - y1) / s2 - (y0 - y1) / s0) / (s2 - s0);
     const double b = (y2 - y1) / s2 - a * s2;
@@ -56,10 +57,10 @@ Peak branch_peak(const NfrcResult& r) {
 }
 
 NfrcResult duffing_nfrc(int harmonics, double step = 0.01) {
-  CaseDefinition c = load_case(test::source_path("examples/duffing.toml"),
-                               {"harmonic_balance.harmonics=" + std::to_string(harmonics),
-                                "harmonic_balance.samples=" + std::to_string(16 * (harmonics + 1)),
-                                "continuation.step=" + std::to_string(step), "continuation.step_max=" + std::to_string(step)});
+  CaseDefinition c = load_case(
+      test::source_path("examples/duffing.toml"),
+      {"harmonic_balance.harmonics=" + std::to_string(harmonics), "harmonic_balance.samples=" + std::to_string(16 * (harmonics + 1)),
+       "continuation.step=" + std::to_string(step), "continuation.step_max=" + std::to_string(step)});
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   return compute_nfrc(hbm, c.nfrc, c.outputs);
 }

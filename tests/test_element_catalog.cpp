@@ -34,12 +34,15 @@ bool has_property_rows(const ElementType& type) {
 
 // A case of three dofs with one element of `type` in the variant `setup`: its choices written
 // out, `properties` as given (name = value text), on as many dofs as the type takes.
-std::string write_case(const ElementType& type, const ElementSetup& setup, const std::vector<std::pair<std::string, std::string>>& properties) {
+std::string write_case(const ElementType& type, const ElementSetup& setup,
+                       const std::vector<std::pair<std::string, std::string>>& properties) {
   std::string text =
       "[model]\ndofs = [\"a\", \"b\", \"c\"]\nM = {diagonal = [1.0, 1.0, 1.0]}\n"
       "K = [[2.0, -1.0, 0.0], [-1.0, 1.0, 0.0], [0.0, 0.0, 1.0]]\n[[forcing]]\ndof = \"a\"\ncos = 0.1\n";
   text += "[[elements]]\ntype = \"" + type.type + "\"\n";
-  text += type.dof_names.size() == 3 ? "dofs = [\"a\", \"b\", \"c\"]\n" : type.dof_names.size() == 2 ? "dofs = [\"a\", \"b\"]\n" : "dofs = [\"a\"]\n";
+  text += type.dof_names.size() == 3   ? "dofs = [\"a\", \"b\", \"c\"]\n"
+          : type.dof_names.size() == 2 ? "dofs = [\"a\", \"b\"]\n"
+                                       : "dofs = [\"a\"]\n";
   for (const auto& [key, value] : setup.choices) text += key + " = \"" + value + "\"\n";
   for (const auto& [name, value] : properties) text += name + " = " + value + "\n";
   text += "[continuation]\nomega_start = 0.5\nomega_end = 1.5\n[stability]\nmethod = \"none\"\n";
@@ -137,8 +140,7 @@ TEST(ElementCatalog, TheReaderFillsDefaultsAndChecksRangesFromTheSpecs) {
       ASSERT_EQ(c.elements.size(), 1u);
       const std::vector<double> values = c.elements[0]->property_values(c.parameters);
       ASSERT_EQ(values.size(), specs.size()) << type.type;
-      for (size_t p = 0; p < specs.size(); ++p)
-        EXPECT_EQ(values[p], specs[p].fallback.value_or(1.0)) << type.type << "." << specs[p].name;
+      for (size_t p = 0; p < specs.size(); ++p) EXPECT_EQ(values[p], specs[p].fallback.value_or(1.0)) << type.type << "." << specs[p].name;
       // Each range is checked, with the spec's rule in the message.
       for (const PropertySpec& p : specs) {
         if (p.range == PropertyRange::any) continue;

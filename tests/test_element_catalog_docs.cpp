@@ -94,7 +94,8 @@ TEST(ElementCatalogDocs, TheElementTableIsTheElementCatalogue) {
       std::set<std::string> ranges;
       for (const hbtrack::PropertySpec& p : properties.at(k.name)) {
         EXPECT_EQ(k.unit, p.unit) << type.type << "." << k.name;
-        EXPECT_EQ(has_default, p.fallback.has_value()) << type.type << "." << k.name << ": a default documented for a required property, or none for an optional one";
+        EXPECT_EQ(has_default, p.fallback.has_value())
+            << type.type << "." << k.name << ": a default documented for a required property, or none for an optional one";
         if (has_default && p.fallback) {
           EXPECT_EQ(value, *p.fallback) << type.type << "." << k.name;
         }

@@ -87,7 +87,7 @@ TEST(PolynomialStiffness, ForceFollowsNlvibsConvention) {
   e.dofs = {0, 1};
   ElementResponse r;
   e.evaluate((MatrixXd(1, 2) << 2.0, 3.0).finished(), MatrixXd::Zero(1, 2), 1.0, {1.0, 0.5, 0.0, 2.0}, r, false);
-  EXPECT_DOUBLE_EQ(r.force(0, 0), 8.0);                 // 1 * 2^3 + 0 * 2 * 3^2
+  EXPECT_DOUBLE_EQ(r.force(0, 0), 8.0);                   // 1 * 2^3 + 0 * 2 * 3^2
   EXPECT_DOUBLE_EQ(r.force(0, 1), 0.5 * 8.0 + 2 * 18.0);  // 0.5 * 2^3 + 2 * (2 * 3^2)
 }
 
@@ -126,7 +126,8 @@ fs::path write_case(const std::string& name, const std::string& text) {
 }
 
 std::string three_dof_case(const std::string& elements) {
-  return "[model]\ndofs = [\"a\", \"b\", \"c\"]\nM = {diagonal = [1.0, 1.0, 1.0]}\nK = [[2.0, -1.0, 0.0], [-1.0, 1.0, 0.0], [0.0, 0.0, 1.0]]\n"
+  return "[model]\ndofs = [\"a\", \"b\", \"c\"]\nM = {diagonal = [1.0, 1.0, 1.0]}\nK = [[2.0, -1.0, 0.0], [-1.0, 1.0, 0.0], [0.0, 0.0, "
+         "1.0]]\n"
          "[damping]\nrayleigh = [0.0, 0.01]\n[[forcing]]\ndof = \"a\"\ncos = 0.1\n[parameters]\nk3 = 0.5\n" +
          elements + "[continuation]\nomega_start = 0.5\nomega_end = 1.5\n";
 }
@@ -166,15 +167,20 @@ TEST(ElementLibraryCase, BadInputIsOneClearLine) {
     const char* expected;
   };
   const std::vector<Bad> cases{
-      {"ragged_exponents", "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\", \"b\"]\nexponents = [[3, 0], [1]]\ncoefficients = [[1.0, 0.0], [0.0, 1.0]]\n",
+      {"ragged_exponents",
+       "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\", \"b\"]\nexponents = [[3, 0], [1]]\ncoefficients = [[1.0, 0.0], [0.0, "
+       "1.0]]\n",
        "elements[0].exponents[1]: every row needs the same length"},
       {"negative_exponent", "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\"]\nexponents = [[-1]]\ncoefficients = [[1.0]]\n",
        "elements[0].exponents[0][0]: must be an integer in [0, 64]"},
-      {"exponents_vs_dofs", "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\", \"b\"]\nexponents = [[3]]\ncoefficients = [[1.0, 0.0]]\n",
+      {"exponents_vs_dofs",
+       "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\", \"b\"]\nexponents = [[3]]\ncoefficients = [[1.0, 0.0]]\n",
        "elements[0].exponents: expected one exponent per dof (2)"},
-      {"coefficient_rows", "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\"]\nexponents = [[3], [2]]\ncoefficients = [[1.0]]\n",
+      {"coefficient_rows",
+       "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\"]\nexponents = [[3], [2]]\ncoefficients = [[1.0]]\n",
        "elements[0].coefficients: expected one row per monomial (2)"},
-      {"unknown_coefficient_parameter", "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\"]\nexponents = [[3]]\ncoefficients = [[\"k4\"]]\n",
+      {"unknown_coefficient_parameter",
+       "[[elements]]\ntype = \"polynomial_stiffness\"\ndofs = [\"a\"]\nexponents = [[3]]\ncoefficients = [[\"k4\"]]\n",
        "elements[0].coefficients[0][0]: unknown parameter 'k4'"},
       {"damper_exponent", "[[elements]]\ntype = \"power_damper\"\ndofs = [\"a\"]\ncoefficient = 1.0\nexponent = 0.5\n",
        "elements[0].exponent: must be >= 1"},
@@ -182,13 +188,21 @@ TEST(ElementLibraryCase, BadInputIsOneClearLine) {
        "elements[0].limit_force: must be >= 0"},
       {"jenkins_missing_stiffness", "[[elements]]\ntype = \"elastic_dry_friction\"\ndofs = [\"a\"]\nlimit_force = 1.0\n",
        "elements[0].stiffness: missing"},
-      {"tip_friction", "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = 0.2\nradius = 0.3\nfriction = \"sticky\"\n",
+      {"tip_friction",
+       "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = "
+       "0.2\nradius = 0.3\nfriction = \"sticky\"\n",
        "elements[0].friction: must be \"sliding\" or \"stick_slip\""},
-      {"tip_stick_slip_stiffness", "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = 0.2\nradius = 0.3\nfriction = \"stick_slip\"\n",
+      {"tip_stick_slip_stiffness",
+       "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = "
+       "0.2\nradius = 0.3\nfriction = \"stick_slip\"\n",
        "elements[0].tangential_stiffness: missing (required for tip_contact)"},
-      {"tip_sliding_stiffness", "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = 0.2\nradius = 0.3\ntangential_stiffness = 5.0\n",
+      {"tip_sliding_stiffness",
+       "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = "
+       "0.2\nradius = 0.3\ntangential_stiffness = 5.0\n",
        "elements[0].tangential_stiffness: unknown key"},
-      {"tip_sliding_engine_order", "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = 0.2\nradius = 0.3\nengine_order = 0.0\n",
+      {"tip_sliding_engine_order",
+       "[[elements]]\ntype = \"tip_contact\"\ndofs = [\"a\", \"b\", \"c\"]\nstiffness = 1.0\nclearance = 0.1\nwidth = 0.1\nmu = "
+       "0.2\nradius = 0.3\nengine_order = 0.0\n",
        "elements[0].engine_order: must be nonzero"},
       {"iwan_chi", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -1.0\nbeta = 0.1\n",
        "elements[0].chi: must be > -1"},
@@ -196,7 +210,8 @@ TEST(ElementLibraryCase, BadInputIsOneClearLine) {
        "elements[0].beta: must be >= 0"},
       {"iwan_limit", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 0.0\nstiffness = 3.0\nchi = -0.5\nbeta = 0.1\n",
        "elements[0].limit_force: must be > 0"},
-      {"iwan_sliders", "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -0.5\nbeta = 0.1\nsliders = 1.5\n",
+      {"iwan_sliders",
+       "[[elements]]\ntype = \"iwan\"\ndofs = [\"a\"]\nlimit_force = 1.0\nstiffness = 3.0\nchi = -0.5\nbeta = 0.1\nsliders = 1.5\n",
        "elements[0].sliders: expected an integer"},
   };
   for (const Bad& bad : cases) {

@@ -88,8 +88,10 @@ TEST(ContactLaws, PolynomialIsC1AndExactOutsideTheBlend) {
   EXPECT_DOUBLE_EQ(contact_force(ContactLawKind::polynomial, 0.2, k, w).force, 2.0);
   for (double s : {-w, w}) {  // value and slope continuous at both ends of the blend
     const double g = s / k, e = 1e-12;
-    EXPECT_NEAR(contact_force(ContactLawKind::polynomial, g - e, k, w).force, contact_force(ContactLawKind::polynomial, g + e, k, w).force, 1e-9);
-    EXPECT_NEAR(contact_force(ContactLawKind::polynomial, g - e, k, w).d_gap, contact_force(ContactLawKind::polynomial, g + e, k, w).d_gap, 1e-6);
+    EXPECT_NEAR(contact_force(ContactLawKind::polynomial, g - e, k, w).force, contact_force(ContactLawKind::polynomial, g + e, k, w).force,
+                1e-9);
+    EXPECT_NEAR(contact_force(ContactLawKind::polynomial, g - e, k, w).d_gap, contact_force(ContactLawKind::polynomial, g + e, k, w).d_gap,
+                1e-6);
   }
 }
 

@@ -1,6 +1,6 @@
 // `hbtrack export DIR --format h5`: a result folder as one HDF5 file, read back with HDF5's C API
-// as any reader would (h5py, h5read): the columns as branch.csv and states.csv print them, the special points and summary.json; and bad input refused in one line.
-// (The .mat format is read back with scipy in python/tests/test_export.py.)
+// as any reader would (h5py, h5read): the columns as branch.csv and states.csv print them, the special points and summary.json; and bad
+// input refused in one line. (The .mat format is read back with scipy in python/tests/test_export.py.)
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <unistd.h>

@@ -37,8 +37,8 @@ const fs::path& duffing_folder() {
 // the signal that killed it.
 CliRun run_with_file_size_limit(int blocks, const std::string& args) {
   const fs::path err = hbtrack::test::fresh_temp_dir("hbtrack_export_safety_err");
-  const std::string command =
-      "sh -c \"ulimit -f " + std::to_string(blocks) + "; exec " + std::string(HBTRACK_CLI) + " " + args + "\" 2> " + err.string() + " > /dev/null";
+  const std::string command = "sh -c \"ulimit -f " + std::to_string(blocks) + "; exec " + std::string(HBTRACK_CLI) + " " + args + "\" 2> " +
+                              err.string() + " > /dev/null";
   const int status = std::system(command.c_str());
   std::stringstream text;
   text << std::ifstream(err).rdbuf();
@@ -93,7 +93,8 @@ TEST(ExportSafety, ADeeplyNestedOrMalformedSummaryIsBadInput) {
   for (const char* format : {"mat", "h5"}) {
     const CliRun r = run_cli("export " + dir.string() + " -q --format " + std::string(format));
     EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_NE(r.err.find((dir / "summary.json").string() + ":1: arrays or objects nested deeper than 64 levels"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find((dir / "summary.json").string() + ":1: arrays or objects nested deeper than 64 levels"), std::string::npos)
+        << r.err;
   }
   std::ofstream(dir / "summary.json") << "{\"verb\": \"frc\", \"points\": 3,, }";
   const CliRun r = run_cli("export " + dir.string() + " -q");

@@ -154,7 +154,8 @@ TEST(FoldSystems, BorderedResidualFromKeptFactorsEqualsAFreshFactorization) {
   MatrixXd jac;
   kept.evaluate(u, gamma, r_full, &jac, &r_gamma);
   // A corrector's step away: 1e-3 relative in every unknown.
-  const VectorXd moved = u + 1e-3 * u.cwiseAbs().cwiseMax(1e-3 * u.cwiseAbs().maxCoeff()).cwiseProduct(VectorXd::LinSpaced(u.size(), -1.0, 1.0));
+  const VectorXd moved =
+      u + 1e-3 * u.cwiseAbs().cwiseMax(1e-3 * u.cwiseAbs().maxCoeff()).cwiseProduct(VectorXd::LinSpaced(u.size(), -1.0, 1.0));
   VectorXd r_kept, r_fresh;
   kept.evaluate(moved, gamma, r_kept, nullptr, nullptr);
   fresh.evaluate(moved, gamma, r_fresh, nullptr, nullptr);

@@ -117,7 +117,8 @@ TEST(FrictionalContact, DerivativesMatchFiniteDifferences) {
           e->evaluate(xm, xm, 1.0, kProps, rm, false);
           const MatrixXd fd = (rp.force - rm.force) / (2 * h);
           for (int i = 0; i < 2; ++i)
-            EXPECT_LT((fd.col(i) - dense.block(i * n, j * n + s, n, 1)).cwiseAbs().maxCoeff(), 1e-6 * std::max(1.0, fd.cwiseAbs().maxCoeff()))
+            EXPECT_LT((fd.col(i) - dense.block(i * n, j * n + s, n, 1)).cwiseAbs().maxCoeff(),
+                      1e-6 * std::max(1.0, fd.cwiseAbs().maxCoeff()))
                 << "an " << an << " at " << at << " df" << i << "/dx" << j << "(" << s << ")";
         }
       for (int p = 0; p < 4; ++p) {

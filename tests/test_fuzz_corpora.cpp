@@ -67,21 +67,24 @@ TEST(FuzzCorpora, CaseFileInputsLoadOrGiveOneLineErrors) {
 }
 
 TEST(FuzzCorpora, MatrixMarketInputsLoadOrGiveOneLineErrors) {
-  const int n = replay("matrix_market", ".mtx",
-                       {[](const std::string& p) { hbtrack::read_matrix_market_sparse(p); }, [](const std::string& p) { hbtrack::read_matrix_market(p); }});
+  const int n = replay(
+      "matrix_market", ".mtx",
+      {[](const std::string& p) { hbtrack::read_matrix_market_sparse(p); }, [](const std::string& p) { hbtrack::read_matrix_market(p); }});
   EXPECT_GE(n, 5);
 }
 
 TEST(FuzzCorpora, MatFileInputsLoadOrGiveOneLineErrors) {
   const int n = replay("mat_file", ".mat",
-                       {[](const std::string& p) { hbtrack::read_mat_variable_sparse(p, "K"); }, [](const std::string& p) { hbtrack::read_mat_variable(p, "K"); }});
+                       {[](const std::string& p) { hbtrack::read_mat_variable_sparse(p, "K"); },
+                        [](const std::string& p) { hbtrack::read_mat_variable(p, "K"); }});
   EXPECT_GE(n, 8);
 }
 
 TEST(FuzzCorpora, CalculixInputsLoadOrGiveOneLineErrors) {
-  const int n = replay("calculix", ".sti",
-                       {[](const std::string& p) { hbtrack::read_calculix_matrix(p); }, [](const std::string& p) { hbtrack::read_calculix_dof_map(p); },
-                        [](const std::string& p) { hbtrack::read_calculix_input_nodes(p); }});
+  const int n = replay(
+      "calculix", ".sti",
+      {[](const std::string& p) { hbtrack::read_calculix_matrix(p); }, [](const std::string& p) { hbtrack::read_calculix_dof_map(p); },
+       [](const std::string& p) { hbtrack::read_calculix_input_nodes(p); }});
   EXPECT_GE(n, 3);
 }
 

@@ -97,9 +97,17 @@ TEST_P(SelectedBasisDerivatives, MatchFiniteDifferences) {
   VectorXd r, r_omega;
   MatrixXd jac;
   hbm.evaluate(x, omega, r, &jac, &r_omega);
-  auto residual = [&](const VectorXd& xx) { VectorXd rr; hbm.evaluate(xx, omega, rr); return rr; };
+  auto residual = [&](const VectorXd& xx) {
+    VectorXd rr;
+    hbm.evaluate(xx, omega, rr);
+    return rr;
+  };
   EXPECT_LT(test::relative_error(jac, test::fd_jacobian(residual, x, 1e-7)), 1e-6) << "dR/dx";
-  auto at_omega = [&](double w) { VectorXd rr; hbm.evaluate(x, w, rr); return rr; };
+  auto at_omega = [&](double w) {
+    VectorXd rr;
+    hbm.evaluate(x, w, rr);
+    return rr;
+  };
   EXPECT_LT(test::relative_error(r_omega, test::central_difference(at_omega, omega, 1e-7)), 1e-6) << "dR/domega";
   for (const std::string name : {"amplitude", "mu"}) {
     const int p = hbm.parameters().find(name);
@@ -215,7 +223,8 @@ TEST(HarmonicSelection, OddHarmonicDuffingEqualsTheFullBasis) {
 TEST(HarmonicSelection, ABadListIsRefusedNamingTheFileTheFieldAndTheRule) {
   std::ifstream example(test::source_path("examples/duffing.toml"));
   const std::string text((std::istreambuf_iterator<char>(example)), std::istreambuf_iterator<char>());
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / ("hbtrack_bad_harmonics_" + std::to_string(getpid()) + ".toml");
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("hbtrack_bad_harmonics_" + std::to_string(getpid()) + ".toml");
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"[3, 1]", "harmonic_balance.harmonics: a list of harmonics must be sorted and unique (increasing), got [3, 1]"},
       {"[1, 1, 3]", "must be sorted and unique"},
@@ -245,7 +254,8 @@ TEST(HarmonicSelection, ABadListIsRefusedNamingTheFileTheFieldAndTheRule) {
     load_case(test::source_path("examples/duffing.toml"), {"harmonic_balance.harmonics=[3, 1]"});
     ADD_FAILURE() << "[3, 1] was accepted";
   } catch (const CaseError& e) {
-    EXPECT_NE(std::string(e.what()).find("--set: harmonic_balance.harmonics: a list of harmonics must be sorted"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--set: harmonic_balance.harmonics: a list of harmonics must be sorted"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -253,11 +263,12 @@ TEST(HarmonicSelection, TheCliNamesTheColumnsByTheHarmonicsBalanced) {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / ("hbtrack_selection_" + std::to_string(getpid()));
   std::filesystem::remove_all(out);
   const std::string duffing_case = test::source_path("examples/duffing.toml");
-  const test::CliRun run = test::run_cli("frc " + duffing_case + " --set 'harmonic_balance.harmonics=[1, 3, 5, 7]' -o " + out.string() + " -q");
+  const test::CliRun run =
+      test::run_cli("frc " + duffing_case + " --set 'harmonic_balance.harmonics=[1, 3, 5, 7]' -o " + out.string() + " -q");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::vector<std::string> header = test::csv_header(out / "branch.csv");
-  const std::vector<std::string> expected{"omega", "stable", "max_x", "min_x", "h1_x", "h3_x", "h5_x", "h7_x",
-                                          "phase1_x", "phase3_x", "phase5_x", "phase7_x"};
+  const std::vector<std::string> expected{"omega", "stable", "max_x",    "min_x",    "h1_x",     "h3_x",
+                                          "h5_x",  "h7_x",   "phase1_x", "phase3_x", "phase5_x", "phase7_x"};
   EXPECT_EQ(header, expected);
   EXPECT_EQ(test::csv_header(out / "states.csv").size(), 9u);  // omega and x's 8 coefficients (x_c1, x_s1, ..., x_s7)
   std::ifstream summary(out / "summary.json");

@@ -33,7 +33,6 @@ using Eigen::VectorXd;
 
 namespace {
 
-
 template <class Element>
 std::shared_ptr<Element> with_properties(std::shared_ptr<Element> e, std::vector<int> dofs, const std::vector<double>& props) {
   e->dofs = std::move(dofs);
@@ -185,7 +184,8 @@ HarmonicBalance jenkins_oscillator() {
   m.forcing.push_back({1, VectorXd::Constant(1, 0.1), VectorXd::Zero(1)});
   auto e = std::make_shared<ElasticDryFriction>();
   e->weights = VectorXd::Ones(1);
-  return HarmonicBalance(m, {with_properties(e, {0}, {1.0, 0.1})}, ParameterSet(), HarmonicBalanceOptions{21, 4096, Condensation::none, {}, 1});
+  return HarmonicBalance(m, {with_properties(e, {0}, {1.0, 0.1})}, ParameterSet(),
+                         HarmonicBalanceOptions{21, 4096, Condensation::none, {}, 1});
 }
 
 // Multipliers of the time integrator's own map over one period, by central differences of
@@ -246,7 +246,8 @@ TEST(HistoryTimeStepping, MonodromyMultipliersMatchTheTimeIntegratorsFlow) {
       EXPECT_LT(nearest, 1e-3) << "omega " << omega << " multiplier " << r.multipliers(i);
     }
     const FloquetResult hill = hill_floquet(hbm, s.x, omega, HillSolver::dense);
-    std::printf("[ measured ] omega %.1f: largest Floquet exponent real part: monodromy %.4f, Hill %.4f\n", omega, r.max_real, hill.max_real);
+    std::printf("[ measured ] omega %.1f: largest Floquet exponent real part: monodromy %.4f, Hill %.4f\n", omega, r.max_real,
+                hill.max_real);
   }
 }
 

@@ -107,11 +107,14 @@ TEST(InputLimits, CasePathMustBeARegularFile) {
 
 TEST(InputLimits, OverrideIsOneValue) {
   // Text after the value was dropped: 'amplitude=1 # x' and a second key after a newline.
-  EXPECT_NE(case_error([&] { load_case(kDuffing, {"amplitude=0.5\ncontinuation.step=9"}); }).find("--set amplitude: the value must be on one line"),
+  EXPECT_NE(case_error([&] {
+              load_case(kDuffing, {"amplitude=0.5\ncontinuation.step=9"});
+            }).find("--set amplitude: the value must be on one line"),
             std::string::npos);
   EXPECT_NE(case_error([&] { load_case(kDuffing, {"amplitude=0.5 0.7"}); }).find("expected a number, got '0.5 0.7'"), std::string::npos);
   // A '#' comment after the value: 'amplitude=0.5 #0.7' set 0.5 and exit 0.
-  for (const std::string set : {"amplitude=0.5 #0.7", "amplitude=0.5 #", "harmonic_balance.harmonics=5 # 7", "elements[0].stiffness=1 #x"}) {
+  for (const std::string set :
+       {"amplitude=0.5 #0.7", "amplitude=0.5 #", "harmonic_balance.harmonics=5 # 7", "elements[0].stiffness=1 #x"}) {
     const std::string error = case_error([&] { load_case(kDuffing, {set}); });
     EXPECT_NE(error.find("is one value followed by a '#' comment"), std::string::npos) << set << ": " << error;
   }
@@ -200,8 +203,9 @@ TEST(InputLimits, TemplateExpansionIsLinearInTheNodes) {
     nodes += (i ? ",\n\"n" : "\"n") + std::to_string(i) + "\"";
     list += (i ? ",\n" : "") + std::to_string(0.1 + i * 1e-6);
   }
-  std::string text = "[model]\ndofs = [\"x\"]\nM = [[1.0]]\nK = [[1.0]]\n[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"d{node}\"]\nnodes = [" +
-                     nodes + "]\n";
+  std::string text =
+      "[model]\ndofs = [\"x\"]\nM = [[1.0]]\nK = [[1.0]]\n[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"d{node}\"]\nnodes = [" + nodes +
+      "]\n";
   for (const char* key : {"cubic_stiffness", "a", "b", "c", "d"}) text += std::string(key) + ".per_node = [" + list + "]\n";
   const fs::path path = write_file("templates_20000.toml", text);
   const auto t0 = std::chrono::steady_clock::now();

@@ -48,8 +48,8 @@ TEST(InputNames, DofNamesThatWouldBreakACsvHeaderAreRefused) {
   const fs::path out = temp_dir() / "out";
   ASSERT_EQ(run_cli("frc " + two_dof_case("fine", "[\"a\", \"b\"]").string() + " -q -o " + out.string()).exit_code, 0);
   fs::remove_all(out);
-  const std::vector<std::pair<std::string, std::string>> bad{{"comma", "[\"a,b\", \"c\"]"},    {"newline", "[\"a\\nb\", \"c\"]"},
-                                                             {"quote", "[\"a\\\"b\", \"c\"]"}, {"tab", "[\"a\\tb\", \"c\"]"},
+  const std::vector<std::pair<std::string, std::string>> bad{{"comma", "[\"a,b\", \"c\"]"},     {"newline", "[\"a\\nb\", \"c\"]"},
+                                                             {"quote", "[\"a\\\"b\", \"c\"]"},  {"tab", "[\"a\\tb\", \"c\"]"},
                                                              {"nul", "[\"a\\u0000b\", \"c\"]"}, {"empty", "[\"\", \"c\"]"}};
   for (const auto& [name, dofs] : bad) {
     const CliRun r = run_cli("frc " + two_dof_case(name, dofs).string() + " -q -o " + out.string());
@@ -61,8 +61,9 @@ TEST(InputNames, DofNamesThatWouldBreakACsvHeaderAreRefused) {
 TEST(InputNames, ParameterNamesThatWouldBreakACsvHeaderAreRefused) {
   const fs::path out = temp_dir() / "param_out";
   const fs::path path = temp_dir() / "param.toml";
-  std::ofstream(path) << "[model]\ndofs = [\"x\"]\nM = [[1.0]]\nK = [[1.0]]\n[parameters]\n\"k,2\" = 1.0\n[continuation]\nomega_start = 0.5\nomega_end = "
-                         "1.5\n";
+  std::ofstream(path)
+      << "[model]\ndofs = [\"x\"]\nM = [[1.0]]\nK = [[1.0]]\n[parameters]\n\"k,2\" = 1.0\n[continuation]\nomega_start = 0.5\nomega_end = "
+         "1.5\n";
   expect_bad_input(run_cli("frc " + path.string() + " -q -o " + out.string()), out, "parameter name 'k,2' holds a comma");
 }
 
@@ -70,10 +71,12 @@ TEST(InputNames, ParameterNamesThatWouldBreakACsvHeaderAreRefused) {
 // the first name ("unknown dof" for an output naming it).
 TEST(InputNames, AByteOrderMarkIsNotPartOfTheFirstName) {
   const fs::path names = temp_dir() / "names.txt", out = temp_dir() / "bom_out";
-  std::ofstream(names) << "\xEF\xBB\xBF" << "a\nb\n";
+  std::ofstream(names) << "\xEF\xBB\xBF"
+                       << "a\nb\n";
   const fs::path path = temp_dir() / "bom.toml";
   std::ofstream(path) << "[model]\ndofs = { file = \"names.txt\" }\nM = [[1.0, 0.0], [0.0, 1.0]]\nK = [[2.0, -1.0], [-1.0, 2.0]]\n"
-                         "[damping]\nC = [[0.02, 0.0], [0.0, 0.02]]\n[[forcing]]\ndof = \"a\"\nharmonic = 1\ncos = 1.0\n[continuation]\nomega_start = 0.5\nomega_end = 2.0\n";
+                         "[damping]\nC = [[0.02, 0.0], [0.0, 0.02]]\n[[forcing]]\ndof = \"a\"\nharmonic = 1\ncos = "
+                         "1.0\n[continuation]\nomega_start = 0.5\nomega_end = 2.0\n";
   const CliRun r = run_cli("frc " + path.string() + " -q -o " + out.string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
@@ -94,7 +97,8 @@ TEST(InputNames, BackbonesBadInputIsExit2BeforeAnyFolder) {
                    "subharmonic = 1");
   const fs::path rigid = temp_dir() / "rigid.toml";
   std::ofstream(rigid) << "[model]\ndofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 1.0]]\nK = [[1.0, -1.0], [-1.0, 1.0]]\n"
-                          "[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"a\"]\ncubic_stiffness = 0.1\n[continuation]\nomega_start = 0.5\nomega_end = 2.0\n";
+                          "[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"a\"]\ncubic_stiffness = 0.1\n[continuation]\nomega_start = "
+                          "0.5\nomega_end = 2.0\n";
   expect_bad_input(run_cli("backbone " + rigid.string() + " --mode 1 --range 0.01:2 -q -o " + out.string()), out, "rigid-body mode");
   const std::string dlft = hbtrack::test::source_path("examples/frictional_contact_dlft.toml");
   expect_bad_input(run_cli("backbone " + dlft + " --range 0.01:2 -q -o " + out.string()), out, "with law = \"dlft\"");

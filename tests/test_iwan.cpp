@@ -124,7 +124,8 @@ TEST(Iwan, MicroSlipDissipationFollowsSegalmansPowerLaw) {
     Iwan element;
     element.weights = VectorXd::Ones(1);
     const double phi_max = element.discretise(props).phi_max;
-    const double slope = std::log10(dissipation(element, props, 0.05 * phi_max, 1 << 14) / dissipation(element, props, 0.005 * phi_max, 1 << 14));
+    const double slope =
+        std::log10(dissipation(element, props, 0.05 * phi_max, 1 << 14) / dissipation(element, props, 0.005 * phi_max, 1 << 14));
     EXPECT_NEAR(slope, 3 + chi, 0.03) << "chi " << chi;  // log10(1 + 2 x 3.15 (5/50)^2) < 0.03
   }
 }

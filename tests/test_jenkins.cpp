@@ -125,7 +125,8 @@ TEST(Jenkins, PropertyDerivativesMatchFiniteDifferences) {
     ElementResponse r;
     e->evaluate(x, x, 1.0, {kStiffness, kLimit}, r, true);
     for (int p = 0; p < 2; ++p) {
-      const MatrixXd fd = test::property_difference(*e, x, x, {kStiffness, kLimit}, static_cast<size_t>(p), 1e-6 * (p == 0 ? kStiffness : kLimit));
+      const MatrixXd fd =
+          test::property_difference(*e, x, x, {kStiffness, kLimit}, static_cast<size_t>(p), 1e-6 * (p == 0 ? kStiffness : kLimit));
       // Piecewise linear in the properties at a fixed stick-slip pattern: round-off / h only.
       EXPECT_LT((fd - r.dforce_dproperty.middleCols(2 * p, 2)).cwiseAbs().maxCoeff(), 1e-6 * std::max(1.0, fd.cwiseAbs().maxCoeff()))
           << "a = " << a << ", property " << p;

@@ -66,7 +66,8 @@ TEST(LimitsCli, DeepBracketsAreBadInputNotACrash) {
   const CliRun file = run_cli("frc " + deep.string() + " -q -o " + (dir / "out").string());
   EXPECT_EQ(file.exit_code, 2) << file.err;
   EXPECT_NE(file.err.find("nested deeper than 64"), std::string::npos) << file.err;
-  const CliRun set = run_cli("frc " + duffing() + " -q -o " + (dir / "out").string() + " --set 'amplitude=" + std::string(20000, '[') + "'");
+  const CliRun set =
+      run_cli("frc " + duffing() + " -q -o " + (dir / "out").string() + " --set 'amplitude=" + std::string(20000, '[') + "'");
   EXPECT_EQ(set.exit_code, 2) << set.err;
 }
 
@@ -87,7 +88,8 @@ TEST(LimitsCli, SweepOfMoreTasksThanTheLimitIsRefusedBeforeAnyFolder) {
     EXPECT_FALSE(fs::exists(dir)) << "nothing is written for a refused sweep";
   }
   const fs::path dir = fresh_dir("huge_product");
-  const CliRun product = run_cli("sweep " + duffing() + " -q --param amplitude --values 1:2:1000 --param amplitude --values 1:2:1000 -o " + dir.string());
+  const CliRun product =
+      run_cli("sweep " + duffing() + " -q --param amplitude --values 1:2:1000 --param amplitude --values 1:2:1000 -o " + dir.string());
   EXPECT_EQ(product.exit_code, 2) << product.err;
   EXPECT_NE(product.err.find("1000000 tasks"), std::string::npos) << product.err;
 }
@@ -98,7 +100,8 @@ TEST(LimitsCli, SweepOfMoreTasksThanTheLimitIsRefusedBeforeAnyFolder) {
 TEST(LimitsCli, FullDiskIsReportedAndLeavesNoEmptySummary) {
   const fs::path dir = fresh_dir("full_disk");
   // No `trap '' XFSZ`: the limit as a user sets it (hbtrack ignores SIGXFSZ; it died of it, exit 153).
-  const std::string command = "sh -c \"ulimit -f 2; exec " + std::string(HBTRACK_CLI) + " frc " + duffing() + " -q -o " + dir.string() + "\"";
+  const std::string command =
+      "sh -c \"ulimit -f 2; exec " + std::string(HBTRACK_CLI) + " frc " + duffing() + " -q -o " + dir.string() + "\"";
   const int status = std::system((command + " 2> " + (dir.string() + ".err")).c_str());
   ASSERT_TRUE(WIFEXITED(status));
   std::stringstream err;
@@ -121,16 +124,31 @@ TEST(LimitsCli, FullDiskIsReportedAndLeavesNoEmptySummary) {
 TEST(LimitsCli, RestartedSweepLeavesLiveOrphanTasksAlone) {
   const fs::path dir = fresh_dir("orphans");
   // About 1500 points per task (a second or two): long enough to be caught running.
-  const std::vector<std::string> args{"sweep", duffing(), "-q", "--jobs", "2", "--param", "amplitude", "--values", "0.9,1.0",
-                                      "--set", "continuation.step=0.003", "--set", "continuation.step_max=0.003", "-o", dir.string()};
+  const std::vector<std::string> args{"sweep",
+                                      duffing(),
+                                      "-q",
+                                      "--jobs",
+                                      "2",
+                                      "--param",
+                                      "amplitude",
+                                      "--values",
+                                      "0.9,1.0",
+                                      "--set",
+                                      "continuation.step=0.003",
+                                      "--set",
+                                      "continuation.step_max=0.003",
+                                      "-o",
+                                      dir.string()};
   const pid_t sweep = hbtrack::test::spawn_cli(args);
   ASSERT_GT(sweep, 0);
   const fs::path tasks[] = {dir / "tasks" / "0000", dir / "tasks" / "0001"};
-  const bool running = wait_until([&] { return count_lines(tasks[0] / "branch.csv") > 20 && count_lines(tasks[1] / "branch.csv") > 20; }, 60);
+  const bool running =
+      wait_until([&] { return count_lines(tasks[0] / "branch.csv") > 20 && count_lines(tasks[1] / "branch.csv") > 20; }, 60);
   kill(sweep, SIGKILL);  // the parent only: its tasks go on as orphans
   EXPECT_EQ(hbtrack::test::wait_for_exit(sweep), -1);
   ASSERT_TRUE(running) << "the tasks never started";
-  ASSERT_TRUE(folder_in_use(tasks[0]) || folder_in_use(tasks[1])) << "the orphans finished before the rerun could start (machine too slow?)";
+  ASSERT_TRUE(folder_in_use(tasks[0]) || folder_in_use(tasks[1]))
+      << "the orphans finished before the rerun could start (machine too slow?)";
 
   std::string command;
   for (size_t i = 1; i < args.size(); ++i) command += " '" + args[i] + "'";
@@ -150,14 +168,16 @@ TEST(LimitsCli, RestartedSweepLeavesLiveOrphanTasksAlone) {
 // A second run into the folder of a live one is refused (it would write the same files).
 TEST(LimitsCli, SecondRunIntoALiveFolderIsRefused) {
   const fs::path dir = fresh_dir("busy");
-  const pid_t first = hbtrack::test::spawn_cli({"frc", duffing(), "-q", "--set", "continuation.step=0.003", "--set", "continuation.step_max=0.003", "-o", dir.string()});
+  const pid_t first = hbtrack::test::spawn_cli(
+      {"frc", duffing(), "-q", "--set", "continuation.step=0.003", "--set", "continuation.step_max=0.003", "-o", dir.string()});
   ASSERT_GT(first, 0);
   const bool started = wait_until([&] { return folder_in_use(dir); }, 60);
   const CliRun second = run_cli("frc " + duffing() + " -q -o " + dir.string());
   const int first_exit = hbtrack::test::wait_for_exit(first);
   ASSERT_TRUE(started);
   EXPECT_EQ(second.exit_code, 2) << second.err;
-  EXPECT_NE(second.err.find("is being written by another hbtrack run (pid " + std::to_string(first) + ")"), std::string::npos) << second.err;
+  EXPECT_NE(second.err.find("is being written by another hbtrack run (pid " + std::to_string(first) + ")"), std::string::npos)
+      << second.err;
   EXPECT_EQ(first_exit, 0);
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(dir / "summary.json"));
   EXPECT_EQ(count_lines(dir / "branch.csv"), 1 + summary["points"].get<int>());
@@ -169,8 +189,9 @@ TEST(LimitsCli, SecondRunIntoALiveFolderIsRefused) {
 TEST(LimitsCli, ContinueOnAFullDiskLeavesWholeRowsAndExits3) {
   for (int blocks = 2; blocks <= 9; ++blocks) {
     const fs::path dir = fresh_dir("continue_full_" + std::to_string(blocks));
-    const std::string command = "sh -c \"ulimit -f " + std::to_string(blocks) + "; exec " + std::string(HBTRACK_CLI) + " continue " + duffing() +
-                                " --param amplitude --omega 1.2 --range 0.05:3 -q -o " + dir.string() + "\" 2> " + dir.string() + ".err";
+    const std::string command = "sh -c \"ulimit -f " + std::to_string(blocks) + "; exec " + std::string(HBTRACK_CLI) + " continue " +
+                                duffing() + " --param amplitude --omega 1.2 --range 0.05:3 -q -o " + dir.string() + "\" 2> " +
+                                dir.string() + ".err";
     const int status = std::system(command.c_str());
     std::stringstream err;
     err << std::ifstream(dir.string() + ".err").rdbuf();

@@ -27,8 +27,7 @@ using namespace hbtrack::test;  // TempDirTest, expect_error, example_matrix, sp
 // Writes variables into a v5 .mat file the way MATLAB users would produce them.
 class MatWriter {
  public:
-  explicit MatWriter(const std::string& path, mat_ft version = MAT_FT_MAT5,
-                     matio_compression compression = MAT_COMPRESSION_NONE)
+  explicit MatWriter(const std::string& path, mat_ft version = MAT_FT_MAT5, matio_compression compression = MAT_COMPRESSION_NONE)
       : file_(Mat_CreateVer(path.c_str(), nullptr, version)), compression_(compression) {
     if (file_ == nullptr) throw std::runtime_error("cannot create " + path);
   }
@@ -42,8 +41,8 @@ class MatWriter {
   }
 
   template <class T>
-  void typed(const std::string& name, matio_classes class_type, matio_types data_type, std::vector<T> column_major,
-             size_t rows, size_t cols) {
+  void typed(const std::string& name, matio_classes class_type, matio_types data_type, std::vector<T> column_major, size_t rows,
+             size_t cols) {
     size_t dims[2] = {rows, cols};
     write(Mat_VarCreate(name.c_str(), class_type, data_type, 2, dims, column_major.data(), MAT_F_DONT_COPY_DATA));
   }
@@ -71,8 +70,7 @@ class MatWriter {
     std::vector<double> imaginary_part = {0.5, 0.0, -0.5, 1.0};
     mat_complex_split_t split{real_part.data(), imaginary_part.data()};
     size_t dims[2] = {2, 2};
-    write(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, &split,
-                        MAT_F_COMPLEX | MAT_F_DONT_COPY_DATA));
+    write(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, &split, MAT_F_COMPLEX | MAT_F_DONT_COPY_DATA));
   }
 
   void three_dimensional(const std::string& name) {
@@ -156,8 +154,7 @@ TEST_F(MatFileTest, ReadsV4CompressedV7AndV73Files) {
     mat_ft version;
     matio_compression compression;
   };
-  for (const Format& format : {Format{"v4.mat", MAT_FT_MAT4, MAT_COMPRESSION_NONE},
-                               Format{"v7.mat", MAT_FT_MAT5, MAT_COMPRESSION_ZLIB},
+  for (const Format& format : {Format{"v4.mat", MAT_FT_MAT4, MAT_COMPRESSION_NONE}, Format{"v7.mat", MAT_FT_MAT5, MAT_COMPRESSION_ZLIB},
                                Format{"v73.mat", MAT_FT_MAT73, MAT_COMPRESSION_NONE}}) {
     SCOPED_TRACE(format.filename);
     const std::string path = path_for(format.filename);
@@ -279,7 +276,8 @@ TEST_F(MatFileTest, ImplausibleSizeInHeaderIsRejected) {
 TEST_F(MatFileTest, TagClaimingMoreBytesThanTheFileIsRejectedBeforeMatio) {
   // 4294967047 bytes in the dims tag, as the fuzzer wrote it.
   const std::string path = mat_with_patched_dims("huge_tag.mat", 2, 2, 4, std::string("\x07\xff\xff\xff", 4));
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the matrix at byte 128 claims dims of 4294967047 bytes");
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "corrupt MAT file: the matrix at byte 128 claims dims of 4294967047 bytes");
 }
 
 // Fuzzing finding (oom-377bc906): a sparse matrix whose row-index array has a reserved data type
@@ -371,7 +369,8 @@ TEST_F(MatFileTest, CompressedDimsSizeAtItsFixedPlaceIsChecked) {
       "\x5d\x78\x03\x5a",
       76);
   const std::string path = write_text("compressed_dims.mat", header + element);
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the compressed element at byte 128 holds a tag of 637534208");
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "corrupt MAT file: the compressed element at byte 128 holds a tag of 637534208");
 }
 
 // Fuzzing finding (timeout-0d48...): a valid v4 record followed by garbage whose bytes 124-127

@@ -157,15 +157,13 @@ TEST_F(MatrixMarketTest, ReadsEmptyMatrix) {
 }
 
 TEST_F(MatrixMarketTest, DenseReaderRefusesHugeMatrix) {
-  const std::string path =
-      write_text("huge.mtx", "%%MatrixMarket matrix coordinate real general\n100000 100000 1\n5 7 1.0\n");
+  const std::string path = write_text("huge.mtx", "%%MatrixMarket matrix coordinate real general\n100000 100000 1\n5 7 1.0\n");
   EXPECT_EQ(hbtrack::read_matrix_market_sparse(path).nonZeros(), 1);
   expect_error([&] { hbtrack::read_matrix_market(path); }, path, "too large to read as a dense matrix");
 }
 
 TEST_F(MatrixMarketTest, UnderflowingValueReadsAsZero) {
-  const std::string path =
-      write_text("tiny.mtx", "%%MatrixMarket matrix coordinate real general\n1 2 2\n1 1 1e-400\n1 2 4.9e-324\n");
+  const std::string path = write_text("tiny.mtx", "%%MatrixMarket matrix coordinate real general\n1 2 2\n1 1 1e-400\n1 2 4.9e-324\n");
   const Eigen::MatrixXd matrix = hbtrack::read_matrix_market(path);
   EXPECT_EQ(matrix(0, 0), 0.0);
   EXPECT_GT(matrix(0, 1), 0.0);
@@ -196,8 +194,7 @@ TEST_F(MatrixMarketTest, WriteRefusesNonFiniteValue) {
 
 TEST_F(MatrixMarketTest, WriteReportsUnwritablePath) {
   const std::string path = path_for("no_such_dir/out.mtx");
-  expect_error([&] { hbtrack::write_matrix_market(path, Eigen::SparseMatrix<double>(1, 1)); }, path,
-               "cannot open for writing");
+  expect_error([&] { hbtrack::write_matrix_market(path, Eigen::SparseMatrix<double>(1, 1)); }, path, "cannot open for writing");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -235,45 +232,32 @@ const MalformedCase kMalformedCases[] = {
      "line 2: size line must be 'rows columns entries' (3 integers), found 2"},
     {"ArraySizeLineWithThreeNumbers", "%%MatrixMarket matrix array real general\n2 2 4\n1\n2\n3\n4\n",
      "line 2: size line must be 'rows columns' (2 integers)"},
-    {"NegativeSize", "%%MatrixMarket matrix coordinate real general\n-3 3 1\n1 1 1\n",
-     "'-3' is not a non-negative integer"},
-    {"NonIntegerSize", "%%MatrixMarket matrix coordinate real general\n3.5 3 1\n1 1 1\n",
-     "'3.5' is not a non-negative integer"},
+    {"NegativeSize", "%%MatrixMarket matrix coordinate real general\n-3 3 1\n1 1 1\n", "'-3' is not a non-negative integer"},
+    {"NonIntegerSize", "%%MatrixMarket matrix coordinate real general\n3.5 3 1\n1 1 1\n", "'3.5' is not a non-negative integer"},
     {"DimensionTooLarge", "%%MatrixMarket matrix coordinate real general\n3000000000 3 0\n", "exceeds the limit"},
     {"TooManyDeclaredEntries", "%%MatrixMarket matrix coordinate real general\n10 10 1000000001\n1 1 1\n",
      "entries 1000000001 exceeds the limit of 1000000000"},
     {"ArrayTooLarge", "%%MatrixMarket matrix array real general\n100000 100000\n1\n", "exceeds the limit"},
     {"SymmetricNotSquare", "%%MatrixMarket matrix coordinate real symmetric\n2 3 1\n1 1 1\n", "must be square"},
-    {"RowOutOfRange", "%%MatrixMarket matrix coordinate real general\n3 3 2\n1 1 1\n4 1 2\n",
-     "line 4: row index 4 out of range 1..3"},
-    {"ColumnZero", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 0 1\n",
-     "line 3: column index 0 out of range 1..3"},
-    {"IndexNotInteger", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1.0 1 1\n",
-     "row index '1.0' is not an integer"},
-    {"TooFewEntries", "%%MatrixMarket matrix coordinate real general\n3 3 3\n1 1 1\n2 2 2\n",
-     "file ends after 2 of 3 entries"},
+    {"RowOutOfRange", "%%MatrixMarket matrix coordinate real general\n3 3 2\n1 1 1\n4 1 2\n", "line 4: row index 4 out of range 1..3"},
+    {"ColumnZero", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 0 1\n", "line 3: column index 0 out of range 1..3"},
+    {"IndexNotInteger", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1.0 1 1\n", "row index '1.0' is not an integer"},
+    {"TooFewEntries", "%%MatrixMarket matrix coordinate real general\n3 3 3\n1 1 1\n2 2 2\n", "file ends after 2 of 3 entries"},
     {"TooFewArrayEntries", "%%MatrixMarket matrix array real general\n2 2\n1\n2\n3\n", "file ends after 3 of 4"},
     {"TooManyEntries", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 1\n2 2 2\n",
      "line 4: more entries than the size line declares"},
     {"EntryMissingValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1\n",
      "line 3: expected 3 numbers (row column value), found 2"},
-    {"EntryWithExtraNumber", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 1 1\n",
-     "line 3: expected 3 numbers"},
-    {"NonNumericValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 abc\n",
-     "line 3: value 'abc' is not a number"},
-    {"TrailingGarbageInValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 1.5x\n",
-     "value '1.5x' is not a number"},
+    {"EntryWithExtraNumber", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 1 1\n", "line 3: expected 3 numbers"},
+    {"NonNumericValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 abc\n", "line 3: value 'abc' is not a number"},
+    {"TrailingGarbageInValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n1 1 1.5x\n", "value '1.5x' is not a number"},
     {"NaNValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 nan\n", "line 3: value 'nan' is not finite"},
     {"InfValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 -inf\n", "value '-inf' is not finite"},
     {"OverflowingValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 1e999\n", "out of range"},
-    {"FractionInIntegerField", "%%MatrixMarket matrix coordinate integer general\n3 3 1\n2 2 1.5\n",
-     "value '1.5' is not an integer"},
-    {"BinaryGarbageValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 \x01\x7f\xff\n",
-     "value '?\?\?' is not a number"},
-    {"SymmetricBothTriangles", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n2 1 1\n1 2 1\n",
-     "both triangles"},
-    {"SkewSymmetricDiagonal", "%%MatrixMarket matrix coordinate real skew-symmetric\n2 2 1\n1 1 3\n",
-     "nonzero diagonal"},
+    {"FractionInIntegerField", "%%MatrixMarket matrix coordinate integer general\n3 3 1\n2 2 1.5\n", "value '1.5' is not an integer"},
+    {"BinaryGarbageValue", "%%MatrixMarket matrix coordinate real general\n3 3 1\n2 2 \x01\x7f\xff\n", "value '?\?\?' is not a number"},
+    {"SymmetricBothTriangles", "%%MatrixMarket matrix coordinate real symmetric\n2 2 2\n2 1 1\n1 2 1\n", "both triangles"},
+    {"SkewSymmetricDiagonal", "%%MatrixMarket matrix coordinate real skew-symmetric\n2 2 1\n1 1 3\n", "nonzero diagonal"},
 };
 
 INSTANTIATE_TEST_SUITE_P(MatrixMarket, MalformedMatrixMarketTest, ::testing::ValuesIn(kMalformedCases),

@@ -182,11 +182,13 @@ TEST(PeriodDoubling, TimeIntegrationSettlesOnThePeriodDoubledOrbit) {
     const VectorXd balanced = dof_harmonics(full, n, h, dof);
     scale = std::max(scale, simulated.cwiseAbs().maxCoeff());
     worst = std::max(worst, (simulated - balanced).cwiseAbs().maxCoeff());
-    half_error = std::max(half_error, std::abs(harmonic_magnitude(simulated, 1) - harmonic_magnitude(balanced, 1)) / harmonic_magnitude(simulated, 1));
+    half_error = std::max(half_error,
+                          std::abs(harmonic_magnitude(simulated, 1) - harmonic_magnitude(balanced, 1)) / harmonic_magnitude(simulated, 1));
     repeat = std::max(repeat, (last.col(dof).head(samples) - last.col(dof).tail(samples)).cwiseAbs().maxCoeff());
   }
-  std::printf("[ measured ] omega %.6f: harmonics of omega/2, worst %.2e of the largest; omega/2 magnitude %.2e relative; T-repeat %.3g of %.3g\n",
-              p.lambda, worst / scale, half_error, repeat, scale);
+  std::printf(
+      "[ measured ] omega %.6f: harmonics of omega/2, worst %.2e of the largest; omega/2 magnitude %.2e relative; T-repeat %.3g of %.3g\n",
+      p.lambda, worst / scale, half_error, repeat, scale);
   EXPECT_GT(repeat, 0.05 * scale) << "period 2T, not T";
   // Every harmonic to 2e-3 of the largest: the truncation error of H = 10 (20 halves) on this C0
   // law (measured 7.6e-4). The omega / 2 harmonic to 5 % of itself (measured 2.4 %): its square
@@ -204,14 +206,17 @@ TEST(PeriodDoubling, TheCliSwitchesAtAPdOntoTheBranchAtHalfTheFrequency) {
   fs::remove_all(out);
   const std::string contact = test::source_path("examples/two_dof_contact.toml");
   // The NFRC up to a little past the PD only (the switch runs in the case's window, 0.3 to 2).
-  const std::string window = " --set continuation.omega_start=0.62 --set continuation.omega_end=0.7665 --set 'stability.cross_check=\"off\"'";
+  const std::string window =
+      " --set continuation.omega_start=0.62 --set continuation.omega_end=0.7665 --set 'stability.cross_check=\"off\"'";
   ASSERT_EQ(test::run_cli("frc " + contact + window + " -o " + frc.string() + " -q").exit_code, 0);
   const nlohmann::json f = nlohmann::json::parse(std::ifstream(frc / "summary.json"));
   int pd = 0;
   for (size_t k = 0; k < f["special_points"].size(); ++k)
-    if (f["special_points"][k]["type"] == "PD" && std::abs(f["special_points"][k]["omega"].get<double>() - kExactPd1) < 1e-3) pd = static_cast<int>(k) + 1;
+    if (f["special_points"][k]["type"] == "PD" && std::abs(f["special_points"][k]["omega"].get<double>() - kExactPd1) < 1e-3)
+      pd = static_cast<int>(k) + 1;
   ASSERT_GT(pd, 0);
-  const test::CliRun r = test::run_cli("switch " + contact + " --from " + frc.string() + " --point " + std::to_string(pd) + " -o " + out.string() + " -q");
+  const test::CliRun r =
+      test::run_cli("switch " + contact + " --from " + frc.string() + " --point " + std::to_string(pd) + " -o " + out.string() + " -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
   EXPECT_EQ(s["stop_reason"], "completed");

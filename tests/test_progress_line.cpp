@@ -26,10 +26,10 @@ namespace fs = std::filesystem;
 using hbtrack::cli::Coverage;
 using hbtrack::cli::covered_fraction;
 using hbtrack::cli::parse_relay_line;
-using hbtrack::cli::relay_line;
-using hbtrack::cli::step_progress_text;
 using hbtrack::cli::progress_text;
 using hbtrack::cli::ProgressState;
+using hbtrack::cli::relay_line;
+using hbtrack::cli::step_progress_text;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
 
@@ -215,8 +215,8 @@ TEST(ProgressLine, TrackShareMovesOnEveryLegInALog) {
   // A line per point: the absorber's LP 1, whose first leg turns at a minimum and leaves the
   // range at its other end (75 points; the share sat at 6.7 % for 50 of them).
   setenv("HBTRACK_PROGRESS_INTERVAL", "1e-9", 1);
-  const CliRun track = run_cli("track " + nltva + " --from " + (dir / "frc").string() +
-                               " --lp 1 --param amplitude --range 0.01:0.4 -o " + (dir / "track").string());
+  const CliRun track = run_cli("track " + nltva + " --from " + (dir / "frc").string() + " --lp 1 --param amplitude --range 0.01:0.4 -o " +
+                               (dir / "track").string());
   unsetenv("HBTRACK_PROGRESS_INTERVAL");
   ASSERT_EQ(track.exit_code, 0) << track.err;
   const std::vector<double> percentages = logged_percentages(track.err);

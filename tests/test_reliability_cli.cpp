@@ -144,8 +144,21 @@ namespace {
 // first leg (towards small amplitudes) 190 of them with the minimum that gives birth to the
 // isola at point 42, the second a maximum (239) and a minimum (348). Half a second in Release.
 std::vector<std::string> nltva_track_args(const std::string& from) {
-  return {"track", hbtrack::test::source_path("examples/nltva.toml"), "-q", "--set", "continuation.step=0.01", "--set",
-          "continuation.step_max=0.01", "--from", from, "--lp", "2", "--param", "amplitude", "--range", "0.01:0.4"};
+  return {"track",
+          hbtrack::test::source_path("examples/nltva.toml"),
+          "-q",
+          "--set",
+          "continuation.step=0.01",
+          "--set",
+          "continuation.step_max=0.01",
+          "--from",
+          from,
+          "--lp",
+          "2",
+          "--param",
+          "amplitude",
+          "--range",
+          "0.01:0.4"};
 }
 
 // Runs `args -o dir`, sends SIGINT once `rows` curve points are on disk, returns the exit code.

@@ -106,7 +106,8 @@ TEST_F(ResultColumns, MagnitudesAndPhasesAreThoseOfTheStatesCoefficients) {
     const double tolerance = 4 * std::numeric_limits<double>::epsilon() * scale;
     EXPECT_NEAR(b[col.at("h0_x")], s[1], tolerance) << "both the mean, row " << i;
     double largest = std::abs(s[1]);
-    for (int k = 1; k <= kHarmonics; ++k) largest = std::max(largest, std::hypot(s[static_cast<size_t>(2 * k)], s[static_cast<size_t>(2 * k + 1)]));
+    for (int k = 1; k <= kHarmonics; ++k)
+      largest = std::max(largest, std::hypot(s[static_cast<size_t>(2 * k)], s[static_cast<size_t>(2 * k + 1)]));
     for (int k = 1; k <= kHarmonics; ++k) {
       const double a = s[static_cast<size_t>(2 * k)], bk = s[static_cast<size_t>(2 * k + 1)];
       EXPECT_NEAR(b[col.at(column("h", k, "x"))], std::hypot(a, bk), tolerance) << "row " << i << " k " << k;
@@ -126,9 +127,8 @@ TEST_F(ResultColumns, MagnitudesAndPhasesAreThoseOfTheStatesCoefficients) {
 TEST_F(ResultColumns, StabilityTableHoldsTheExponentsThatDecidedStable) {
   const auto branch = csv_numbers(out_ / "branch.csv"), table = csv_numbers(out_ / "stability.csv");
   const auto col = column_index(csv_header(out_ / "branch.csv"));
-  EXPECT_EQ(csv_header(out_ / "stability.csv"),
-            (std::vector<std::string>{"point", "omega", "k", "exponent_real", "exponent_imag", "multiplier_real", "multiplier_imag",
-                                      "method"}));
+  EXPECT_EQ(csv_header(out_ / "stability.csv"), (std::vector<std::string>{"point", "omega", "k", "exponent_real", "exponent_imag",
+                                                                          "multiplier_real", "multiplier_imag", "method"}));
   std::map<int, std::vector<std::vector<double>>> by_point;
   for (const auto& row : table) by_point[static_cast<int>(row[0])].push_back(row);
   ASSERT_EQ(by_point.size(), branch.size());

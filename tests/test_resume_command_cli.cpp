@@ -71,7 +71,8 @@ TEST(ResumeCommand, FrcStoppedByItsTimeLimitPrintsACommandThatGoesOn) {
   const fs::path dir = hbtrack::test::fresh_temp_dir("hbtrack_resume_frc");
   const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
   // About 800 points, half a second: stopped part-way by a 0.2 s limit.
-  const std::string args = "frc " + duffing + " -q --time-limit 0.2 --set continuation.step=0.01 --set continuation.step_max=0.01 -o " + dir.string();
+  const std::string args =
+      "frc " + duffing + " -q --time-limit 0.2 --set continuation.step=0.01 --set continuation.step_max=0.01 -o " + dir.string();
   const CliRun stopped = run_cli(args);
   ASSERT_EQ(stopped.exit_code, 1) << stopped.err;
   ASSERT_EQ(summary_of(dir)["stop_reason"], "time_limit");
@@ -97,9 +98,23 @@ TEST(ResumeCommand, TrackStoppedBySigtermPrintsItsResumeCommand) {
   const std::string nltva = hbtrack::test::source_path("examples/nltva.toml");
   ASSERT_EQ(run_cli("frc " + nltva + " -q -o " + (root / "frc").string()).exit_code, 0);
   // A tenth of the example's step: 532 curve points, half a second; stopped after 50.
-  const std::vector<std::string> args{"track", nltva, "-q", "--set", "continuation.step=0.01", "--set", "continuation.step_max=0.01",
-                                      "--from", (root / "frc").string(), "--lp", "2", "--param", "amplitude", "--range", "0.01:0.4",
-                                      "-o", (root / "track").string()};
+  const std::vector<std::string> args{"track",
+                                      nltva,
+                                      "-q",
+                                      "--set",
+                                      "continuation.step=0.01",
+                                      "--set",
+                                      "continuation.step_max=0.01",
+                                      "--from",
+                                      (root / "frc").string(),
+                                      "--lp",
+                                      "2",
+                                      "--param",
+                                      "amplitude",
+                                      "--range",
+                                      "0.01:0.4",
+                                      "-o",
+                                      (root / "track").string()};
   const fs::path err = root / "stderr.txt";
   const pid_t pid = hbtrack::test::spawn_cli(args, false, err.string());
   ASSERT_GT(pid, 0);

@@ -44,8 +44,10 @@ fs::path duffing_copy(const fs::path& path, const std::string& from = "", const 
 // An edited stiffness, damping or forcing was resumed silently: the branch mixed two systems.
 TEST(ResumeIdentity, AnEditedModelIsRefusedInOneLine) {
   const fs::path dir = fresh_dir("edited"), case_file = fs::path(dir.string() + ".toml");
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"K = [[1.0]]", "K = [[1.1]]"}, {"C = [[0.05]]", "C = [[0.06]]"}, {"cos = 0.18", "cos = 0.19"}, {"cubic_stiffness = 0.1", "cubic_stiffness = 0.2"}}) {
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{{"K = [[1.0]]", "K = [[1.1]]"},
+                                                                                 {"C = [[0.05]]", "C = [[0.06]]"},
+                                                                                 {"cos = 0.18", "cos = 0.19"},
+                                                                                 {"cubic_stiffness = 0.1", "cubic_stiffness = 0.2"}}) {
     fs::remove_all(dir);
     duffing_copy(case_file);
     ASSERT_EQ(run_cli("frc " + case_file.string() + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
@@ -89,7 +91,8 @@ TEST(ResumeIdentity, ARunStoppedBeforeItsFirstCheckpointResumes) {
   ASSERT_FALSE(fs::exists(parts / "checkpoint.json"));
   const CliRun resumed = run_cli("frc " + duffing + " -q --resume " + parts.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  for (const char* file : {"branch.csv", "states.csv", "stability.csv"}) EXPECT_EQ(file_bytes(whole / file), file_bytes(parts / file)) << file;
+  for (const char* file : {"branch.csv", "states.csv", "stability.csv"})
+    EXPECT_EQ(file_bytes(whole / file), file_bytes(parts / file)) << file;
   // Another case's run is still refused.
   const CliRun other = run_cli("frc " + duffing + " -q --time-limit 1e-9 -o " + (parts.string() + "_2"));
   ASSERT_EQ(other.exit_code, 1);
@@ -145,7 +148,8 @@ TEST(ResumeIdentity, TrackRefusesAnEditedModel) {
   const std::string frc = (root / "frc").string(), dir = (root / "track").string();
   ASSERT_EQ(run_cli("frc " + case_file.string() + " -q -o " + frc).exit_code, 0);
   const std::string track = "track " + case_file.string() + " -q --set continuation.step=0.01 --set continuation.step_max=0.01";
-  const CliRun capped = run_cli(track + " --set continuation.max_points=20 --from " + frc + " --lp 2 --param amplitude --range 0.01:0.4 -o " + dir);
+  const CliRun capped =
+      run_cli(track + " --set continuation.max_points=20 --from " + frc + " --lp 2 --param amplitude --range 0.01:0.4 -o " + dir);
   ASSERT_EQ(capped.exit_code, 0) << capped.err;
   std::string edited = original;
   const std::string from = "cubic_stiffness = 0.0042";

@@ -135,7 +135,8 @@ TEST(Rotor67Mesh, BadSectionTablesGetOneLineErrorsNamingTheLineAndColumn) {
   };
   EXPECT_EQ(message(write("neg.csv", header + "1,1,0,0.1,0,-0.001\n")), dir + "/neg.csv:3: tangential_thickness_m: must be >= 0");
   EXPECT_EQ(message(write("nan.csv", header + "1,1,0,nan,0,0\n")), dir + "/nan.csv:3: radius_m: 'nan' is not a finite number");
-  EXPECT_EQ(message(write("order.csv", header + "2,1,0,0.1,0,0\n")), dir + "/order.csv:3: surface: surfaces must be numbered 1, 2, ... in order");
+  EXPECT_EQ(message(write("order.csv", header + "2,1,0,0.1,0,0\n")),
+            dir + "/order.csv:3: surface: surfaces must be numbered 1, 2, ... in order");
   EXPECT_EQ(message(write("count.csv", "surface,point,axial_m,radius_m,rtheta_suction_m,tangential_thickness_m\n1,1,0,0.1,0,0\n")),
             dir + "/count.csv:2: blade_count: missing (a comment line '# blade_count = N')");
   EXPECT_EQ(message(dir), dir + ": not a regular file");
@@ -168,7 +169,8 @@ TEST(CylindricalFrame, AboutAnyAxisIsTheFrameAboutXRotated) {
   EXPECT_NEAR(about_y.radius, about_x.radius, 1e-15);
   EXPECT_LT((about_y.directions - turn * about_x.directions).cwiseAbs().maxCoeff(), 1e-15);
   EXPECT_THROW(hbtrack::cylindrical_frame(p, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), std::invalid_argument);
-  EXPECT_THROW(hbtrack::cylindrical_frame(Eigen::Vector3d(2, 0, 0), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()), std::invalid_argument);
+  EXPECT_THROW(hbtrack::cylindrical_frame(Eigen::Vector3d(2, 0, 0), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -70,7 +70,9 @@ TEST(Rotor67Model, ReducedModelKeepsTheFirstSixModesWithinHalfAPercent) {
   const NormalModes reduced = normal_modes(rom.mass, rom.stiffness);
   for (int r = 0; r < 6; ++r) EXPECT_LT(reduced.frequencies(r) / full.frequencies(r) - 1.0, 0.005) << "mode " << r + 1;
   const nlohmann::json shipped = nlohmann::json::parse(std::ifstream(test::source_path("data/rotor67/summary.json")));
-  for (int r = 0; r < 6; ++r) EXPECT_NEAR(shipped["natural_frequencies"][static_cast<size_t>(r)].get<double>(), reduced.frequencies(r), 1e-6 * reduced.frequencies(r));
+  for (int r = 0; r < 6; ++r)
+    EXPECT_NEAR(shipped["natural_frequencies"][static_cast<size_t>(r)].get<double>(), reduced.frequencies(r),
+                1e-6 * reduced.frequencies(r));
 }
 
 }  // namespace
@@ -90,7 +92,8 @@ TEST(Rotor67Case, NominalNfrcRunsEndToEndAndFoldsBelowTheLinearResonance) {
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   const nlohmann::json s = nlohmann::json::parse(std::ifstream(dir / "summary.json"));
   EXPECT_EQ(s["stop_reason"], "reached_end");
-  const double linear_1b = nlohmann::json::parse(std::ifstream(hbtrack::test::source_path("data/rotor67/summary.json")))["natural_frequencies"][0];
+  const double linear_1b =
+      nlohmann::json::parse(std::ifstream(hbtrack::test::source_path("data/rotor67/summary.json")))["natural_frequencies"][0];
   std::vector<double> lps;
   for (const auto& p : s["special_points"])
     if (p["type"] == "LP") {

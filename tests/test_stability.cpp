@@ -127,11 +127,14 @@ TEST(Stability, LocatedLimitPointsDoNotDependOnTheSteps) {
   for (const char* step : {"0.02", "0.005"}) {
     CaseDefinition c;
     std::unique_ptr<HarmonicBalance> hbm;
-    const NfrcResult r = nfrc_of("examples/duffing.toml", {std::string("continuation.step=") + step, std::string("continuation.step_max=") + step}, c, hbm);
+    const NfrcResult r =
+        nfrc_of("examples/duffing.toml", {std::string("continuation.step=") + step, std::string("continuation.step_max=") + step}, c, hbm);
     ASSERT_EQ(r.continuation.special_points.size(), 2u);
     for (size_t k = 0; k < 2; ++k) {
-      if (reference.size() < 2) reference.push_back(r.continuation.special_points[k].lambda);
-      else EXPECT_NEAR(r.continuation.special_points[k].lambda, reference[k], 1e-8 * reference[k]);
+      if (reference.size() < 2)
+        reference.push_back(r.continuation.special_points[k].lambda);
+      else
+        EXPECT_NEAR(r.continuation.special_points[k].lambda, reference[k], 1e-8 * reference[k]);
     }
   }
 }
@@ -144,7 +147,11 @@ std::vector<std::string> smooth_two_dof(double width, int harmonics) {
   std::string width_set = "elements[0].width=", harmonics_set = "harmonic_balance.harmonics=";
   width_set += std::to_string(width);
   harmonics_set += std::to_string(harmonics);
-  return {"elements[0].type=\"regularized_contact\"", "elements[0].law=\"sqrt\"", width_set, "elements[0].stiffness=10", harmonics_set,
+  return {"elements[0].type=\"regularized_contact\"",
+          "elements[0].law=\"sqrt\"",
+          width_set,
+          "elements[0].stiffness=10",
+          harmonics_set,
           "harmonic_balance.samples=512"};
 }
 }  // namespace
@@ -263,7 +270,8 @@ TEST(Stability, ArnoldiFindsTheRightmostHillExponents) {
     ASSERT_GT(arnoldi.exponents.size(), 0);
     // Arnoldi's deciding exponent is an eigenvalue of the pencil (l^2 D2 + l D1 + J), D2 = I x M.
     const std::complex<double> l = deciding(arnoldi);
-    EXPECT_LT(distance_to_hill_spectrum(*hbm, p.u, p.lambda, l), 1e-8 * p.lambda) << "omega " << p.lambda << ": " << l << " is no eigenvalue";
+    EXPECT_LT(distance_to_hill_spectrum(*hbm, p.u, p.lambda, l), 1e-8 * p.lambda)
+        << "omega " << p.lambda << ": " << l << " is no eigenvalue";
     const double offset = std::abs(deciding(dense).imag()) - std::abs(l.imag());
     if (std::abs(offset - p.lambda * std::round(offset / p.lambda)) < 1e-6 * p.lambda) {
       ++same_members;
@@ -286,7 +294,8 @@ TEST(Stability, ArnoldiFindsTheRightmostHillExponents) {
 TEST(Stability, ArnoldiExponentsAreEigenvaluesOfThePencilOnABasisWithoutTheMean) {
   CaseDefinition c;
   std::unique_ptr<HarmonicBalance> hbm;
-  const NfrcResult r = nfrc_of("examples/chain_contact.toml", {"harmonic_balance.harmonics=[1, 2, 3, 4, 5]", "stability.method=\"none\""}, c, hbm);
+  const NfrcResult r =
+      nfrc_of("examples/chain_contact.toml", {"harmonic_balance.harmonics=[1, 2, 3, 4, 5]", "stability.method=\"none\""}, c, hbm);
   ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   int compared = 0;
   for (size_t i = 0; i < r.continuation.points.size(); i += 8) {

@@ -166,7 +166,8 @@ TEST(StabilityContact, TwoDofContactPeriodDoublesByDefault) {
     int band_pds = 0;
     for (const SpecialPoint& sp : run.r.continuation.special_points)
       for (const ReferencePoint& e : ref.special)
-        if (sp.type == "PD" && e.type == "PD" && e.omega > 0.76 && e.omega < 0.77 && std::abs(sp.lambda - e.omega) < 1e-4 * e.omega) ++band_pds;
+        if (sp.type == "PD" && e.type == "PD" && e.omega > 0.76 && e.omega < 0.77 && std::abs(sp.lambda - e.omega) < 1e-4 * e.omega)
+          ++band_pds;
     EXPECT_EQ(band_pds, 2) << "the band's two PDs";
   }
   int in_band = 0;
@@ -183,9 +184,9 @@ TEST(StabilityContact, TwoDofContactPeriodDoublesByDefault) {
 // and 0.681476, hbtrack within 5e-5 (measured: the truncation of H = 5).
 TEST(StabilityContact, TwoMassChainFoldsMatchExactShooting) {
   const Reference ref = load_reference("chain_2");
-  const ContactRun run = default_nfrc("examples/chain_contact.toml", {"model.chain.count=2", "elements[0].dofs=[\"x2\"]", "outputs[0].dof=\"x2\"",
-                                                               "continuation.omega_start=0.37082039324993692",
-                                                               "continuation.omega_end=0.98885438199983171"});
+  const ContactRun run = default_nfrc("examples/chain_contact.toml",
+                                      {"model.chain.count=2", "elements[0].dofs=[\"x2\"]", "outputs[0].dof=\"x2\"",
+                                       "continuation.omega_start=0.37082039324993692", "continuation.omega_end=0.98885438199983171"});
   ASSERT_EQ(run.r.continuation.summary.stop_reason, StopReason::reached_end);
   expect_same_special_points(run, ref, 1e-4);
   expect_same_flags(run, ref, 0, 2e-3);
@@ -200,9 +201,9 @@ TEST(StabilityContact, EightMassChainResolvesItsNarrowFoldPairAtTwentyHarmonics)
   // run the same paths (Hill, shooting, corners) under the sanitizers.
   if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
   const Reference ref = load_reference("chain_8");
-  const ContactRun run = default_nfrc("examples/chain_contact.toml", {"harmonic_balance.harmonics=20", "harmonic_balance.samples=320",
-                                                               "continuation.omega_start=0.11072203135596238",
-                                                               "continuation.omega_end=0.2952587502825664"});
+  const ContactRun run = default_nfrc("examples/chain_contact.toml",
+                                      {"harmonic_balance.harmonics=20", "harmonic_balance.samples=320",
+                                       "continuation.omega_start=0.11072203135596238", "continuation.omega_end=0.2952587502825664"});
   ASSERT_EQ(run.r.continuation.summary.stop_reason, StopReason::reached_end);
   expect_same_special_points(run, ref, 5e-5);
   expect_same_flags(run, ref, 0, 1e-3);
@@ -252,8 +253,8 @@ TEST(StabilityContact, HillAloneFindsEveryReferencePointWithItsType) {
   // Release pass checks the numbers; TwoDofContactPeriodDoublesByDefault and the two-mass chain
   // run the same paths (Hill, shooting, corners) under the sanitizers.
   if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers: run by the Release pass";
-  for (const auto& [example, reference] : {std::pair{"examples/nlvib_two_dof_contact.toml", "nlvib_two_dof"},
-                                           std::pair{"examples/two_dof_contact.toml", "two_dof_contact"}}) {
+  for (const auto& [example, reference] :
+       {std::pair{"examples/nlvib_two_dof_contact.toml", "nlvib_two_dof"}, std::pair{"examples/two_dof_contact.toml", "two_dof_contact"}}) {
     SCOPED_TRACE(example);
     const ContactRun run = default_nfrc(example, {"stability.cross_check=\"off\""});
     ASSERT_EQ(run.r.continuation.summary.stop_reason, StopReason::reached_end);

@@ -95,7 +95,8 @@ TEST(StateColumns, AFolderWithTheEarlierUnknownColumnsRestartsAsTheNewOne) {
   const auto b = run_cli("frc " + two_dof + " --from " + old.string() + from + (dir / "from_old").string());
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(b.exit_code, 0) << b.err;
-  for (const char* file : {"branch.csv", "states.csv"}) EXPECT_EQ(file_bytes(dir / "from_new" / file), file_bytes(dir / "from_old" / file)) << file;
+  for (const char* file : {"branch.csv", "states.csv"})
+    EXPECT_EQ(file_bytes(dir / "from_new" / file), file_bytes(dir / "from_old" / file)) << file;
   // A states.csv of another case names the column it lacks, in one line.
   std::ofstream(old / "states.csv") << "omega,y_h0,y_c1\n1,0,0\n1,0,0\n1,0,0\n1,0,0\n1,0,0\n1,0,0\n";
   const auto other = run_cli("frc " + two_dof + " --from " + old.string() + from + (dir / "from_other").string());
@@ -124,7 +125,8 @@ TEST(ElementForces, AreTheLawAppliedToTheStatesHarmonics) {
   ASSERT_GT(forces.size(), 20u);
   const auto displacement = [&](const std::map<std::string, double>& s, double tau) {
     double x = s.at("x_h0");
-    for (int k = 1; k <= kHarmonics; ++k) x += s.at("x_c" + std::to_string(k)) * std::cos(k * tau) + s.at("x_s" + std::to_string(k)) * std::sin(k * tau);
+    for (int k = 1; k <= kHarmonics; ++k)
+      x += s.at("x_c" + std::to_string(k)) * std::cos(k * tau) + s.at("x_s" + std::to_string(k)) * std::sin(k * tau);
     return x;
   };
   const auto law = [](double x) { return 0.1 * x * x * x; };
@@ -143,7 +145,8 @@ TEST(ElementForces, AreTheLawAppliedToTheStatesHarmonics) {
     std::vector<double> cosine(kHarmonics + 1, 0.0), sine(kHarmonics + 1, 0.0);
     for (int j = 0; j < kFine; ++j) {
       const double tau = 2 * std::numbers::pi * j / kFine, value = law(displacement(s, tau));
-      for (int k = 0; k <= kHarmonics; ++k) cosine[k] += 2.0 / kFine * value * std::cos(k * tau), sine[k] += 2.0 / kFine * value * std::sin(k * tau);
+      for (int k = 0; k <= kHarmonics; ++k)
+        cosine[k] += 2.0 / kFine * value * std::cos(k * tau), sine[k] += 2.0 / kFine * value * std::sin(k * tau);
     }
     EXPECT_NEAR(f.at("element0_x_h0"), 0.5 * cosine[0], tolerance) << "the mean, row " << i;
     for (int k = 1; k <= kHarmonics; ++k) {

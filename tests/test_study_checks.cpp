@@ -13,7 +13,8 @@ using nlohmann::json;
 namespace {
 
 json passing_summary() {
-  return {{"steps", json::array({{{"folder", "nfrc"}, {"exit_code", 0}}, {{"folder", "validate_a_1"}, {"exit_code", 0}},
+  return {{"steps", json::array({{{"folder", "nfrc"}, {"exit_code", 0}},
+                                 {{"folder", "validate_a_1"}, {"exit_code", 0}},
                                  {{"folder", "simulate"}, {"exit_code", 1}}})},
           {"simulation", {{"converged", false}}},
           {"tracking", json::array({{{"validations", json::array({{{"folder", "validate_a_1"},
@@ -34,7 +35,8 @@ TEST(StudyChecks, ValidationLimitPointsOffTheCurvesFailTheStudy) {
   s["tracking"][0]["validations"][0]["lps_off_the_curves"] = 1;
   const json failed = hbtrack::cli::failed_checks(s);
   ASSERT_EQ(failed.size(), 1u);
-  EXPECT_NE(failed[0].get<std::string>().find("validate_a_1: 1 of its 2 limit points lie on no tracking curve"), std::string::npos) << failed;
+  EXPECT_NE(failed[0].get<std::string>().find("validate_a_1: 1 of its 2 limit points lie on no tracking curve"), std::string::npos)
+      << failed;
 }
 
 TEST(StudyChecks, AValidationThatDidNotStartOrAFailedStepFailsTheStudy) {

@@ -119,8 +119,8 @@ TEST(StudyCli, SmallBladeStudyFindsTheCuspAndEveryValidationLimitPointLiesOnTheT
   EXPECT_NE(page.str().find("Not periodic to `simulate`'s criterion"), std::string::npos);
   // The figures need Debian's python3-matplotlib, which the install script provides.
   const std::vector<std::string> figures = s["figures"].get<std::vector<std::string>>();
-  for (const char* expected : {"figures/nfrc.png", "figures/tracking_amplitude.png", "figures/validation_amplitude.png",
-                               "figures/simulation_signals.png"})
+  for (const char* expected :
+       {"figures/nfrc.png", "figures/tracking_amplitude.png", "figures/validation_amplitude.png", "figures/simulation_signals.png"})
     EXPECT_NE(std::find(figures.begin(), figures.end(), expected), figures.end()) << expected;
   for (const auto& f : figures) EXPECT_GT(fs::file_size(dir / f), 1000u) << f;
   fs::remove_all(dir);
@@ -153,7 +153,8 @@ TEST(StudyCli, AStudyWhoseValidationFailsExitsOneAndSaysSoFirst) {
     std::ifstream duffing(hbtrack::test::source_path("examples/duffing.toml"));
     std::ofstream out(dir / "case.toml");
     out << duffing.rdbuf()
-        << "\n[study]\ntrack = [ { parameter = \"amplitude\", range = [0.5, 3.0], validate = [2.5] } ]\nmax_points = 4\nsimulate_periods = 0\n";
+        << "\n[study]\ntrack = [ { parameter = \"amplitude\", range = [0.5, 3.0], validate = [2.5] } ]\nmax_points = 4\nsimulate_periods = "
+           "0\n";
   }
   const CliRun r = run_cli("study " + (dir / "case.toml").string() + " -q -o " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 1) << r.err;

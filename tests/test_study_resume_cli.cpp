@@ -115,18 +115,21 @@ TEST(StudyResume, AStudyKilledAfterItsFirstStepResumesToTheSamePageKeepingThatSt
   EXPECT_NE(not_a_study.err.find("not a study"), std::string::npos) << not_a_study.err;
   // A step folder a live process still writes (a step orphaned by a study killed without its
   // children): resuming would run the step again beside it.
-  const pid_t orphan = hbtrack::test::spawn_cli({"frc", study, "-q", "--set", "continuation.step=0.0005", "--set", "continuation.step_max=0.0005",
-                                                 "--set", "continuation.max_points=100000", "-o", (part / "nfrc").string()});
+  const pid_t orphan =
+      hbtrack::test::spawn_cli({"frc", study, "-q", "--set", "continuation.step=0.0005", "--set", "continuation.step_max=0.0005", "--set",
+                                "continuation.max_points=100000", "-o", (part / "nfrc").string()});
   ASSERT_GT(orphan, 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   // Until it holds the folder's lock (its pid in the lock file; branch.csv is already there).
-  while (hbtrack::test::file_bytes(part / "nfrc" / ".hbtrack.lock") != std::to_string(orphan) + "\n" && std::chrono::steady_clock::now() < deadline)
+  while (hbtrack::test::file_bytes(part / "nfrc" / ".hbtrack.lock") != std::to_string(orphan) + "\n" &&
+         std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   const CliRun live = run_cli("study " + study + " --resume " + part.string());
   ::kill(orphan, SIGKILL);
   hbtrack::test::wait_for_exit(orphan);
   EXPECT_EQ(live.exit_code, 2);
-  EXPECT_NE(live.err.find("nfrc is still being written by another process (pid " + std::to_string(orphan) + ")"), std::string::npos) << live.err;
+  EXPECT_NE(live.err.find("nfrc is still being written by another process (pid " + std::to_string(orphan) + ")"), std::string::npos)
+      << live.err;
   for (const CliRun& r : {again, other, not_a_study, live}) EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   fs::remove_all(dir);
 }

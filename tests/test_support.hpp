@@ -36,8 +36,7 @@ inline Eigen::VectorXd central_difference(const std::function<Eigen::VectorXd(do
 }
 
 // Central-difference Jacobian of r(x).
-inline Eigen::MatrixXd fd_jacobian(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& r, const Eigen::VectorXd& x,
-                                   double h) {
+inline Eigen::MatrixXd fd_jacobian(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& r, const Eigen::VectorXd& x, double h) {
   const Eigen::VectorXd r0 = r(x);
   Eigen::MatrixXd j(r0.size(), x.size());
   for (Eigen::Index c = 0; c < x.size(); ++c) {
@@ -114,7 +113,8 @@ struct ContactFixture {
 inline ContactFixture contact_fixture(bool general_damping, double lanczos) {
   ContactFixture f;
   const int n = 9;
-  for (int i = 0; i < n; ++i) f.model.dof_names.push_back(std::string(1, 'd') += std::to_string(i));  // not "d" + ...: GCC 12 -Wrestrict false positive
+  for (int i = 0; i < n; ++i)
+    f.model.dof_names.push_back(std::string(1, 'd') += std::to_string(i));  // not "d" + ...: GCC 12 -Wrestrict false positive
   Eigen::MatrixXd a = Eigen::MatrixXd::Identity(n, n);
   for (int i = 0; i + 1 < n; ++i) a(i, i + 1) = a(i + 1, i) = 0.2;
   f.model.mass = a;
@@ -141,7 +141,7 @@ inline ContactFixture contact_fixture(bool general_damping, double lanczos) {
   auto tip = std::make_shared<TipContact>(ContactLawKind::polynomial);
   tip->dofs = {0, 1, 2};
   tip->properties = {ParameterBinding::constant(50.0), ParameterBinding::linked(f.clearance), ParameterBinding::constant(0.3),
-                     ParameterBinding::linked(f.mu),    ParameterBinding::constant(0.4),       ParameterBinding::constant(1.0),
+                     ParameterBinding::linked(f.mu),   ParameterBinding::constant(0.4),       ParameterBinding::constant(1.0),
                      ParameterBinding::constant(0.2)};
   tip->lanczos_exponent = lanczos;
   auto cubic = std::make_shared<CubicSpring>();

@@ -101,9 +101,10 @@ TEST(SweepCli, MpiRanksGiveTheSameMergedTableAsOneJob) {
   const CliRun r1 = run_cli("sweep " + kCase + " " + kGrid + " --jobs 1 -q -o " + one.string());
   ASSERT_EQ(r1.exit_code, 0) << r1.err;
   // Root in CI containers: Open MPI refuses it unless told; no single-copy shared memory there.
-  const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none timeout 120 " +
-                              std::string(HBTRACK_MPIEXEC) + " --oversubscribe -n 3 " + HBTRACK_CLI + " sweep " + kCase + " " + kGrid +
-                              " -q -o " + ranks.string() + " > /dev/null 2>&1";
+  const std::string command =
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none timeout 120 " +
+      std::string(HBTRACK_MPIEXEC) + " --oversubscribe -n 3 " + HBTRACK_CLI + " sweep " + kCase + " " + kGrid + " -q -o " + ranks.string() +
+      " > /dev/null 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   EXPECT_EQ(file_bytes(one / "sweep.csv"), file_bytes(ranks / "sweep.csv"));
   const json s = json::parse(std::ifstream(ranks / "summary.json"));
@@ -139,7 +140,8 @@ TEST(SweepCli, KilledSweepResumesWithoutRecomputingFinishedTasks) {
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
 
   std::vector<std::string> args{"sweep", kCase, "--jobs", "1", "-q", "-o", dir.string()};
-  for (const char* word : {"--param", "amplitude", "--values", "0.8:1.4:4", "--param", "cubic", "--values", "0.05,0.15"}) args.push_back(word);
+  for (const char* word : {"--param", "amplitude", "--values", "0.8:1.4:4", "--param", "cubic", "--values", "0.05,0.15"})
+    args.push_back(word);
   const pid_t pid = hbtrack::test::spawn_cli(args, true);
   ASSERT_GT(pid, 0);
   // Kill the sweep and the task it is running once three of the eight tasks have finished.
@@ -152,7 +154,8 @@ TEST(SweepCli, KilledSweepResumesWithoutRecomputingFinishedTasks) {
     return done;
   };
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (finished_tasks().size() < 3 && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  while (finished_tasks().size() < 3 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   kill(-pid, SIGKILL);
   EXPECT_EQ(hbtrack::test::wait_for_exit(pid), -1);
   const std::vector<fs::path> done = finished_tasks();
@@ -173,7 +176,8 @@ TEST(SweepCli, KilledSweepResumesWithoutRecomputingFinishedTasks) {
   EXPECT_EQ(file_bytes(dir / "sweep.csv"), file_bytes(reference / "sweep.csv"));
 
   // The same folder with other values is refused: its tasks were computed for the old ones.
-  const CliRun other = run_cli("sweep " + kCase + " --param amplitude --values 0.8:1.4:5 --param cubic --values 0.05,0.15 -o " + dir.string());
+  const CliRun other =
+      run_cli("sweep " + kCase + " --param amplitude --values 0.8:1.4:5 --param cubic --values 0.05,0.15 -o " + dir.string());
   EXPECT_EQ(other.exit_code, 2);
   EXPECT_NE(other.err.find("holds a sweep with other settings (tasks differs"), std::string::npos) << other.err;
   EXPECT_EQ(std::count(other.err.begin(), other.err.end(), '\n'), 1) << other.err;
@@ -193,7 +197,8 @@ TEST(SweepCli, BadInputGivesOneLineErrorsAndWritesNothing) {
       {"--param cubic --values 0.1:0.2:0", "--values (cubic) COUNT: must be an integer >= 1, got '0'"},
       {"--param cubic --values 0.1:0.2:2.5", "--values (cubic) COUNT: must be an integer >= 1, got '2.5'"},
       {"--param cubic --values 0.1:0.2:count=0", "--values (cubic) COUNT: must be an integer >= 1, got '0'"},
-      {"--param cubic --values 0.1:0.2:step=0.01", "--values (cubic): the third field of LO:HI:count=N is a number of values, got 'step=0.01'"},
+      {"--param cubic --values 0.1:0.2:step=0.01",
+       "--values (cubic): the third field of LO:HI:count=N is a number of values, got 'step=0.01'"},
       {"--param cubic --values ''", "--values (cubic): empty list"},
       {"--param cubic --values 0.1,,0.2", "--values (cubic): empty value in the list"},
       {"--param cubic --values 0.1,abc", "--values (cubic): must be a finite number, got 'abc'"},

@@ -44,7 +44,7 @@ TEST(TimeIntegrationCli, SimulateFromAFrcPointReachesItsSteadyState) {
   ASSERT_EQ(frc.exit_code, 0) << frc.err;
   const int point = 20;
   const CliRun r = run_cli("simulate " + kDuffing + " --from " + hbm.string() + " --point " + std::to_string(point) +
-                               " --record-periods 2 -o " + out.string() + " -q");
+                           " --record-periods 2 -o " + out.string() + " -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
 
@@ -133,7 +133,7 @@ TEST(TimeIntegrationCli, PointBeyondTheResultIsRejected) {
   const CliRun solve = run_cli("solve " + kDuffing + " --omega 0.7 -o " + hbm.string() + " -q");
   ASSERT_EQ(solve.exit_code, 0) << solve.err;
   const CliRun r = run_cli("simulate " + kDuffing + " --from " + hbm.string() + " --point 1 -o " +
-                               (fs::temp_directory_path() / "hbtrack_timeint_cli_beyond").string());
+                           (fs::temp_directory_path() / "hbtrack_timeint_cli_beyond").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--point: 1 is beyond the last point"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

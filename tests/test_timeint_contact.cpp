@@ -75,8 +75,8 @@ void expect_extremes_match(const ContactPoint& p, const SteadyStateResult& r, do
   }
   // The motion is in contact: x2 goes beyond the clearance.
   EXPECT_GT(r.outputs[1].max, p.c.parameters.value("clearance"));
-  std::printf("[ measured ] %s at omega %.4f: %d periods, %ld steps, %ld force evaluations, worst extreme %.2e of range\n", method,
-              p.omega, r.periods, r.statistics.steps, r.statistics.force_evaluations, worst);
+  std::printf("[ measured ] %s at omega %.4f: %d periods, %ld steps, %ld force evaluations, worst extreme %.2e of range\n", method, p.omega,
+              r.periods, r.statistics.steps, r.statistics.force_evaluations, worst);
 }
 
 }  // namespace
@@ -136,10 +136,11 @@ TEST(TimeIntegrationContact, StiffPenaltyContactNeedsTheRefinedSteps) {
   EXPECT_LT(worst, 0.005);
   // The refinement only acts around the contacts: well under twice the base steps.
   EXPECT_LT(implicit.statistics.steps, 2 * 256 * implicit.periods);
-  std::printf("[ measured ] k = 5e4: newmark %d periods %ld steps %ld force evaluations; dopri5 %d periods %ld steps %ld force "
-              "evaluations; worst extreme %.2e of range\n",
-              implicit.periods, implicit.statistics.steps, implicit.statistics.force_evaluations, reference.periods,
-              reference.statistics.steps, reference.statistics.force_evaluations, worst);
+  std::printf(
+      "[ measured ] k = 5e4: newmark %d periods %ld steps %ld force evaluations; dopri5 %d periods %ld steps %ld force "
+      "evaluations; worst extreme %.2e of range\n",
+      implicit.periods, implicit.statistics.steps, implicit.statistics.force_evaluations, reference.periods, reference.statistics.steps,
+      reference.statistics.force_evaluations, worst);
 
   // The same fixed-step scheme without the refinement does not settle (energy errors at the
   // impacts keep the motion from repeating).

@@ -51,9 +51,8 @@ TEST_P(DuffingTimeIntegration, SteadyStateFromRestMatchesTheHbmExtremes) {
   EXPECT_LT(relative(s.max, expected.max), 5e-3);
   EXPECT_LT(relative(s.min, expected.min), 5e-3);
   EXPECT_LT(relative(s.first_harmonic(), expected.h1), 5e-3);
-  std::printf("[ measured ] %s: %d periods, %ld steps, max %.3e min %.3e h1 %.3e relative to HBM\n", GetParam().c_str(),
-              r.periods, r.statistics.steps, relative(s.max, expected.max), relative(s.min, expected.min),
-              relative(s.first_harmonic(), expected.h1));
+  std::printf("[ measured ] %s: %d periods, %ld steps, max %.3e min %.3e h1 %.3e relative to HBM\n", GetParam().c_str(), r.periods,
+              r.statistics.steps, relative(s.max, expected.max), relative(s.min, expected.min), relative(s.first_harmonic(), expected.h1));
 }
 
 TEST_P(DuffingTimeIntegration, LeavesAnUnstableMiddleBranchSolutionForAStableOne) {

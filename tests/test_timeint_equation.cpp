@@ -74,7 +74,8 @@ TEST(TimeIntegrationEquation, BothMethodsMatchTheHbmOnEveryElementType) {
   hb_options.harmonics = harmonics;
   hb_options.samples = 1024;
   HarmonicBalance hbm(f.model, f.elements, f.parameters, hb_options);
-  const std::vector<OutputDof> outputs{{"tip_radial", 0, ""}, {"tip_tangential", 1, ""}, {"cubic", 3, ""}, {"friction", 5, ""}, {"linear", 6, ""}};
+  const std::vector<OutputDof> outputs{
+      {"tip_radial", 0, ""}, {"tip_tangential", 1, ""}, {"cubic", 3, ""}, {"friction", 5, ""}, {"linear", 6, ""}};
   const FixedFrequencySolution s = solve_at_frequency(hbm, omega, outputs, 1e-10, 100);
   ASSERT_TRUE(s.converged);
   const MotionState start = state_from_harmonics(hbm.expand(s.x, omega), 9, harmonics, omega);

@@ -136,8 +136,7 @@ TEST(TimeIntegrationLinear, StartingOnTheSteadyStateConvergesAtOnce) {
   Eigen::VectorXd full(3);
   full << 0.0, x.real(), -x.imag();
   SteadyStateOptions options;
-  const SteadyStateResult r =
-      integrate_to_steady_state(integrator, state_from_harmonics(full, 1, 1, kOmega), kOutputs, options);
+  const SteadyStateResult r = integrate_to_steady_state(integrator, state_from_harmonics(full, 1, 1, kOmega), kOutputs, options);
   ASSERT_TRUE(r.converged);
   EXPECT_EQ(r.periods, options.confirmations);
 }
@@ -178,10 +177,10 @@ TEST(TimeIntegrationInitialState, HarmonicsGiveDisplacementAndVelocity) {
   // Two dofs, H = 2: x0 = 0.3 + cos(tau) - 2 sin(2 tau), x1 = -1 + 0.5 sin(tau) + 0.25 cos(2 tau).
   Eigen::VectorXd full(10);
   full << 0.6, -2.0,  // a0 (twice the mean)
-      1.0, 0.0,        // a1
-      0.0, 0.5,        // b1
-      0.0, 0.25,       // a2
-      -2.0, 0.0;       // b2
+      1.0, 0.0,       // a1
+      0.0, 0.5,       // b1
+      0.0, 0.25,      // a2
+      -2.0, 0.0;      // b2
   const double omega = 3.0, t = 0.7, tau = omega * t;
   const MotionState s = state_from_harmonics(full, 2, 2, omega, t);
   EXPECT_DOUBLE_EQ(s.time, t);

@@ -67,8 +67,8 @@ struct Regime {
 };
 // Separation part of the period without rotation; always in contact without rotation (the
 // sqrt law never separates); the casing sliding under the tip.
-const Regime kRegimes[] = {{"stick-slip with separation", 0.3, 0.15, 0.0}, {"stick-slip, small motion", 0.05, 0.004, 0.0},
-                           {"turning casing", 0.3, 0.15, 1.0}};
+const Regime kRegimes[] = {
+    {"stick-slip with separation", 0.3, 0.15, 0.0}, {"stick-slip, small motion", 0.05, 0.004, 0.0}, {"turning casing", 0.3, 0.15, 1.0}};
 
 }  // namespace
 
@@ -183,7 +183,8 @@ TEST(TipContactStickSlip, AftJacobianMatchesFiniteDifferences) {
   m.forcing.push_back({1, (VectorXd(3) << 0.3, 0.5, 0.2).finished(), VectorXd::Zero(3)});
   for (const Regime& r : kRegimes) {
     const std::vector<double> props = properties(r.engine_order, 0.0);
-    HarmonicBalance hbm(m, ElementList{tip(ContactLawKind::polynomial, props)}, ParameterSet(), HarmonicBalanceOptions{3, 64, Condensation::none, {}, 1});
+    HarmonicBalance hbm(m, ElementList{tip(ContactLawKind::polynomial, props)}, ParameterSet(),
+                        HarmonicBalanceOptions{3, 64, Condensation::none, {}, 1});
     VectorXd x = VectorXd::Zero(hbm.unknowns());
     x(0) = 0.2;  // the mean radial position, 0.1, at the clearance
     for (int c = 1; c < 7; ++c) {

@@ -162,7 +162,9 @@ TEST(TrackCli, FindsTheIsolaOfTheNonlinearAbsorberAndTimeIntegrationConfirmsIt) 
   }
   ASSERT_GE(best, 0) << "no stable isola point between omega 1.8 and 2.1";
   const std::string on_isola = (root / "sim_isola").string(), from_rest = (root / "sim_rest").string();
-  ASSERT_EQ(run_cli("simulate " + nltva + " --from " + isola.string() + " --point " + std::to_string(best) + " -o " + on_isola + " -q").exit_code, 0);
+  ASSERT_EQ(
+      run_cli("simulate " + nltva + " --from " + isola.string() + " --point " + std::to_string(best) + " -o " + on_isola + " -q").exit_code,
+      0);
   char omega_text[40];
   std::snprintf(omega_text, sizeof omega_text, "%.17g", omega);
   ASSERT_EQ(run_cli("simulate " + nltva + " --set amplitude=0.15 --omega " + omega_text + " -o " + from_rest + " -q").exit_code, 0);
@@ -188,8 +190,8 @@ TEST(TrackCli, ReadsSubnormalHarmonicsBackAsNumbers) {
   row = row.substr(0, row.find(',') + 1) + "1.0869444208507424e-322" + row.substr(second);
   std::ofstream(copy / "special_states.csv") << header << "\n" << row << "\n" << rest;
   const fs::path out = fs::temp_directory_path() / ("hbtrack_track_subnormal_out_" + std::to_string(getpid()));
-  const CliRun r = run_cli("track " + kDuffingCase + " --from " + copy.string() + " --lp 1 --param amplitude --range 0.5:1.5 -o " + out.string() +
-                           " -q");
+  const CliRun r = run_cli("track " + kDuffingCase + " --from " + copy.string() + " --lp 1 --param amplitude --range 0.5:1.5 -o " +
+                           out.string() + " -q");
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
@@ -228,8 +230,8 @@ TEST(TrackCli, TracksALimitPointOfTheC0LawThroughItsSampleMean) {
   // Stability plays no part in locating folds: off, the two NFRCs cost a tenth.
   const std::string no_stability = " --set 'stability.method=\"none\"'";
   ASSERT_EQ(run_cli("frc " + case_file + no_stability + " -o " + (base / "frc").string() + " -q").exit_code, 0);
-  const CliRun r = run_cli("track " + case_file + " --from " + (base / "frc").string() +
-                           " --lp 1 --param amplitude --range 0.5:2 -q -o " + (base / "track").string());
+  const CliRun r = run_cli("track " + case_file + " --from " + (base / "frc").string() + " --lp 1 --param amplitude --range 0.5:2 -q -o " +
+                           (base / "track").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = hbtrack::test::csv_records(base / "track" / "branch.csv");
   ASSERT_GT(rows.size(), 10u);
@@ -266,7 +268,8 @@ TEST(TrackCli, ATinyClosedCurveClosesOnceAndACappedLegIsNotCompleted) {
   std::ofstream(case_file) << toml;
   const std::string nfrc = " --set 'stability.method=\"none\"'";
   ASSERT_EQ(run_cli("frc " + case_file + nfrc + " -q -o " + (base / "frc").string()).exit_code, 0);
-  const std::string track = "track " + case_file + " --from " + (base / "frc").string() + " --lp 2 --param amplitude --range 0.2:3 -q -o ";  // the upper fold
+  const std::string track =
+      "track " + case_file + " --from " + (base / "frc").string() + " --lp 2 --param amplitude --range 0.2:3 -q -o ";  // the upper fold
   const CliRun r = run_cli(track + (base / "track").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json loop = read_json((base / "track" / "summary.json").string());
@@ -296,8 +299,9 @@ TEST(TrackCli, IsolasAtTheTrackedValueItselfFindsTheLimitPointTheCurveStartsFrom
                     (base / "track").string())
                 .exit_code,
             0);
-  ASSERT_EQ(run_cli("isolas " + kDuffingCase + " --from " + (base / "track").string() + " --at 1 -q -o " + (base / "isolas").string()).exit_code,
-            0);
+  ASSERT_EQ(
+      run_cli("isolas " + kDuffingCase + " --from " + (base / "track").string() + " --at 1 -q -o " + (base / "isolas").string()).exit_code,
+      0);
   const nlohmann::json nfrc = read_json((base / "frc" / "summary.json").string());
   const nlohmann::json isolas = read_json((base / "isolas" / "summary.json").string());
   ASSERT_EQ(nfrc["special_points"].size(), 2u);

@@ -22,14 +22,17 @@ void add_common_options(CLI::App* command, CommonOptions& o) {
   command->add_option("-o,--output", o.out_dir, "output folder (created if missing)")->required();
   command->add_option("--set", o.sets, "override NAME=VALUE: a named parameter or a dotted case key")->take_all();
   command->add_flag("-q,--quiet", o.quiet, "no progress line or closing report");
-  command->add_option("--progress-file", o.progress_file,
-                      "append the progress (point, fraction of the range, seconds) to FILE as lines, even with -q (how `hbtrack study` shows its steps')")
+  command
+      ->add_option("--progress-file", o.progress_file,
+                   "append the progress (point, fraction of the range, seconds) to FILE as lines, even with -q (how `hbtrack study` shows "
+                   "its steps')")
       ->type_name("FILE");
 }
 
 void add_jobs_option(CLI::App* command, int& jobs, const std::string& what) {
   const CLI::Validator non_negative(
-      [](std::string& text) { return text.find_first_not_of("0123456789") == std::string::npos ? "" : "must be >= 0 (0: one per core)"; }, "");
+      [](std::string& text) { return text.find_first_not_of("0123456789") == std::string::npos ? "" : "must be >= 0 (0: one per core)"; },
+      "");
   command->add_option("--jobs", jobs, what + " side by side on this machine (0: one per core; under mpirun: one per rank)")
       ->type_name("INT")
       ->capture_default_str()

@@ -10,7 +10,7 @@
 namespace hbtrack::cli {
 
 struct FullModelModes {
-  std::string reduce_summary;      // the reduce summary.json the case reads, "" for another model
+  std::string reduce_summary;       // the reduce summary.json the case reads, "" for another model
   std::vector<double> frequencies;  // the full model's lowest, rad/s
   std::vector<std::string> names;   // "1B", "2B", "1T", ... ("?" unnamed); empty when unknown
 };

@@ -68,7 +68,8 @@ class PendingMatFile {
   PendingMatFile(const PendingMatFile&) = delete;
   PendingMatFile& operator=(const PendingMatFile&) = delete;
   void write(const Var& v, const std::string& name) {
-    if (!v || Mat_VarWrite(file_, v.get(), MAT_COMPRESSION_NONE) != 0) throw std::runtime_error("export: could not write " + name + " into " + temporary_);
+    if (!v || Mat_VarWrite(file_, v.get(), MAT_COMPRESSION_NONE) != 0)
+      throw std::runtime_error("export: could not write " + name + " into " + temporary_);
     ++written_;
   }
   void commit() {
@@ -179,8 +180,10 @@ Var special_points_struct(const json& points) {
     if (field == "type") return char_row(p.value("type", ""));
     const std::string& key = key_of[field];
     double v = std::numeric_limits<double>::quiet_NaN();
-    if (p.contains(key) && p[key].is_boolean()) v = p[key].get<bool>() ? 1.0 : 0.0;
-    else if (p.contains(key) && p[key].is_number()) v = p[key].get<double>();
+    if (p.contains(key) && p[key].is_boolean())
+      v = p[key].get<bool>() ? 1.0 : 0.0;
+    else if (p.contains(key) && p[key].is_number())
+      v = p[key].get<double>();
     return double_matrix({v}, 1, 1);
   });
 }

@@ -29,7 +29,8 @@ double parse_cell(const std::string& where, const std::string& cell) {
   const char* begin = cell.c_str();
   char* end = nullptr;
   const double value = std::strtod(begin, &end);
-  if (cell.empty() || end != begin + cell.size() || !std::isfinite(value)) throw CaseError(where + ": '" + cell + "' is not a finite number");
+  if (cell.empty() || end != begin + cell.size() || !std::isfinite(value))
+    throw CaseError(where + ": '" + cell + "' is not a finite number");
   return value;
 }
 

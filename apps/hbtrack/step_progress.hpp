@@ -48,7 +48,7 @@ class StepProgressRelay {
   std::condition_variable wake_;
   bool stopping_ = false;
   std::map<std::string, std::string> files_;  // step: its progress file
-  size_t shown_ = 0;                           // characters of the status line on screen
+  size_t shown_ = 0;                          // characters of the status line on screen
   std::thread thread_;
 };
 

@@ -14,8 +14,7 @@ json failed_checks(const json& s) {
     const int code = step.value("exit_code", 0);
     const std::string folder = step.value("folder", "");
     const bool simulation_ran = folder == "simulate" && code == 1 && s.contains("simulation");
-    if (code != 0 && !simulation_ran)
-      failed.push_back(folder + ": exit " + std::to_string(code) + " (see " + folder + "/log.txt)");
+    if (code != 0 && !simulation_ran) failed.push_back(folder + ": exit " + std::to_string(code) + " (see " + folder + "/log.txt)");
   }
   // The nominal NFRC must cover its range: stopped early (max_points, say) it may not have
   // reached every limit point, and the study would track and validate only some of them.

@@ -69,7 +69,8 @@ std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, cons
         if (std::find(b.header.begin(), header_end, "stable") == header_end) continue;
         const auto stable = static_cast<size_t>(b.column("stable"));
         for (size_t i = 0; i < b.rows.size(); ++i)
-          if (b.rows[i][stable] == 1.0 && b.rows[i][column] > best_output) best_output = b.rows[i][column], best = BranchPoint{folder, static_cast<long>(i)};
+          if (b.rows[i][stable] == 1.0 && b.rows[i][column] > best_output)
+            best_output = b.rows[i][column], best = BranchPoint{folder, static_cast<long>(i)};
       }
   return best;
 }
@@ -77,9 +78,13 @@ std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, cons
 json compare_with_simulation(const std::string& branch_dir, long point, const json& s, const std::vector<OutputDof>& outputs) {
   const CsvTable b = read_csv_table(branch_dir + "/branch.csv");
   const std::vector<double>& row = b.rows[static_cast<size_t>(point)];
-  json cmp = {{"point", point}, {"omega", row[0]}, {"periods", s.value("periods", 0)}, {"converged", s.value("converged", false)},
+  json cmp = {{"point", point},
+              {"omega", row[0]},
+              {"periods", s.value("periods", 0)},
+              {"converged", s.value("converged", false)},
               {"last_change", s.value("last_change", 0.0)},
-              {"wall_s", s.contains("timings") ? s["timings"].value("wall_s", 0.0) : 0.0}, {"outputs", json::array()}};
+              {"wall_s", s.contains("timings") ? s["timings"].value("wall_s", 0.0) : 0.0},
+              {"outputs", json::array()}};
   for (const auto& out : outputs)
     for (const char* kind : {"max_", "min_", "h1_"}) {
       const std::string key = kind + out.name;

@@ -26,7 +26,8 @@ struct BranchPoint {
   std::string folder;
   long point = -1;
 };
-std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, const nlohmann::json& tracking, const std::string& first_output);
+std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, const nlohmann::json& tracking,
+                                              const std::string& first_output);
 
 // Row `point` of DIR/branch.csv against a `simulate` summary: max, min, h1 of every output.
 nlohmann::json compare_with_simulation(const std::string& branch_dir, long point, const nlohmann::json& simulation,

@@ -30,12 +30,14 @@ std::string first_output_key(const json& point) {
 void nominal_section(std::ostream& out, const json& s) {
   if (!s.contains("nfrc")) return;
   const json& n = s["nfrc"];
-  out << "## Nominal NFRC\n\n" << n.value("points", 0) << " points in " << num(n.value("wall_s", 0.0), "%.1f") << " s ([nfrc/](nfrc/)).\n\n";
+  out << "## Nominal NFRC\n\n"
+      << n.value("points", 0) << " points in " << num(n.value("wall_s", 0.0), "%.1f") << " s ([nfrc/](nfrc/)).\n\n";
   out << "| special point | omega (rad/s) | first output max |\n|---|---|---|\n";
   // In increasing omega, as the figures number them (summary.json keeps the branch's order), with
   // the digits that tell close points apart (an NS pair, two folds near a resonance).
   std::vector<json> points(n["special_points"].begin(), n["special_points"].end());
-  std::stable_sort(points.begin(), points.end(), [](const json& a, const json& b) { return a.value("omega", 0.0) < b.value("omega", 0.0); });
+  std::stable_sort(points.begin(), points.end(),
+                   [](const json& a, const json& b) { return a.value("omega", 0.0) < b.value("omega", 0.0); });
   for (const auto& sp : points) {
     const std::string key = first_output_key(sp);
     out << "| " << sp.value("type", "") << " | " << num(sp.value("omega", 0.0), "%.7g") << " | "
@@ -109,8 +111,10 @@ void tracking_section(std::ostream& out, const json& s) {
     for (const auto& c : t["curves"]) {
       out << "| " << t["parameter"].get<std::string>() << " | " << num(t["range"][0]) << " to " << num(t["range"][1]) << " | "
           << c.value("lp", 0) << " | " << num(c.value("omega", 0.0), "%.2f") << " | ";
-      if (c.value("same_curve_as_earlier_lp", false)) out << "on an earlier LP's curve | | |\n";
-      else out << c.value("points", 0) << " | " << c.value("stop_reason", "") << " | " << num(c.value("wall_s", 0.0), "%.1f") << " |\n";
+      if (c.value("same_curve_as_earlier_lp", false))
+        out << "on an earlier LP's curve | | |\n";
+      else
+        out << c.value("points", 0) << " | " << c.value("stop_reason", "") << " | " << num(c.value("wall_s", 0.0), "%.1f") << " |\n";
     }
   out << "\n### Extrema of the parameter along the curves (appearance and merging of limit points)\n\n";
   out << "| parameter | extremum | value | omega (rad/s) | first output max | curve |\n|---|---|---|---|---|---|\n";
@@ -136,8 +140,8 @@ void tracking_section(std::ostream& out, const json& s) {
           << lps - static_cast<size_t>(v.value("lps_off_the_curves", 0)) << " | " << num(v.value("largest_distance", 0.0), "%.1e") << " | "
           << v.value("crossings", 0) << " | " << v.value("crossings_not_on_the_nfrc", 0) << " | " << v.value("isolas", 0) << " |\n";
       for (const auto& i : v.value("isola_branches", json::array()))
-        out << "|   isola [" << i.value("folder", "") << "](" << i.value("folder", "") << "/) | omega " << num(i["omega_range"][0], "%.2f") << " to "
-            << num(i["omega_range"][1], "%.2f") << " | " << i.value("points", 0) << " points | " << i.value("unstable_points", 0)
+        out << "|   isola [" << i.value("folder", "") << "](" << i.value("folder", "") << "/) | omega " << num(i["omega_range"][0], "%.2f")
+            << " to " << num(i["omega_range"][1], "%.2f") << " | " << i.value("points", 0) << " points | " << i.value("unstable_points", 0)
             << " unstable | | | |\n";
     }
   out << "\n";
@@ -146,8 +150,8 @@ void tracking_section(std::ostream& out, const json& s) {
 void simulation_section(std::ostream& out, const json& s) {
   if (!s.contains("simulation")) return;
   const json& m = s["simulation"];
-  out << "## Time integration of the resonance\n\nFrom the HBM state of NFRC point " << m.value("point", 0) << " (omega = "
-      << num(m.value("omega", 0.0), "%.2f") << " rad/s), " << m.value("periods", 0) << " periods of HHT-alpha Newmark in "
+  out << "## Time integration of the resonance\n\nFrom the HBM state of NFRC point " << m.value("point", 0)
+      << " (omega = " << num(m.value("omega", 0.0), "%.2f") << " rad/s), " << m.value("periods", 0) << " periods of HHT-alpha Newmark in "
       << num(m.value("wall_s", 0.0), "%.1f") << " s ([simulate/](simulate/)).";
   if (!m.value("converged", false))
     out << " Not periodic to `simulate`'s criterion within these periods (last period-to-period change "
@@ -156,8 +160,8 @@ void simulation_section(std::ostream& out, const json& s) {
            "transient, and the step's exit code is 1.";
   out << "\n\n| quantity | HBM | simulation | difference |\n|---|---|---|---|\n";
   for (const auto& o : m["outputs"])
-    out << "| " << o.value("name", "") << " | " << num(o.value("hbm", 0.0), "%.5g") << " | " << num(o.value("simulation", 0.0), "%.5g") << " | "
-        << num(100 * o.value("relative_difference", 0.0), "%+.2f") << " % |\n";
+    out << "| " << o.value("name", "") << " | " << num(o.value("hbm", 0.0), "%.5g") << " | " << num(o.value("simulation", 0.0), "%.5g")
+        << " | " << num(100 * o.value("relative_difference", 0.0), "%+.2f") << " % |\n";
   out << "\n";
 }
 

@@ -46,15 +46,16 @@ json study_settings(const std::string& case_path, const std::vector<std::string>
 std::map<std::string, json> steps_to_resume(const std::string& dir, const json& settings) {
   const json s = read_summary(dir);
   const std::string where = dir + "/summary.json";
-  if (s.value("verb", "") != "study") throw CaseError("--resume: " + where + ": not a study's summary (verb '" + s.value("verb", "") + "')");
+  if (s.value("verb", "") != "study")
+    throw CaseError("--resume: " + where + ": not a study's summary (verb '" + s.value("verb", "") + "')");
   const std::string reason = s.value("stop_reason", "");
   if (reason == to_string(StopReason::completed) || reason == to_string(StopReason::checks_failed))
     throw CaseError("--resume: " + dir + " finished (" + reason + "), nothing to resume");
   if (!s.contains("settings"))
     throw CaseError("--resume: " + where + ": no settings (a study of an older hbtrack, which cannot resume); run it again with -o");
   if (s["settings"] != settings)
-    throw CaseError("--resume: " + dir + " was computed with other settings (case file, --set or --only differ): " +
-                    json::diff(s["settings"], settings).dump());
+    throw CaseError("--resume: " + dir +
+                    " was computed with other settings (case file, --set or --only differ): " + json::diff(s["settings"], settings).dump());
   refuse_live_steps(dir);
   std::map<std::string, json> steps;
   if (s.contains("steps") && s["steps"].is_array())

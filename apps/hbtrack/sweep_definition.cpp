@@ -68,13 +68,15 @@ std::vector<std::string> parse_sweep_values(const std::string& name, const std::
     // The third field is a count, not a step (Matlab's LO:STEP:HI reads otherwise): `count=N`
     // says so explicitly, a bare N means the same.
     std::string count_text = trimmed(range[2]);
-    if (count_text.rfind("count=", 0) == 0) count_text = trimmed(count_text.substr(6));
+    if (count_text.rfind("count=", 0) == 0)
+      count_text = trimmed(count_text.substr(6));
     else if (count_text.find('=') != std::string::npos)
       throw CaseError(flag + ": the third field of LO:HI:count=N is a number of values, got '" + range[2] + "'");
     const long count = parse_integer(flag + " COUNT", count_text, 1);
     if (static_cast<unsigned long>(count) > kMaxSweepTasks) throw too_many_tasks(flag + " COUNT", std::to_string(count));
     for (long i = 0; i < count; ++i)
-      values.push_back(value_text(i + 1 == count && count > 1 ? hi : lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(std::max(count - 1, 1L))));
+      values.push_back(value_text(
+          i + 1 == count && count > 1 ? hi : lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(std::max(count - 1, 1L))));
     return values;
   }
   if (range.size() != 1) throw CaseError(flag + ": expected A,B,... or LO:HI:count=N, got '" + spec + "'");
@@ -119,7 +121,8 @@ SweepGrid cartesian_grid(const std::vector<std::string>& names, const std::vecto
 SweepGrid read_samples(const std::string& path) {
   std::istringstream in(read_bounded_file(path, kMaxCaseFileBytes, "a --samples CSV table"));
   std::string line;
-  if (!std::getline(in, line) || trimmed(line).empty()) throw CaseError(path + ":1: empty, expected a header naming the parameters (e.g. mu,clearance)");
+  if (!std::getline(in, line) || trimmed(line).empty())
+    throw CaseError(path + ":1: empty, expected a header naming the parameters (e.g. mu,clearance)");
   SweepGrid grid;
   for (const std::string& cell : split(line, ',')) {
     const std::string name = trimmed(cell);
@@ -148,7 +151,8 @@ void check_grid_names(const SweepGrid& grid, const CaseDefinition& c, const std:
   for (size_t j = 0; j < grid.names.size(); ++j) {
     const std::string& name = grid.names[j];
     if (c.parameters.find(name) < 0)
-      throw CaseError(source + " '" + name + "' is not a named parameter of " + c.path + " (its parameters: " + joined(c.parameters.names()) + ")");
+      throw CaseError(source + " '" + name + "' is not a named parameter of " + c.path +
+                      " (its parameters: " + joined(c.parameters.names()) + ")");
     if (std::find(grid.names.begin(), grid.names.begin() + static_cast<long>(j), name) != grid.names.begin() + static_cast<long>(j))
       throw CaseError(source + " '" + name + "' is given twice");
     for (const std::string& s : sets)
@@ -161,13 +165,15 @@ SweepTracking parse_tracking(const std::string& spec, const SweepGrid& grid, con
   if (parts.size() != 1 && parts.size() != 3) throw CaseError("--track: expected PARAM or PARAM:LO:HI, got '" + spec + "'");
   SweepTracking t{parts[0]};
   if (c.parameters.find(t.parameter) < 0)
-    throw CaseError("--track: '" + t.parameter + "' is not a named parameter of " + c.path + " (its parameters: " + joined(c.parameters.names()) + ")");
+    throw CaseError("--track: '" + t.parameter + "' is not a named parameter of " + c.path +
+                    " (its parameters: " + joined(c.parameters.names()) + ")");
   if (parts.size() == 3) {
     t.min = parse_number("--track LO", parts[1]);
     t.max = parse_number("--track HI", parts[2]);
     if (!(t.min < t.max)) throw CaseError("--track: expected PARAM:LO:HI with LO < HI, got '" + spec + "'");
   } else {
-    const auto study = std::find_if(c.study.track.begin(), c.study.track.end(), [&](const StudyTrack& s) { return s.parameter == t.parameter; });
+    const auto study =
+        std::find_if(c.study.track.begin(), c.study.track.end(), [&](const StudyTrack& s) { return s.parameter == t.parameter; });
     if (study == c.study.track.end())
       throw CaseError("--track: give PARAM:LO:HI, the case's [study] section has no range for '" + t.parameter + "'");
     t.min = study->min;
@@ -175,10 +181,11 @@ SweepTracking parse_tracking(const std::string& spec, const SweepGrid& grid, con
   }
   const auto column = std::find(grid.names.begin(), grid.names.end(), t.parameter);
   for (size_t i = 0; i < grid.tasks.size(); ++i) {
-    const double v = column == grid.names.end() ? c.parameters.value(t.parameter) : std::stod(grid.tasks[i][static_cast<size_t>(column - grid.names.begin())]);
+    const double v = column == grid.names.end() ? c.parameters.value(t.parameter)
+                                                : std::stod(grid.tasks[i][static_cast<size_t>(column - grid.names.begin())]);
     if (!(t.min <= v && v <= t.max))
-      throw CaseError("--track: the range " + value_text(t.min) + ":" + value_text(t.max) + " must contain " + t.parameter + " of every task (task " +
-                      std::to_string(i) + " has " + value_text(v) + ": the tracking starts there)");
+      throw CaseError("--track: the range " + value_text(t.min) + ":" + value_text(t.max) + " must contain " + t.parameter +
+                      " of every task (task " + std::to_string(i) + " has " + value_text(v) + ": the tracking starts there)");
   }
   return t;
 }

@@ -96,9 +96,11 @@ void write_sweep_table(const std::string& dir, const SweepGrid& grid, const std:
   header.insert(header.end(), {"status", "points"});
   for (const std::string& name : outputs) header.push_back("peak_max_" + name);
   header.insert(header.end(), {"omega_at_peak_max_" + first, "lps"});
-  for (size_t k = 1; k <= most_lps; ++k) header.insert(header.end(), {"lp" + std::to_string(k) + "_omega", "lp" + std::to_string(k) + "_max_" + first});
+  for (size_t k = 1; k <= most_lps; ++k)
+    header.insert(header.end(), {"lp" + std::to_string(k) + "_omega", "lp" + std::to_string(k) + "_max_" + first});
   if (tracking) {
-    for (size_t k = 1; k <= most_lps; ++k) header.insert(header.end(), {"lp" + std::to_string(k) + "_track_stop", "lp" + std::to_string(k) + "_track_points"});
+    for (size_t k = 1; k <= most_lps; ++k)
+      header.insert(header.end(), {"lp" + std::to_string(k) + "_track_stop", "lp" + std::to_string(k) + "_track_points"});
     header.insert(header.end(), {tracking->parameter + "_minima", tracking->parameter + "_maxima"});
   }
 

@@ -24,7 +24,7 @@ class TaskRunner {
   // Runs every task and returns each one's exit code (128 + N when signal N ended it, -1 when it
   // could not be started, kTaskNotStarted after an interruption).
   virtual std::vector<int> run(const std::vector<ChildTask>& tasks, const TaskFinished& finished = {}) = 0;
-  virtual int slots() const = 0;              // tasks running at once
+  virtual int slots() const = 0;                // tasks running at once
   virtual std::string description() const = 0;  // "2 local workers", "3 MPI ranks"
 };
 

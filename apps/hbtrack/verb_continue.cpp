@@ -43,7 +43,8 @@ int run_continue(const ContinueOptions& o) {
   }
   progress.finish();
   if (!report.success()) throw RunFailed{report.failure};
-  if (!o.common.quiet) std::fprintf(stderr, "continue: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
+  if (!o.common.quiet)
+    std::fprintf(stderr, "continue: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 

@@ -21,10 +21,10 @@ using nlohmann::json;
 
 struct FrcOptions {
   CommonOptions common;
-  std::string resume;     // a stopped frc result folder to continue
-  std::string from;       // a result folder whose point starts the NFRC
-  std::string point;      // its row in states.csv (0-based; default: the last)
-  double time_limit = 0;  // seconds, 0 for none
+  std::string resume;           // a stopped frc result folder to continue
+  std::string from;             // a result folder whose point starts the NFRC
+  std::string point;            // its row in states.csv (0-based; default: the last)
+  double time_limit = 0;        // seconds, 0 for none
   bool element_forces = false;  // element_forces.csv: every element's force per point
 };
 
@@ -85,8 +85,7 @@ int run_frc(const FrcOptions& options) {
   const runs::RunReport report = runs::frc(c, run, sink, monitor);
   progress.finish();
   for (const auto& w : report.summary["warnings"]) std::fprintf(stderr, "frc: warning: %s\n", w.get<std::string>().c_str());
-  if (!report.success())
-    throw RunFailed{report.failure, resume_advice(report.summary.value("stop_reason", ""), resume_command(dir))};
+  if (!report.success()) throw RunFailed{report.failure, resume_advice(report.summary.value("stop_reason", ""), resume_command(dir))};
   if (!o.quiet) std::fprintf(stderr, "frc: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), dir.c_str());
   return 0;
 }

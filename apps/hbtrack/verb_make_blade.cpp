@@ -146,33 +146,36 @@ int run_make_blade(const MakeBladeOptions& o) {
   for (int r = 0; r < 3; ++r) paper.push_back(modes.frequencies(r) / kPaperFrequencies[r] - 1.0);
   for (const auto& frame : blade->tip_frames) tip_radii.push_back(frame.radius);
   const auto& grid = blade->grid;
-  json summary = {{"verb", "make-blade"},
-                  {"geometry", geometry},
-                  {"refinement", o.refinement},
-                  {"elements", {{"chord", grid.cells(0)}, {"thickness", grid.cells(1)}, {"span", grid.cells(2)}, {"total", grid.mesh().elements.size()}}},
-                  {"nodes", grid.mesh().node_count()},
-                  {"dofs", blade->dofs.free_dofs()},
-                  {"boundary_node_ids", boundary_ids},
-                  {"boundary_node_radii", tip_radii},
-                  {"natural_frequencies", frequencies},
-                  {"mode_types", types},
-                  {"paper_frequencies", kPaperFrequencies},
-                  {"relative_difference_to_paper", paper},
-                  {"timings", {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}}}};
+  json summary = {
+      {"verb", "make-blade"},
+      {"geometry", geometry},
+      {"refinement", o.refinement},
+      {"elements",
+       {{"chord", grid.cells(0)}, {"thickness", grid.cells(1)}, {"span", grid.cells(2)}, {"total", grid.mesh().elements.size()}}},
+      {"nodes", grid.mesh().node_count()},
+      {"dofs", blade->dofs.free_dofs()},
+      {"boundary_node_ids", boundary_ids},
+      {"boundary_node_radii", tip_radii},
+      {"natural_frequencies", frequencies},
+      {"mode_types", types},
+      {"paper_frequencies", kPaperFrequencies},
+      {"relative_difference_to_paper", paper},
+      {"timings", {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}}}};
   write_json_atomically(o.out_dir + "/summary.json", summary);
   if (!o.quiet) {
     std::fprintf(stderr, "make-blade: %d elements, %d dofs -> %s\n", static_cast<int>(grid.mesh().elements.size()), blade->dofs.free_dofs(),
                  o.out_dir.c_str());
     for (Eigen::Index r = 0; r < modes.frequencies.size(); ++r)
-      std::fprintf(stderr, "  mode %lld %-3s %10.2f rad/s\n", static_cast<long long>(r + 1), types[static_cast<size_t>(r)].get<std::string>().c_str(),
-                   modes.frequencies(r));
+      std::fprintf(stderr, "  mode %lld %-3s %10.2f rad/s\n", static_cast<long long>(r + 1),
+                   types[static_cast<size_t>(r)].get<std::string>().c_str(), modes.frequencies(r));
   }
   return 0;
 }
 
 void add_make_blade_verbs(CLI::App& app, VerbList& verbs) {
   static MakeBladeOptions options;
-  CLI::App* make = app.add_subcommand("make-blade", "generate a fan blade's full FE model for `reduce` (the parametric plate, or --geometry sections)");
+  CLI::App* make =
+      app.add_subcommand("make-blade", "generate a fan blade's full FE model for `reduce` (the parametric plate, or --geometry sections)");
   make->add_option("-o,--output", options.out_dir, "output folder (created if missing)")->required();
   make->add_option("--geometry", options.geometry,
                    "blade section table (e.g. data/rotor67/sections.csv: NASA rotor 67); without it, the parametric plate");

@@ -30,7 +30,8 @@ int run_modes(const CommonOptions& o, int count) {
       std::snprintf(numbers, sizeof numbers, " %.4f rad/s (%.3f Hz)", omega, omega / (2.0 * std::numbers::pi));
       line += numbers;
       if (mode < full.frequencies.size()) {
-        std::snprintf(numbers, sizeof numbers, ", full model %.4f (%+.3f %%)", full.frequencies[mode], 100 * (omega / full.frequencies[mode] - 1));
+        std::snprintf(numbers, sizeof numbers, ", full model %.4f (%+.3f %%)", full.frequencies[mode],
+                      100 * (omega / full.frequencies[mode] - 1));
         line += numbers;
       }
       std::fprintf(stderr, "%s\n", line.c_str());

@@ -24,11 +24,10 @@ namespace {
 using nlohmann::json;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-
 struct ReduceOptions {
   std::string mass, stiffness, calculix, nodes, boundary_file, out_dir;
   std::vector<int> boundary;
-  std::string axis = "x";         // x, y, z or "AX,AY,AZ": the rotation axis of the model
+  std::string axis = "x";             // x, y, z or "AX,AY,AZ": the rotation axis of the model
   std::string frame = "cylindrical";  // the boundary dofs' directions: cylindrical (r, t, z) or global (x, y, z)
   std::vector<double> axis_origin{0.0, 0.0, 0.0};
   int modes = 12;
@@ -86,8 +85,8 @@ FullModel read_full_model(const ReduceOptions& o, const std::vector<NodeRecord>&
 void check_square_pair(const FullModel& m) {
   const Eigen::Index n = m.stiffness.rows();
   if (m.stiffness.cols() != n || m.mass.rows() != n || m.mass.cols() != n)
-    throw CaseError("reduce: M (" + std::to_string(m.mass.rows()) + "x" + std::to_string(m.mass.cols()) + ") and K (" +
-                    std::to_string(n) + "x" + std::to_string(m.stiffness.cols()) + ") must be square and of the same size");
+    throw CaseError("reduce: M (" + std::to_string(m.mass.rows()) + "x" + std::to_string(m.mass.cols()) + ") and K (" + std::to_string(n) +
+                    "x" + std::to_string(m.stiffness.cols()) + ") must be square and of the same size");
 }
 
 // "x", "y", "z" (either case) or three comma-separated numbers.
@@ -97,8 +96,8 @@ Eigen::Vector3d parse_axis(const std::string& text) {
   if (text == "z" || text == "Z") return Eigen::Vector3d::UnitZ();
   Eigen::Vector3d v;
   char c1 = 0, c2 = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%lf %c %lf %c %lf %c", &v(0), &c1, &v(1), &c2, &v(2), &extra) != 5 || c1 != ',' || c2 != ',' || !v.allFinite() ||
-      !(v.norm() > 0))
+  if (std::sscanf(text.c_str(), "%lf %c %lf %c %lf %c", &v(0), &c1, &v(1), &c2, &v(2), &extra) != 5 || c1 != ',' || c2 != ',' ||
+      !v.allFinite() || !(v.norm() > 0))
     throw CaseError("--axis: '" + text + "' must be x, y, z or a nonzero direction AX,AY,AZ");
   return v;
 }
@@ -112,7 +111,8 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 std::vector<NodeRecord> read_nodes(const ReduceOptions& o) {
   std::string inp = ends_with(o.nodes, ".inp") ? o.nodes : "";
   if (o.nodes.empty()) {
-    if (o.calculix.empty()) throw CaseError("reduce: --nodes is required with --mass and --stiffness (a node table node,x,y,z or a CalculiX .inp)");
+    if (o.calculix.empty())
+      throw CaseError("reduce: --nodes is required with --mass and --stiffness (a node table node,x,y,z or a CalculiX .inp)");
     inp = o.calculix + ".inp";
     if (!std::filesystem::exists(inp))
       throw CaseError("reduce: --nodes not given and " + inp + " not found: give the node table or the CalculiX deck with --nodes");
@@ -209,7 +209,8 @@ int run_reduce(const ReduceOptions& o) {
 
   const NormalModes reduced_modes = normal_modes(rom.mass, rom.stiffness);
   const auto t_full = Clock::now();
-  const int compare = static_cast<int>(std::min<Eigen::Index>({Eigen::Index{o.compare}, reduced_modes.frequencies.size(), full.stiffness.rows()}));
+  const int compare =
+      static_cast<int>(std::min<Eigen::Index>({Eigen::Index{o.compare}, reduced_modes.frequencies.size(), full.stiffness.rows()}));
   Eigen::VectorXd full_frequencies;
   if (compare > 0) {
     try {
@@ -243,8 +244,9 @@ int run_reduce(const ReduceOptions& o) {
         {"fixed_interface_modes", o.modes},
         {"reduced_dofs", rom.mass.rows()}}},
       {"boundary_node_ids", boundary_ids},
-      {"rotation_axis", global_frame ? json(nullptr)
-                                     : json{{"origin", {axis_origin.x(), axis_origin.y(), axis_origin.z()}}, {"direction", {axis.x(), axis.y(), axis.z()}}}},
+      {"rotation_axis",
+       global_frame ? json(nullptr)
+                    : json{{"origin", {axis_origin.x(), axis_origin.y(), axis_origin.z()}}, {"direction", {axis.x(), axis.y(), axis.z()}}}},
       {"dof_names", rom.dof_names},
       {"natural_frequencies", to_json(reduced_modes.frequencies)},
       {"fixed_interface_frequencies", to_json(rom.fixed_interface_frequencies)},
@@ -255,11 +257,12 @@ int run_reduce(const ReduceOptions& o) {
       {"timings", {{"wall_s", seconds_since(t0)}, {"read_s", read_s}, {"reduction_s", reduce_s}, {"full_modes_s", full_modes_s}}}};
   write_json_atomically(o.out_dir + "/summary.json", summary);
   if (!o.quiet) {
-    std::fprintf(stderr, "reduce: %lld -> %lld dofs (%zu boundary nodes, %d modes) in %.2f s -> %s\n", static_cast<long long>(full.stiffness.rows()),
-                 static_cast<long long>(rom.mass.rows()), boundary.size(), o.modes, seconds_since(t0), o.out_dir.c_str());
+    std::fprintf(stderr, "reduce: %lld -> %lld dofs (%zu boundary nodes, %d modes) in %.2f s -> %s\n",
+                 static_cast<long long>(full.stiffness.rows()), static_cast<long long>(rom.mass.rows()), boundary.size(), o.modes,
+                 seconds_since(t0), o.out_dir.c_str());
     for (int r = 0; r < compare; ++r)
-      std::fprintf(stderr, "  mode %d: full %.2f rad/s, reduced %.2f rad/s (%+.3f %%)\n", r + 1, full_frequencies(r), reduced_modes.frequencies(r),
-                   100.0 * errors[static_cast<size_t>(r)].get<double>());
+      std::fprintf(stderr, "  mode %d: full %.2f rad/s, reduced %.2f rad/s (%+.3f %%)\n", r + 1, full_frequencies(r),
+                   reduced_modes.frequencies(r), 100.0 * errors[static_cast<size_t>(r)].get<double>());
   }
   return 0;
 }
@@ -275,10 +278,14 @@ void add_reduce_verbs(CLI::App& app, VerbList& verbs) {
                      "(its *NODE blocks); with --calculix JOB, JOB.inp when omitted");
   reduce->add_option("--boundary", options.boundary, "boundary node ids, in order (n1, n2, ...)")->delimiter(',');
   reduce->add_option("--boundary-file", options.boundary_file, "file of boundary node ids, in order");
-  reduce->add_option("--axis", options.axis, "rotation axis of the model, for the boundary nodes' (r, t, z) frames: x, y, z or AX,AY,AZ (default x)");
-  reduce->add_option("--frame", options.frame,
-                     "directions of the boundary dofs: cylindrical (n1_r, n1_t, n1_z about --axis, the default) or global (n1_x, n1_y, n1_z)");
-  reduce->add_option("--axis-origin", options.axis_origin, "a point of the rotation axis X,Y,Z (default 0,0,0)")->delimiter(',')->expected(3);
+  reduce->add_option("--axis", options.axis,
+                     "rotation axis of the model, for the boundary nodes' (r, t, z) frames: x, y, z or AX,AY,AZ (default x)");
+  reduce->add_option(
+      "--frame", options.frame,
+      "directions of the boundary dofs: cylindrical (n1_r, n1_t, n1_z about --axis, the default) or global (n1_x, n1_y, n1_z)");
+  reduce->add_option("--axis-origin", options.axis_origin, "a point of the rotation axis X,Y,Z (default 0,0,0)")
+      ->delimiter(',')
+      ->expected(3);
   reduce->add_option("--modes", options.modes, "fixed-interface modes kept (default 12)");
   reduce->add_option("--compare", options.compare, "full-model modes computed to check the reduced model (default 6)");
   reduce->add_option("-o,--output", options.out_dir, "output folder (created if missing)")->required();

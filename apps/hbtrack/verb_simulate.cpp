@@ -83,7 +83,8 @@ int run_simulate(const SimulateOptions& o) {
   const runs::RunReport report = runs::simulate(c, run, sink, monitor);
   monitor.finish();
   if (!report.success()) throw RunFailed{report.failure};
-  if (!o.common.quiet) std::fprintf(stderr, "simulate: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
+  if (!o.common.quiet)
+    std::fprintf(stderr, "simulate: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 
@@ -97,8 +98,9 @@ void add_simulate_verbs(CLI::App& app, VerbList& verbs) {
   simulate->add_option("--method", options.method, "newmark (implicit HHT-alpha) or dopri5 (adaptive explicit Dormand-Prince)")
       ->type_name("NAME")
       ->capture_default_str();
-  simulate->add_option("--steps-per-period", options.steps_per_period,
-                       "newmark: base time steps per period; dopri5: output samples per period (the step adapts)")
+  simulate
+      ->add_option("--steps-per-period", options.steps_per_period,
+                   "newmark: base time steps per period; dopri5: output samples per period (the step adapts)")
       ->type_name("INT")
       ->capture_default_str();
   simulate->add_option("--max-periods", options.max_periods, "period budget")->type_name("INT")->capture_default_str();

@@ -98,8 +98,9 @@ class Study {
     lock_result_folder(dir_);
     const json settings = study_settings(o_.common.case_path, o_.common.sets, o_.only);
     if (resuming) previous_ = steps_to_resume(dir_, settings);
-    summary_ = {{"verb", "study"},         {"case", o_.common.case_path}, {"jobs", runner_.slots()},
-                {"runner", runner_.description()}, {"settings", settings},        {"stop_reason", to_string(StopReason::running)},
+    summary_ = {{"verb", "study"},         {"case", o_.common.case_path},
+                {"jobs", runner_.slots()}, {"runner", runner_.description()},
+                {"settings", settings},    {"stop_reason", to_string(StopReason::running)},
                 {"steps", json::array()}};
     if (resuming) summary_["resumed_steps"] = 0;
     save();
@@ -122,9 +123,10 @@ class Study {
       throw RunFailed{"study stopped: " + stop_reason_ + " (results so far in " + dir_ + ")",
                       "study stopped: resume with: " + resume_command(dir_)};
     if (!failed.empty())
-      throw RunFailed{"study: " + std::to_string(failed.size()) + " check(s) failed, first: " + failed[0].get<std::string>() + " (see " + dir_ +
-                      "/index.md)"};
-    if (!o_.common.quiet) std::fprintf(stderr, "study: done in %.1f s -> %s/index.md\n", summary_["timings"]["wall_s"].get<double>(), dir_.c_str());
+      throw RunFailed{"study: " + std::to_string(failed.size()) + " check(s) failed, first: " + failed[0].get<std::string>() + " (see " +
+                      dir_ + "/index.md)"};
+    if (!o_.common.quiet)
+      std::fprintf(stderr, "study: done in %.1f s -> %s/index.md\n", summary_["timings"]["wall_s"].get<double>(), dir_.c_str());
     return 0;
   }
 
@@ -176,7 +178,8 @@ class Study {
       relay.forget(s.folder);
       if (!o_.common.quiet) {
         char line[256];
-        std::snprintf(line, sizeof line, "study:   %-26s exit %d, %.1f s (step %zu of %zu)", s.folder.c_str(), code, seconds, ended, todo.size());
+        std::snprintf(line, sizeof line, "study:   %-26s exit %d, %.1f s (step %zu of %zu)", s.folder.c_str(), code, seconds, ended,
+                      todo.size());
         relay.say(line);
       }
       summary_["steps"].push_back({{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}});
@@ -203,8 +206,11 @@ class Study {
     if (!run_steps({{"nfrc", {"frc", o_.common.case_path}, true}})) return false;
     const json s = read_summary(dir_ + "/nfrc");
     for (size_t row : limit_point_rows(s["special_points"])) limit_points_.push_back(s["special_points"][row]);  // LP1 lowest omega
-    summary_["nfrc"] = {{"points", s["points"]}, {"special_points", s["special_points"]}, {"limit_points", limit_points_.size()},
-                        {"stop_reason", s.value("stop_reason", "")}, {"wall_s", s["timings"]["wall_s"]}};
+    summary_["nfrc"] = {{"points", s["points"]},
+                        {"special_points", s["special_points"]},
+                        {"limit_points", limit_points_.size()},
+                        {"stop_reason", s.value("stop_reason", "")},
+                        {"wall_s", s["timings"]["wall_s"]}};
     // The contacts' loop gain, and the NFRC's warnings, which would otherwise stay in its log.
     if (s.contains("friction_loop_gain")) summary_["nfrc"]["friction_loop_gain"] = s["friction_loop_gain"];
     summary_["nfrc"]["warnings"] = s.value("warnings", json::array());
@@ -251,8 +257,11 @@ class Study {
     summary_["tracking"] = json::array();
     const std::string out = first_output();
     for (const StudyTrack& t : tracked_)
-      entries_[t.parameter] = {{"parameter", t.parameter}, {"range", {t.min, t.max}}, {"curves", json::array()},
-                               {"extrema", json::array()}, {"validations", json::array()}};
+      entries_[t.parameter] = {{"parameter", t.parameter},
+                               {"range", {t.min, t.max}},
+                               {"curves", json::array()},
+                               {"extrema", json::array()},
+                               {"validations", json::array()}};
     for (size_t k = 0; k < limit_points_.size(); ++k) {
       const json& lp = limit_points_[k];
       const double omega = lp.value("omega", 0.0), output = out.empty() ? 0.0 : lp.value("max_" + out, 0.0);
@@ -291,7 +300,8 @@ class Study {
                                {"wall_s", s["timings"].value("wall_s", 0.0)}});
     for (const auto& e : curves_[t.parameter].back().extrema)
       if (!already_listed(entry["extrema"], e))
-        entry["extrema"].push_back({{"type", e.type}, {"value", e.value}, {"omega", e.omega}, {"max_" + out, e.first_output}, {"curve", folder}});
+        entry["extrema"].push_back(
+            {{"type", e.type}, {"value", e.value}, {"omega", e.omega}, {"max_" + out, e.first_output}, {"curve", folder}});
   }
 
   // NFRCs from the linear solution next to every extremum (or at both ends of a range without
@@ -305,12 +315,14 @@ class Study {
       std::vector<double> probes = probe_values(curves_[t.parameter], t.min, t.max, kProbeOffset);
       // The case's own values (a paper's validation NFRCs), unless one is already there.
       for (double v : t.validate)
-        if (std::none_of(probes.begin(), probes.end(), [&](double p) { return std::abs(p - v) <= 1e-12 * std::abs(v); })) probes.push_back(v);
+        if (std::none_of(probes.begin(), probes.end(), [&](double p) { return std::abs(p - v) <= 1e-12 * std::abs(v); }))
+          probes.push_back(v);
       std::sort(probes.begin(), probes.end());
       for (size_t j = 0; j < probes.size(); ++j) {
         const std::string tag = t.parameter + "_" + std::to_string(j + 1), at = number_text(probes[j]);
         probes_.push_back({&t, probes[j], tag});
-        frcs.push_back({"validate_" + tag, {"frc", o_.common.case_path, "--set", t.parameter + "=" + at, "--set", "stability.method=none"}, false});
+        frcs.push_back(
+            {"validate_" + tag, {"frc", o_.common.case_path, "--set", t.parameter + "=" + at, "--set", "stability.method=none"}, false});
         Step locate{"crossings_" + tag, {"isolas", o_.common.case_path, "--at", at, "--locate-only"}, true};
         for (const TrackingCurve& c : curves_[t.parameter]) locate.args.insert(locate.args.end(), {"--from", c.folder});
         crossings.push_back(locate);
@@ -355,12 +367,15 @@ class Study {
         const std::string status = crossings[k].value("status", "");
         if (status != "located" && status != "duplicate") continue;
         const double d_omega = std::abs(crossings[k].value("omega", 0.0) - omega) / std::abs(omega);
-        const double d_output = out.empty() ? 0.0 : std::abs(crossings[k].value("max_" + out, 0.0) - output) / std::max(std::abs(output), 1e-300);
+        const double d_output =
+            out.empty() ? 0.0 : std::abs(crossings[k].value("max_" + out, 0.0) - output) / std::max(std::abs(output), 1e-300);
         if (std::max(d_omega, d_output) < best) best = std::max(d_omega, d_output), best_k = k;
       }
       const bool on_curve = best <= kSameLimitPoint;
-      if (on_curve) used[best_k] = true, worst = std::max(worst, best);
-      else ++off_the_curves;
+      if (on_curve)
+        used[best_k] = true, worst = std::max(worst, best);
+      else
+        ++off_the_curves;
       lps.push_back({{"omega", omega}, {"max_" + out, output}, {"distance", best}, {"on_a_tracking_curve", on_curve}});
     }
     int unseen = 0;
@@ -401,8 +416,10 @@ class Study {
       v["isola_branches"] = json::array();
       for (const auto& x : s.value("crossings", json::array()))
         if (x.value("status", "") == "isola")
-          v["isola_branches"].push_back({{"folder", steps[i].folder + "/" + x.value("folder", "")}, {"omega_range", x["omega_range"]},
-                                         {"points", x["points"]}, {"unstable_points", x["unstable_points"]},
+          v["isola_branches"].push_back({{"folder", steps[i].folder + "/" + x.value("folder", "")},
+                                         {"omega_range", x["omega_range"]},
+                                         {"points", x["points"]},
+                                         {"unstable_points", x["unstable_points"]},
                                          {"special_points", x["special_points"]}});
     }
     return true;
@@ -449,8 +466,11 @@ class Study {
     const int periods = c_.study.simulate_periods;
     // `simulate --from` takes the isola's parameter values from its folder's summary.
     const std::string from = dir_ + "/" + at->folder;
-    std::vector<std::string> args{"simulate", o_.common.case_path, "--from", from, "--point", std::to_string(at->point), "--max-periods",
-                                  std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods))};
+    std::vector<std::string> args{"simulate",         o_.common.case_path,
+                                  "--from",           from,
+                                  "--point",          std::to_string(at->point),
+                                  "--max-periods",    std::to_string(periods),
+                                  "--record-periods", std::to_string(std::min(4, periods))};
     if (!run_steps({{"simulate_isola", args, false}})) return false;
     summary_["isola_simulation"] = compare_with_simulation(from, at->point, read_summary(dir_ + "/simulate_isola"), c_.outputs);
     summary_["isola_simulation"]["folder"] = at->folder;
@@ -472,8 +492,10 @@ class Study {
     };
     if (!run_steps({{"converged/nfrc", with_refine({"frc", o_.common.case_path, "--set", "stability.method=none"}), false}})) return false;
     const json refined = read_summary(dir_ + "/converged/nfrc");
-    json report = {{"harmonics", h}, {"samples", n},
-                   {"limit_points", compare_limit_points(summary_["nfrc"]["special_points"], refined.value("special_points", json::array()), first_output())},
+    json report = {{"harmonics", h},
+                   {"samples", n},
+                   {"limit_points", compare_limit_points(summary_["nfrc"]["special_points"], refined.value("special_points", json::array()),
+                                                         first_output())},
                    {"tracking", json::array()}};
     std::vector<Step> steps;
     std::vector<const StudyTrack*> which;
@@ -493,8 +515,8 @@ class Study {
         if (lp == 0) continue;
         const std::string folder = "converged/" + curve.value("folder", std::string());
         steps.push_back({folder,
-                         with_refine({"track", o_.common.case_path, "--from", dir_ + "/converged/nfrc", "--lp", std::to_string(lp), "--param",
-                                      t.parameter, "--range", number_text(t.min) + ":" + number_text(t.max), "--set",
+                         with_refine({"track", o_.common.case_path, "--from", dir_ + "/converged/nfrc", "--lp", std::to_string(lp),
+                                      "--param", t.parameter, "--range", number_text(t.min) + ":" + number_text(t.max), "--set",
                                       "continuation.max_points=" + std::to_string(c_.study.max_points)}),
                          false});
         which.push_back(&t);
@@ -502,10 +524,12 @@ class Study {
     if (!run_steps(steps)) return false;
     std::map<std::string, std::vector<TrackingCurve>> refined_curves;
     for (size_t i = 0; i < steps.size(); ++i)
-      refined_curves[which[i]->parameter].push_back(read_tracking_curve_folder(dir_ + "/" + steps[i].folder, which[i]->parameter, first_output()));
+      refined_curves[which[i]->parameter].push_back(
+          read_tracking_curve_folder(dir_ + "/" + steps[i].folder, which[i]->parameter, first_output()));
     for (const StudyTrack& t : tracked_)
-      report["tracking"].push_back({{"parameter", t.parameter},
-                                    {"extrema", compare_extrema(entries_[t.parameter]["extrema"], refined_curves[t.parameter], first_output())}});
+      report["tracking"].push_back(
+          {{"parameter", t.parameter},
+           {"extrema", compare_extrema(entries_[t.parameter]["extrema"], refined_curves[t.parameter], first_output())}});
     summary_["convergence"] = report;
     save();
     return true;
@@ -558,7 +582,8 @@ int run_study(const StudyOptions& options) {
   // Under mpirun the other ranks only run the steps rank 0 hands them.
   StudyOptions o = options;
   if (!o.resume.empty()) {
-    if (!o.common.out_dir.empty() && o.common.out_dir != o.resume) throw CaseError("--resume: continues in its own folder, give no other -o");
+    if (!o.common.out_dir.empty() && o.common.out_dir != o.resume)
+      throw CaseError("--resume: continues in its own folder, give no other -o");
     o.common.out_dir = o.resume;
   }
   if (o.common.out_dir.empty()) throw CaseError("--output is required (or --resume DIR)");
@@ -579,13 +604,15 @@ int run_study(const StudyOptions& options) {
 
 void add_study_verb(CLI::App& app, VerbList& verbs) {
   static StudyOptions options;
-  CLI::App* s = app.add_subcommand("study", "the whole analysis of a case: NFRC, tracking of every limit point, isolas, validation, figures");
+  CLI::App* s =
+      app.add_subcommand("study", "the whole analysis of a case: NFRC, tracking of every limit point, isolas, validation, figures");
   add_common_options(s, options.common);
   s->add_option("--only", options.only, "track only this parameter of [study] (repeatable)")->type_name("NAME");
   s->add_option("--units", options.units, "the model's length unit, for the figures' labels (e.g. m)")->type_name("UNIT");
   add_jobs_option(s, options.jobs, "independent steps");
   s->get_option("--output")->required(false);  // --resume DIR names the folder instead
-  s->add_option("--resume", options.resume, "go on with the stopped study in this folder, keeping its finished steps (same case, --set, --only)")
+  s->add_option("--resume", options.resume,
+                "go on with the stopped study in this folder, keeping its finished steps (same case, --set, --only)")
       ->type_name("DIR");
   verbs.push_back({s, [] { return run_study(options); }});
 }

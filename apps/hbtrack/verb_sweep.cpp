@@ -48,7 +48,8 @@ void claim_folder(const std::string& dir, const json& definition) {
     }
     for (const auto& [key, value] : definition.items())
       if (!saved.contains(key) || saved[key] != value)
-        throw CaseError("-o: " + dir + " holds a sweep with other settings (" + key + " differs from its sweep.json); use another folder or delete it");
+        throw CaseError("-o: " + dir + " holds a sweep with other settings (" + key +
+                        " differs from its sweep.json); use another folder or delete it");
     return;
   }
   if (fs::exists(dir) && (!fs::is_directory(dir) || !fs::is_empty(dir)))
@@ -61,15 +62,25 @@ void claim_folder(const std::string& dir, const json& definition) {
 class Sweep {
  public:
   Sweep(const SweepOptions& o, const CaseDefinition& c, SweepGrid grid, std::optional<SweepTracking> tracking, TaskRunner& runner)
-      : o_(o), dir_(o.common.out_dir), grid_(std::move(grid)), tracking_(std::move(tracking)), runner_(runner),
+      : o_(o),
+        dir_(o.common.out_dir),
+        grid_(std::move(grid)),
+        tracking_(std::move(tracking)),
+        runner_(runner),
         unfinished_(grid_.tasks.size(), Unfinished::kPending) {
     for (const OutputDof& out : c.outputs) outputs_.push_back(out.name);
   }
 
   int run() {
     const auto t0 = Clock::now();
-    summary_ = {{"verb", "sweep"}, {"case", o_.common.case_path}, {"tasks", grid_.tasks.size()}, {"runner", runner_.description()},
-                {"stop_reason", to_string(StopReason::running)}, {"computed", 0}, {"skipped", 0}, {"task_wall_s", 0.0}};
+    summary_ = {{"verb", "sweep"},
+                {"case", o_.common.case_path},
+                {"tasks", grid_.tasks.size()},
+                {"runner", runner_.description()},
+                {"stop_reason", to_string(StopReason::running)},
+                {"computed", 0},
+                {"skipped", 0},
+                {"task_wall_s", 0.0}};
     save();
     if (!o_.common.quiet)
       std::fprintf(stderr, "sweep: %zu tasks on %s -> %s\n", grid_.tasks.size(), runner_.description().c_str(), dir_.c_str());
@@ -79,8 +90,9 @@ class Sweep {
     size_t missing = 0;
     for (size_t i = 0; i < grid_.tasks.size(); ++i)
       if (!task_finished(i)) ++missing;
-    summary_["stop_reason"] =
-        to_string(interrupted() ? StopReason::interrupted : missing > 0 ? StopReason::tasks_failed : StopReason::completed);
+    summary_["stop_reason"] = to_string(interrupted() ? StopReason::interrupted
+                                        : missing > 0 ? StopReason::tasks_failed
+                                                      : StopReason::completed);
     summary_["unfinished"] = missing;
     summary_["timings"] = {{"wall_s", seconds_since(t0)}};
     save();
@@ -90,8 +102,10 @@ class Sweep {
                       // A sweep resumes by running again: the finished tasks are skipped.
                       resume_advice(to_string(StopReason::interrupted), typed_command())};
     if (missing > 0)
-      throw RunFailed{std::to_string(missing) + " of " + std::to_string(grid_.tasks.size()) + " tasks left no result (see their log.txt; " + dir_ + "/sweep.csv)"};
-    if (!o_.common.quiet) std::fprintf(stderr, "sweep: done in %s -> %s/sweep.csv\n", duration_text(seconds_since(t0)).c_str(), dir_.c_str());
+      throw RunFailed{std::to_string(missing) + " of " + std::to_string(grid_.tasks.size()) + " tasks left no result (see their log.txt; " +
+                      dir_ + "/sweep.csv)"};
+    if (!o_.common.quiet)
+      std::fprintf(stderr, "sweep: done in %s -> %s/sweep.csv\n", duration_text(seconds_since(t0)).c_str(), dir_.c_str());
     return 0;
   }
 
@@ -125,8 +139,8 @@ class Sweep {
       const size_t count = limit_point_rows(read_summary(nfrc_folder(i)).value("special_points", json::array())).size();
       for (size_t lp = 1; lp <= count; ++lp) {  // --lp K: the K-th in increasing omega
         tasks.push_back({i, folder(i) + "/track_lp" + std::to_string(lp),
-                         with_sets({"track", o_.common.case_path, "--from", nfrc_folder(i), "--lp", std::to_string(lp), "--param", tracking_->parameter,
-                                    "--range", range},
+                         with_sets({"track", o_.common.case_path, "--from", nfrc_folder(i), "--lp", std::to_string(lp), "--param",
+                                    tracking_->parameter, "--range", range},
                                    i)});
       }
     }
@@ -167,7 +181,8 @@ class Sweep {
     const size_t skipped = all.size() - todo.size() - owned_elsewhere;
     summary_["skipped"] = summary_["skipped"].get<size_t>() + skipped;
     if (!o_.common.quiet && skipped > 0)
-      std::fprintf(stderr, "sweep: %s: %zu of %zu already finished in %s, not recomputed\n", phase.c_str(), skipped, all.size(), dir_.c_str());
+      std::fprintf(stderr, "sweep: %s: %zu of %zu already finished in %s, not recomputed\n", phase.c_str(), skipped, all.size(),
+                   dir_.c_str());
     const auto t0 = Clock::now();
     size_t done = 0;
     runner_.run(children, [&](size_t k, int code, double seconds) {
@@ -179,7 +194,8 @@ class Sweep {
       summary_["task_wall_s"] = summary_["task_wall_s"].get<double>() + seconds;
       save();
       if (o_.common.quiet) return;
-      const std::string status = finished ? read_summary(t.folder).value("stop_reason", "") : "exit " + std::to_string(code) + ", see log.txt";
+      const std::string status =
+          finished ? read_summary(t.folder).value("stop_reason", "") : "exit " + std::to_string(code) + ", see log.txt";
       const double left = seconds_since(t0) / static_cast<double>(done) * static_cast<double>(todo.size() - done);
       std::fprintf(stderr, "sweep: %s %s: %s, %.1f s; %zu/%zu done, ~%s left\n", phase.c_str(), t.folder.substr(dir_.size() + 1).c_str(),
                    status.c_str(), seconds, skipped + done, all.size(), duration_text(left).c_str());
@@ -215,10 +231,12 @@ int run_sweep(const SweepOptions& o) {
 
 void add_sweep_verb(CLI::App& app, VerbList& verbs) {
   static SweepOptions options;
-  CLI::App* s = app.add_subcommand("sweep", "NFRCs (or limit-point tracking) over a grid or table of parameter values, on threads or MPI ranks");
+  CLI::App* s =
+      app.add_subcommand("sweep", "NFRCs (or limit-point tracking) over a grid or table of parameter values, on threads or MPI ranks");
   add_common_options(s, options.common);
   s->add_option("--param", options.params, "a named parameter to vary (repeatable, each with its --values)")->type_name("NAME");
-  s->add_option("--values", options.values, "its values: A,B,C or LO:HI:count=N (N evenly spaced values, ends included; not a step)")->type_name("LIST");
+  s->add_option("--values", options.values, "its values: A,B,C or LO:HI:count=N (N evenly spaced values, ends included; not a step)")
+      ->type_name("LIST");
   s->add_option("--samples", options.samples, "a CSV table instead: a header of parameter names, one task per row")->type_name("FILE");
   s->add_option("--track", options.track, "follow every limit point of each NFRC in PARAM over LO:HI (default: the case's [study] range)")
       ->type_name("PARAM[:LO:HI]");

@@ -39,7 +39,8 @@ int run_switch(const SwitchOptions& o) {
     throw CaseError(path + ": special_points missing (is --from a frc result?)");
   const json& special = from["special_points"];
   if (point > static_cast<long>(special.size()))
-    throw CaseError("--point: " + std::to_string(point) + " is beyond the " + std::to_string(special.size()) + " special points of " + path);
+    throw CaseError("--point: " + std::to_string(point) + " is beyond the " + std::to_string(special.size()) + " special points of " +
+                    path);
   const json& sp = special[static_cast<size_t>(point - 1)];
   const std::string type = sp.value("type", "");
   if (type != "BP" && type != "PD")
@@ -55,8 +56,12 @@ int run_switch(const SwitchOptions& o) {
     const HbmState s = read_hbm_state(o.from + "/" + file, r, hbm);
     return runs::StartPoint{s.omega, s.x, o.from + "/" + file};
   };
-  runs::SwitchOptions run{type, point, state("special_states.csv", point - 1), state("states.csv", std::max(row - 1, 0L)),
-                          state("states.csv", std::min(row + 1, rows - 1)), {{"from", o.from}}};
+  runs::SwitchOptions run{type,
+                          point,
+                          state("special_states.csv", point - 1),
+                          state("states.csv", std::max(row - 1, 0L)),
+                          state("states.csv", std::min(row + 1, rows - 1)),
+                          {{"from", o.from}}};
   ResultFolderSink sink(o.common.out_dir);
   Progress progress(o.common.quiet);
   progress.relay_to(o.common.progress_file);
@@ -71,14 +76,15 @@ int run_switch(const SwitchOptions& o) {
   }
   progress.finish();
   if (!report.success()) throw RunFailed{report.failure};
-  if (!o.common.quiet) std::fprintf(stderr, "switch: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
+  if (!o.common.quiet)
+    std::fprintf(stderr, "switch: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 
 void add_switch_verb(CLI::App& app, VerbList& verbs) {
   static SwitchOptions options;
-  CLI::App* command =
-      app.add_subcommand("switch", "the branch crossing a frc result at one of its branch points (BP), or the period-doubled branch of a PD");
+  CLI::App* command = app.add_subcommand(
+      "switch", "the branch crossing a frc result at one of its branch points (BP), or the period-doubled branch of a PD");
   add_common_options(command, options.common);
   command->add_option("--from", options.from, "a frc result folder")->required();
   command->add_option("--point", options.point, "its special point (from 1, as in summary.json), a BP or a PD")->required();

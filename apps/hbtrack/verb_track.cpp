@@ -37,14 +37,16 @@ void take_options_of_stopped_run(TrackOptions& o) {
   const json& t = summary["options"]["tracking"];
   // Before lp_order, --lp counted in summary.json's order: the same number may name another LP.
   if (!t.contains("lp_order"))
-    throw CaseError("--resume: " + o.resume + "/summary.json: options.tracking.lp_order missing: written when --lp counted limit points "
+    throw CaseError("--resume: " + o.resume +
+                    "/summary.json: options.tracking.lp_order missing: written when --lp counted limit points "
                     "in the NFRC's order, not in increasing omega; run the tracking again");
   try {
     if (o.from.empty()) o.from = t.at("from").get<std::string>();
     if (o.lp.empty()) o.lp = std::to_string(t.at("lp").get<long>());
     if (o.param.empty()) o.param = t.at("parameter").get<std::string>();
     if (o.method.empty()) o.method = t.at("method").get<std::string>();
-    if (o.range.empty()) o.range = number_text(t.at("range").at(0).get<double>(), 17) + ":" + number_text(t.at("range").at(1).get<double>(), 17);
+    if (o.range.empty())
+      o.range = number_text(t.at("range").at(0).get<double>(), 17) + ":" + number_text(t.at("range").at(1).get<double>(), 17);
   } catch (const json::exception& e) {
     throw CaseError("--resume: " + o.resume + "/summary.json: options.tracking: " + e.what());
   }
@@ -81,7 +83,8 @@ HbmState starting_fold(const std::string& dir, long lp, const HarmonicBalance& h
 int run_track(TrackOptions o) {
   const auto t0 = Clock::now();
   if (!o.resume.empty()) {
-    if (!o.common.out_dir.empty() && o.common.out_dir != o.resume) throw CaseError("--resume: continues in its own folder, give no other -o");
+    if (!o.common.out_dir.empty() && o.common.out_dir != o.resume)
+      throw CaseError("--resume: continues in its own folder, give no other -o");
     o.common.out_dir = o.resume;
     take_options_of_stopped_run(o);
   }
@@ -155,7 +158,8 @@ int run_isolas(const IsolaOptions& o) {
   std::string parameter_name;
   for (const std::string& dir : o.from) {
     const json s = read_summary(dir);
-    const std::string name = s.contains("options") && s["options"].contains("tracking") ? s["options"]["tracking"].value("parameter", "") : "";
+    const std::string name =
+        s.contains("options") && s["options"].contains("tracking") ? s["options"]["tracking"].value("parameter", "") : "";
     if (name.empty()) throw CaseError(dir + "/summary.json: options.tracking.parameter missing (is --from a track result?)");
     if (!parameter_name.empty() && name != parameter_name)
       throw CaseError("--from: " + dir + " tracks '" + name + "', " + o.from.front() + " tracks '" + parameter_name + "'");
@@ -178,7 +182,8 @@ int run_isolas(const IsolaOptions& o) {
   CliMonitor monitor(progress, stop, c.outputs);
   const runs::RunReport report = runs::isolas(c, run, sink, monitor);
   progress.finish();
-  if (!o.common.quiet) std::fprintf(stderr, "isolas: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
+  if (!o.common.quiet)
+    std::fprintf(stderr, "isolas: %s, %.3f s -> %s\n", report.brief.c_str(), seconds_since(t0), o.common.out_dir.c_str());
   return 0;
 }
 

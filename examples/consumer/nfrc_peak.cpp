@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
       if (!p.outputs.empty() && p.outputs[0].max > peak) peak = p.outputs[0].max, omega_at_peak = p.omega;
     int limit_points = 0;
     for (const auto& sp : r.continuation.special_points) limit_points += sp.type == "LP";
-    std::printf("points %zu peak %.6g at omega %.6g limit_points %d stop %s\n", r.recorded.size(), peak, omega_at_peak,
-                limit_points, hbtrack::to_string(r.continuation.summary.stop_reason).c_str());
+    std::printf("points %zu peak %.6g at omega %.6g limit_points %d stop %s\n", r.recorded.size(), peak, omega_at_peak, limit_points,
+                hbtrack::to_string(r.continuation.summary.stop_reason).c_str());
     return r.continuation.success() ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "nfrc_peak: %s\n", e.what());

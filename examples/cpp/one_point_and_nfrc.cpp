@@ -18,13 +18,13 @@ int main() {
 
   // The NFRC over the case's range (hbtrack frc), the observer called at every accepted point.
   int seen = 0;
-  const hbtrack::NfrcResult nfrc = hbtrack::compute_nfrc(hbm, c.nfrc, c.outputs, [&](const hbtrack::BranchPoint&, const hbtrack::RecordedPoint&, int) {
-    ++seen;
-    return true;  // false stops the continuation there
-  });
+  const hbtrack::NfrcResult nfrc =
+      hbtrack::compute_nfrc(hbm, c.nfrc, c.outputs, [&](const hbtrack::BranchPoint&, const hbtrack::RecordedPoint&, int) {
+        ++seen;
+        return true;  // false stops the continuation there
+      });
   std::printf("frc: %zu points (%d observed), %s\n", nfrc.recorded.size(), seen,
               hbtrack::to_string(nfrc.continuation.summary.stop_reason).c_str());
-  for (const hbtrack::SpecialPoint& sp : nfrc.continuation.special_points)
-    std::printf("  %s at omega %.6f\n", sp.type.c_str(), sp.lambda);
+  for (const hbtrack::SpecialPoint& sp : nfrc.continuation.special_points) std::printf("  %s at omega %.6f\n", sp.type.c_str(), sp.lambda);
   return nfrc.continuation.success() ? 0 : 1;
 }

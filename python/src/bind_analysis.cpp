@@ -83,7 +83,8 @@ py::dict isolas(const CaseDefinition& c, const std::vector<Eigen::MatrixXd>& cur
   options.at = at;
   const int unknowns = make_system(c).unknowns();
   for (const auto& states : curve_states) options.curves.push_back(curve_from_states(states, unknowns));
-  py::dict out = run_in_memory(progress, [&](runs::ResultSink& sink, runs::RunMonitor& monitor) { runs::isolas(c, options, sink, monitor); });
+  py::dict out =
+      run_in_memory(progress, [&](runs::ResultSink& sink, runs::RunMonitor& monitor) { runs::isolas(c, options, sink, monitor); });
   if (!out.contains("branches")) out["branches"] = py::dict();  // none found
   return out;
 }
@@ -97,7 +98,8 @@ void bind_analysis(py::module_& m) {
   m.def("solve", &solve, py::arg("case"), py::arg("omega"), "one periodic solution at omega: {branch, states, dof_states, summary}");
   m.def("modes", &modes, py::arg("case"), py::arg("count") = 10, "the lowest natural frequencies of the case's model: {summary}");
   m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
-        py::arg("parameter_max"), py::arg("method") = "bordered", py::arg("progress") = py::none(), "limit point (x, omega) tracked in param");
+        py::arg("parameter_max"), py::arg("method") = "bordered", py::arg("progress") = py::none(),
+        "limit point (x, omega) tracked in param");
   m.def("isolas", &isolas, py::arg("case"), py::arg("curves"), py::arg("param"), py::arg("at"), py::arg("progress") = py::none(),
         "branches through the crossings of tracking curves (their states) with param = at");
 }

@@ -20,10 +20,10 @@ struct ContinuationSection {
 };
 
 // In the case file's order (docs/case-file.md).
-const std::vector<std::string> kContinuationKeys{"omega_start", "omega_end", "step", "step_min", "step_max", "max_points",
-                                                 "max_iterations", "target_iterations", "tolerance", "reuse_factorization",
-                                                 "contraction", "max_angle", "predictor", "corrector", "length_scale",
-                                                 "wall_time_limit", "locate"};
+const std::vector<std::string> kContinuationKeys{
+    "omega_start", "omega_end",           "step",        "step_min",  "step_max",  "max_points", "max_iterations", "target_iterations",
+    "tolerance",   "reuse_factorization", "contraction", "max_angle", "predictor", "corrector",  "length_scale",   "wall_time_limit",
+    "locate"};
 
 template <class T>
 void range_key(py::class_<ContinuationSection>& cls, const char* name, T NfrcOptions::*member) {
@@ -80,40 +80,39 @@ void bind_case_settings(py::module_& m, py::class_<CaseDefinition>& case_class) 
                if (!self.attr(key.c_str()).equal(other.attr(key.c_str()))) return false;
              return true;
            })
-      .def("validate", [](const ContinuationSection& s) { s.c->nfrc.validate(); }, "raises ValueError naming the field and the rule broken")
+      .def(
+          "validate", [](const ContinuationSection& s) { s.c->nfrc.validate(); }, "raises ValueError naming the field and the rule broken")
       .def_property_readonly(
           "options", [](const ContinuationSection& s) -> ContinuationOptions& { return s.c->nfrc.continuation; },
           py::return_value_policy::reference_internal, "the arc-length settings alone (ContinuationOptions), shared with the case");
 
   case_class
-      .def_property(
-          "continuation", py::cpp_function([](CaseDefinition& c) { return ContinuationSection{&c}; }, py::keep_alive<0, 1>()),
-          py::cpp_function([](CaseDefinition& c, const py::object& value) {
-            // A section (of this or another case) sets every key; ContinuationOptions the
-            // arc-length settings, keeping the frequency range.
-            if (py::isinstance<ContinuationSection>(value)) {
-              const CaseDefinition* other = value.cast<const ContinuationSection&>().c;
-              const StabilityOptions stability = c.nfrc.stability;
-              c.nfrc = other->nfrc;
-              c.nfrc.stability = stability;
-            } else {
-              c.nfrc.continuation = value.cast<ContinuationOptions>();
-            }
-          }),
-          "the case file's [continuation] section: omega_start, omega_end, length_scale, step, ... (ContinuationSection)")
-      .def_property(
-          "nfrc",
-          py::cpp_function(
-              [](CaseDefinition& c) -> NfrcOptions& {
-                warn_nfrc_deprecated();
-                return c.nfrc;
-              },
-              py::return_value_policy::reference_internal),
-          py::cpp_function([](CaseDefinition& c, const NfrcOptions& o) {
-            warn_nfrc_deprecated();
-            c.nfrc = o;
-          }),
-          "deprecated: case.continuation and case.stability");
+      .def_property("continuation", py::cpp_function([](CaseDefinition& c) { return ContinuationSection{&c}; }, py::keep_alive<0, 1>()),
+                    py::cpp_function([](CaseDefinition& c, const py::object& value) {
+                      // A section (of this or another case) sets every key; ContinuationOptions the
+                      // arc-length settings, keeping the frequency range.
+                      if (py::isinstance<ContinuationSection>(value)) {
+                        const CaseDefinition* other = value.cast<const ContinuationSection&>().c;
+                        const StabilityOptions stability = c.nfrc.stability;
+                        c.nfrc = other->nfrc;
+                        c.nfrc.stability = stability;
+                      } else {
+                        c.nfrc.continuation = value.cast<ContinuationOptions>();
+                      }
+                    }),
+                    "the case file's [continuation] section: omega_start, omega_end, length_scale, step, ... (ContinuationSection)")
+      .def_property("nfrc",
+                    py::cpp_function(
+                        [](CaseDefinition& c) -> NfrcOptions& {
+                          warn_nfrc_deprecated();
+                          return c.nfrc;
+                        },
+                        py::return_value_policy::reference_internal),
+                    py::cpp_function([](CaseDefinition& c, const NfrcOptions& o) {
+                      warn_nfrc_deprecated();
+                      c.nfrc = o;
+                    }),
+                    "deprecated: case.continuation and case.stability");
   m.def("with_overrides", &with_overrides, py::arg("case"), py::arg("overrides"),
         "a copy of the case with NAME=VALUE overrides of its parameters and settings (as --set)");
 }

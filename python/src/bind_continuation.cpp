@@ -14,7 +14,8 @@ namespace hbtrack::python {
 namespace {
 
 // progress(fraction of [start, end] covered, point, the parameter's value).
-py::dict continuation(const CaseDefinition& c, const std::string& param, double omega, double start, double end, const py::object& progress) {
+py::dict continuation(const CaseDefinition& c, const std::string& param, double omega, double start, double end,
+                      const py::object& progress) {
   return run_in_memory(progress, [&](runs::ResultSink& sink, runs::RunMonitor& monitor) {
     runs::continue_in_parameter(c, {param, omega, start, end}, sink, monitor);
   });
@@ -34,7 +35,9 @@ py::dict backbone(const CaseDefinition& c, int mode, double start, double end, c
 
 void bind_continuation(py::module_& m) {
   m.def("continuation", &continuation, py::arg("case"), py::arg("param"), py::arg("omega"), py::arg("start"), py::arg("end"),
-        py::arg("progress") = py::none(), "continuation in a named parameter at fixed omega: {branch, states, dof_states, special_points, special_states, dof_special_states, summary}");
+        py::arg("progress") = py::none(),
+        "continuation in a named parameter at fixed omega: {branch, states, dof_states, special_points, special_states, "
+        "dof_special_states, summary}");
   m.def("backbone", &backbone, py::arg("case"), py::arg("mode"), py::arg("start"), py::arg("end"), py::arg("progress") = py::none(),
         "nonlinear mode (EPMC) from the linear mode: {branch, states, dof_states, special_points, summary}");
 }

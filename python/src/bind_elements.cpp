@@ -21,8 +21,7 @@ using Eigen::MatrixXd;
 
 class PythonElement final : public NonlinearElement {
  public:
-  PythonElement(py::object force, bool uses_velocity, double step)
-      : force_(std::move(force)), uses_velocity_(uses_velocity), step_(step) {}
+  PythonElement(py::object force, bool uses_velocity, double step) : force_(std::move(force)), uses_velocity_(uses_velocity), step_(step) {}
   // The callable may be the last reference to Python objects: drop it with the GIL held.
   ~PythonElement() override {
     py::gil_scoped_acquire gil;
@@ -35,8 +34,8 @@ class PythonElement final : public NonlinearElement {
   }
   bool depends_on_velocity() const override { return uses_velocity_; }
 
-  void evaluate(const MatrixXd& x, const MatrixXd& v, double /*omega*/, const std::vector<double>& /*properties*/,
-                ElementResponse& out, bool want_property_derivatives) const override {
+  void evaluate(const MatrixXd& x, const MatrixXd& v, double /*omega*/, const std::vector<double>& /*properties*/, ElementResponse& out,
+                bool want_property_derivatives) const override {
     // The analyses run with the GIL released; a Python error becomes a C++ one here, with the
     // GIL still held for its cleanup.
     py::gil_scoped_acquire gil;

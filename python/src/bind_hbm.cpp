@@ -16,7 +16,8 @@ void bind_hbm(py::module_& m) {
                           std::to_string(hbm.unknowns()) + " (a result of another case?)");
         const Eigen::VectorXd full = hbm.expand(state.tail(hbm.unknowns()), state(0));
         py::dict out;
-        for (const OutputDof& o : c.outputs) out[py::str(o.name)] = dof_harmonics(full, c.model.dofs(), c.harmonic_balance.harmonics, o.dof);
+        for (const OutputDof& o : c.outputs)
+          out[py::str(o.name)] = dof_harmonics(full, c.model.dofs(), c.harmonic_balance.harmonics, o.dof);
         return out;
       },
       py::arg("case"), py::arg("state"),

@@ -9,8 +9,8 @@ namespace hbtrack::python {
 
 void bind_case(py::module_& m) {
   py::class_<CaseDefinition> case_class(m, "Case",
-                             "A study read from a case file: model, elements, parameters, harmonic balance, NFRC "
-                             "settings and outputs. Options are attributes named as the case file's keys.");
+                                        "A study read from a case file: model, elements, parameters, harmonic balance, NFRC "
+                                        "settings and outputs. Options are attributes named as the case file's keys.");
   case_class.def_readwrite("path", &CaseDefinition::path)
       .def_readwrite("harmonic_balance", &CaseDefinition::harmonic_balance)
       // The case file's [stability] section, which the NFRC options hold.
@@ -21,16 +21,18 @@ void bind_case(py::module_& m) {
       .def_property_readonly("mass", [](const CaseDefinition& c) { return c.model.mass; })
       .def_property_readonly("stiffness", [](const CaseDefinition& c) { return c.model.stiffness; })
       .def_property_readonly("damping", [](const CaseDefinition& c) { return c.model.damping; })
-      .def_property_readonly("outputs", [](const CaseDefinition& c) {
-        std::vector<std::string> names;
-        for (const auto& o : c.outputs) names.push_back(o.name);
-        return names;
-      })
+      .def_property_readonly("outputs",
+                             [](const CaseDefinition& c) {
+                               std::vector<std::string> names;
+                               for (const auto& o : c.outputs) names.push_back(o.name);
+                               return names;
+                             })
       .def_property_readonly(
           "parameters",
           [](const CaseDefinition& c) {
             py::dict out;
-            for (int i = 0; i < c.parameters.size(); ++i) out[py::str(c.parameters.names()[static_cast<size_t>(i)])] = c.parameters.value(i);
+            for (int i = 0; i < c.parameters.size(); ++i)
+              out[py::str(c.parameters.names()[static_cast<size_t>(i)])] = c.parameters.value(i);
             return out;
           },
           "named parameters {name: value} (a copy: change them with set_parameter)")

@@ -17,7 +17,8 @@ namespace {
 py::dict reduce_sparse(const Eigen::SparseMatrix<double>& mass, const Eigen::SparseMatrix<double>& stiffness,
                        const std::vector<std::array<int, 3>>& boundary, const std::vector<Eigen::MatrixXd>& frames, int modes) {
   if (!frames.empty() && frames.size() != boundary.size())
-    throw std::invalid_argument("frames: one per boundary node (" + std::to_string(boundary.size()) + "), got " + std::to_string(frames.size()));
+    throw std::invalid_argument("frames: one per boundary node (" + std::to_string(boundary.size()) + "), got " +
+                                std::to_string(frames.size()));
   std::vector<CraigBamptonBoundaryNode> nodes(boundary.size());
   for (size_t k = 0; k < boundary.size(); ++k) {
     nodes[k].dofs = boundary[k];
@@ -51,8 +52,7 @@ py::dict reduce(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, c
 void bind_model(py::module_& m) {
   // Frames arrive as dynamic-size matrices: pybind11's fixed-size 3x3 caster trips GCC 12's
   // -Wmaybe-uninitialized.
-  m.def("reduce", &reduce, py::arg("mass"), py::arg("stiffness"), py::arg("boundary"),
-        py::arg("frames") = std::vector<Eigen::MatrixXd>{},
+  m.def("reduce", &reduce, py::arg("mass"), py::arg("stiffness"), py::arg("boundary"), py::arg("frames") = std::vector<Eigen::MatrixXd>{},
         py::arg("modes") = 12, "Craig-Bampton reduction onto boundary node translations and fixed-interface modes");
   m.def("reduce_sparse", &reduce_sparse, py::arg("mass"), py::arg("stiffness"), py::arg("boundary"),
         py::arg("frames") = std::vector<Eigen::MatrixXd>{}, py::arg("modes") = 12, "reduce, from scipy.sparse M and K");

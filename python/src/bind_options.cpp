@@ -34,25 +34,25 @@ template <class T>
 py::class_<T> bind_options_class(py::module_& m, const char* name, const char* doc, const std::vector<std::string>& fields) {
   py::class_<T> cls(m, name, doc);
   cls.def(py::init([fields, name](const py::kwargs& kwargs) {
-            T options;
-            py::object self = py::cast(options);
-            for (const auto& [key, value] : kwargs) {
-              const std::string field = py::str(key);
-              if (std::find(fields.begin(), fields.end(), field) == fields.end()) {
-                std::string known;
-                for (const std::string& f : fields) known += (known.empty() ? "" : ", ") + f;
-                std::string message = name;
-                message += ": unknown option '";
-                message += field;
-                message += "' (known: ";
-                message += known;
-                message += ")";
-                throw py::type_error(message);
-              }
-              self.attr(field.c_str()) = value;
-            }
-            return self.cast<T>();
-          }))
+       T options;
+       py::object self = py::cast(options);
+       for (const auto& [key, value] : kwargs) {
+         const std::string field = py::str(key);
+         if (std::find(fields.begin(), fields.end(), field) == fields.end()) {
+           std::string known;
+           for (const std::string& f : fields) known += (known.empty() ? "" : ", ") + f;
+           std::string message = name;
+           message += ": unknown option '";
+           message += field;
+           message += "' (known: ";
+           message += known;
+           message += ")";
+           throw py::type_error(message);
+         }
+         self.attr(field.c_str()) = value;
+       }
+       return self.cast<T>();
+     }))
       .def("__repr__", [fields](const py::object& self) { return options_repr(self, fields); })
       .def("__eq__",
            [fields](const py::object& self, const py::object& other) {
@@ -109,7 +109,8 @@ void bind_options(py::module_& m) {
               o.harmonics = value.cast<int>();
             } else {
               const auto list = value.cast<std::vector<int>>();
-              if (list.empty()) throw py::value_error("harmonic_balance.harmonics: an empty list (give H, or the harmonics to balance, e.g. [1, 3, 5])");
+              if (list.empty())
+                throw py::value_error("harmonic_balance.harmonics: an empty list (give H, or the harmonics to balance, e.g. [1, 3, 5])");
               o.harmonic_list = list;
               o.harmonics = list.back();
               o.validate();  // a bad list is refused here, naming the rule

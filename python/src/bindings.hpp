@@ -38,7 +38,7 @@ py::object to_python(const nlohmann::json& document);
 struct Table {
   std::vector<std::string> header;
   std::vector<std::vector<double>> rows;
-  py::dict columns() const;  // {column name: 1-D float array}, as branch.csv's columns
+  py::dict columns() const;            // {column name: 1-D float array}, as branch.csv's columns
   py::array_t<double> matrix() const;  // rows x columns, as states.csv without its header
 };
 

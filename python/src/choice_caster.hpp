@@ -21,9 +21,7 @@ class type_caster<Choice> {
     value = hbtrack::parse_choice<Choice>(source.cast<std::string>());
     return true;
   }
-  static handle cast(Choice choice, return_value_policy /*policy*/, handle /*parent*/) {
-    return str(hbtrack::to_string(choice)).release();
-  }
+  static handle cast(Choice choice, return_value_policy /*policy*/, handle /*parent*/) { return str(hbtrack::to_string(choice)).release(); }
 };
 
 }  // namespace pybind11::detail

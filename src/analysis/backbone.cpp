@@ -22,13 +22,18 @@ void BackboneOptions::validate() const {
 EpmcProblem::EpmcProblem(const HarmonicBalance& hbm, const VectorXd& mode, double psi_scale, double omega_scale, double xi_scale,
                          double log_amplitude_scale, double residual_scale)
     : hbm_(hbm.with_parameter(hbm.amplitude_parameter(), 0.0)),
-      mode_m_(hbm.model().mass * mode), psi_scale_(psi_scale), omega_scale_(omega_scale), xi_scale_(xi_scale),
-      log_amplitude_scale_(log_amplitude_scale), residual_scale_(residual_scale) {
+      mode_m_(hbm.model().mass * mode),
+      psi_scale_(psi_scale),
+      omega_scale_(omega_scale),
+      xi_scale_(xi_scale),
+      log_amplitude_scale_(log_amplitude_scale),
+      residual_scale_(residual_scale) {
   if (hbm.retained_dofs() != hbm.model().dofs())
     throw std::invalid_argument("backbone: needs every dof as unknown (harmonic_balance.condensation = \"none\")");
   first_cosine_ = hbm.basis().cosine_index(1);
   if (first_cosine_ < 0 || hbm.subharmonic() != 1)
-    throw std::invalid_argument("backbone: needs harmonic 1 among harmonic_balance.harmonics (the mode's amplitude and phase are its), and subharmonic = 1");
+    throw std::invalid_argument(
+        "backbone: needs harmonic 1 among harmonic_balance.harmonics (the mode's amplitude and phase are its), and subharmonic = 1");
 }
 
 void EpmcProblem::mass_derivative(const VectorXd& psi, VectorXd& out) const {
@@ -141,8 +146,7 @@ BackboneResult compute_backbone(const HarmonicBalance& hbm, const BackboneOption
   // xi's unit: its linear value or a 1 % damping ratio (xi = 2 zeta omega), whichever is larger.
   const double xi_scale = std::max(std::abs(result.linear_xi), 0.02 * result.linear_omega);
   const double lambda0 = std::log10(options.amplitude_start), lambda1 = std::log10(options.amplitude_end);
-  EpmcProblem problem(hbm, phi, phi.cwiseAbs().maxCoeff(), result.linear_omega, xi_scale, lambda1 - lambda0,
-                      residual > 0 ? residual : 1.0);
+  EpmcProblem problem(hbm, phi, phi.cwiseAbs().maxCoeff(), result.linear_omega, xi_scale, lambda1 - lambda0, residual > 0 ? residual : 1.0);
   const auto& co = options.continuation;
   if (newton_at_fixed_parameter(problem, u0, lambda0, co.tolerance, 4 * co.max_iterations) < 0)
     throw std::runtime_error("Newton did not converge on the mode at amplitude " + std::to_string(options.amplitude_start) +

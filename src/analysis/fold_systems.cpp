@@ -31,8 +31,7 @@ void approximate_null_vectors(const MatrixXd& j, VectorXd& right, VectorXd& left
 }
 
 FoldSystem::FoldSystem(const HarmonicBalance& hbm, int parameter, const FoldScales& scales)
-    : hbm_(hbm), parameter_(parameter), linear_in_parameter_(parameter == hbm.amplitude_parameter()), scales_(scales),
-      q_(hbm.unknowns()) {
+    : hbm_(hbm), parameter_(parameter), linear_in_parameter_(parameter == hbm.amplitude_parameter()), scales_(scales), q_(hbm.unknowns()) {
   if (parameter < 0 || parameter >= hbm.parameters().size()) throw std::invalid_argument("fold: parameter index out of range");
   // The fold's second derivatives (adjoint products) need the element's own law.
   hbm.refuse_residual_elements("limit-point tracking");
@@ -54,16 +53,14 @@ void FoldSystem::evaluate_hbm(const VectorXd& x, double omega, double gamma, boo
   if (derivatives) e.r_gamma = hbm_.parameter_derivative(x, omega, parameter_);
 }
 
-void FoldSystem::parameter_derivative_change(const VectorXd& xs, double omega, double eps, const Evaluation& base,
-                                             VectorXd& out) {
+void FoldSystem::parameter_derivative_change(const VectorXd& xs, double omega, double eps, const Evaluation& base, VectorXd& out) {
   if (linear_in_parameter_)
     out.setZero(q_);
   else
     out = (hbm_.parameter_derivative(xs, omega, parameter_) - base.r_gamma) / eps;
 }
 
-void FoldSystem::along(const VectorXd& x, double omega, double gamma, const VectorXd& d, const Evaluation& base,
-                       SecondDerivatives& out) {
+void FoldSystem::along(const VectorXd& x, double omega, double gamma, const VectorXd& d, const Evaluation& base, SecondDerivatives& out) {
   const double eps = difference_step(x, d);
   const VectorXd xs = x + eps * d;
   hbm_.set_parameter(parameter_, gamma);
@@ -73,8 +70,8 @@ void FoldSystem::along(const VectorXd& x, double omega, double gamma, const Vect
   parameter_derivative_change(xs, omega, eps, base, out.r_gamma);
 }
 
-void FoldSystem::along_left(const VectorXd& x, double omega, double gamma, const VectorXd& d, const VectorXd& w,
-                            const Evaluation& base, LeftSecondDerivatives& out) {
+void FoldSystem::along_left(const VectorXd& x, double omega, double gamma, const VectorXd& d, const VectorXd& w, const Evaluation& base,
+                            LeftSecondDerivatives& out) {
   const double eps = difference_step(x, d);
   const VectorXd xs = x + eps * d;
   hbm_.set_parameter(parameter_, gamma);

@@ -23,9 +23,13 @@ StopReason FoldTrackingResult::stop_reason() const {
     switch (s.stop_reason) {
       case StopReason::reached_end:
       case StopReason::left_range:
-      case StopReason::closed: break;
-      case StopReason::max_points: capped = true; break;
-      default: return s.stop_reason;
+      case StopReason::closed:
+        break;
+      case StopReason::max_points:
+        capped = true;
+        break;
+      default:
+        return s.stop_reason;
     }
   }
   return closed ? StopReason::closed : capped ? StopReason::max_points : StopReason::completed;
@@ -38,8 +42,7 @@ bool FoldTrackingResult::success() const {
 
 namespace {
 
-std::unique_ptr<FoldSystem> make_fold_system(TrackingMethod method, const HarmonicBalance& hbm, int parameter,
-                                             const FoldScales& scales) {
+std::unique_ptr<FoldSystem> make_fold_system(TrackingMethod method, const HarmonicBalance& hbm, int parameter, const FoldScales& scales) {
   if (method == TrackingMethod::extended) return std::make_unique<ExtendedFoldSystem>(hbm, parameter, scales);
   return std::make_unique<BorderedFoldSystem>(hbm, parameter, scales);
 }
@@ -92,8 +95,8 @@ LocatedFold locate_fold(const HarmonicBalance& hbm, int parameter, const VectorX
 }
 
 FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
-                              const FoldTrackingOptions& options, const std::vector<OutputDof>& outputs,
-                              const FoldObserver& observer, const FoldTrackingRestart& restart) {
+                              const FoldTrackingOptions& options, const std::vector<OutputDof>& outputs, const FoldObserver& observer,
+                              const FoldTrackingRestart& restart) {
   options.validate();
   const double gamma0 = hbm.parameters().value(parameter);
   if (!(options.parameter_min <= gamma0 && gamma0 <= options.parameter_max))
@@ -128,7 +131,8 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
     if (resuming) leg_restart.resume_from = &resumed->continuation;
     if (restart.on_state)
       leg_restart.on_state = [&](const ContinuationState& state) {
-        restart.on_state(FoldTrackingState{leg, offset, result.curve_points(), state, system->borders(), slopes, result.legs, result.extrema});
+        restart.on_state(
+            FoldTrackingState{leg, offset, result.curve_points(), state, system->borders(), slopes, result.legs, result.extrema});
       };
     bool stopped = false;
     const ContinuationResult c = continue_within(
@@ -170,15 +174,14 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
 
 std::vector<IsolaCandidate> compute_isolas(const HarmonicBalance& caller, int parameter, double value,
                                            const std::vector<std::vector<FoldCurvePoint>>& curves, const FoldScales& scales,
-                                           const NfrcOptions& options, const std::vector<OutputDof>& outputs,
-                                           bool follow_branches, const RecordedObserver& observer) {
+                                           const NfrcOptions& options, const std::vector<OutputDof>& outputs, bool follow_branches,
+                                           const RecordedObserver& observer) {
   HarmonicBalance hbm = caller.with_parameter(parameter, value);
   // Two more digits than the branch needs, so that its continuation starts without a Newton
   // step at the limit point (where R_x is singular).
   FoldScales strict = scales;
   strict.force *= 1e-2;
-  const ParameterWindow window{std::min(options.omega_start, options.omega_end), std::max(options.omega_start, options.omega_end), 1,
-                               true};
+  const ParameterWindow window{std::min(options.omega_start, options.omega_end), std::max(options.omega_start, options.omega_end), 1, true};
   auto same_fold = [&](const VectorXd& xa, double wa, const VectorXd& xb, double wb) {
     const double size = std::max({xa.cwiseAbs().maxCoeff(), xb.cwiseAbs().maxCoeff(), scales.length});
     return std::abs(wa - wb) <= 1e-6 * std::abs(wb) && (xa - xb).cwiseAbs().maxCoeff() <= 1e-4 * size;
@@ -206,7 +209,8 @@ std::vector<IsolaCandidate> compute_isolas(const HarmonicBalance& caller, int pa
         if (other.status == "duplicate" || other.status == "failed") continue;
         if (same_fold(cand.start.x, cand.start.omega, other.start.x, other.start.omega)) cand.same_as = static_cast<int>(k);
         for (const SpecialPoint& sp : other.branch.continuation.special_points)
-          if (sp.type == "LP" && sp.located && same_fold(cand.start.x, cand.start.omega, sp.u, sp.lambda)) cand.same_as = static_cast<int>(k);
+          if (sp.type == "LP" && sp.located && same_fold(cand.start.x, cand.start.omega, sp.u, sp.lambda))
+            cand.same_as = static_cast<int>(k);
       }
       if (cand.same_as >= 0) {
         cand.status = "duplicate";

@@ -21,8 +21,8 @@ int sense_over_range(const NonlinearElement& e, const std::vector<double>& p, do
 
 }  // namespace
 
-std::vector<FrictionLoopGain> friction_loop_gains(const StructuralModel& model, const ElementList& elements,
-                                                  const ParameterValues& values, double omega_a, double omega_b) {
+std::vector<FrictionLoopGain> friction_loop_gains(const StructuralModel& model, const ElementList& elements, const ParameterValues& values,
+                                                  double omega_a, double omega_b) {
   std::vector<Coupled> coupled;
   for (size_t i = 0; i < elements.size(); ++i) {
     const NonlinearElement& e = *elements[i];

@@ -7,8 +7,7 @@
 namespace hbtrack {
 
 void NfrcOptions::validate() const {
-  if (!std::isfinite(omega_start) || omega_start < 0)
-    throw std::invalid_argument("continuation.omega_start: must be finite and >= 0");
+  if (!std::isfinite(omega_start) || omega_start < 0) throw std::invalid_argument("continuation.omega_start: must be finite and >= 0");
   if (!std::isfinite(omega_end) || omega_end < 0) throw std::invalid_argument("continuation.omega_end: must be finite and >= 0");
   if (omega_end == omega_start) throw std::invalid_argument("continuation.omega_end: must differ from omega_start");
   if (!std::isfinite(length_scale) || length_scale < 0) throw std::invalid_argument("continuation.length_scale: must be >= 0");
@@ -16,8 +15,7 @@ void NfrcOptions::validate() const {
   stability.validate();
 }
 
-RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,
-                           const std::vector<OutputDof>& outputs) {
+RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const std::vector<OutputDof>& outputs) {
   RecordedPoint p;
   p.omega = omega;
   p.harmonic_numbers = hbm.basis().harmonic_numbers();
@@ -28,7 +26,8 @@ RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, doubl
   for (const OutputDof& o : outputs) {
     p.outputs.push_back(output_values(full, hbm.model().dofs(), hbm.basis().harmonics(), o.dof, samples));
     // h1 is the harmonic at omega: basis harmonic nu (the extremes are over the whole period).
-    p.outputs.back().h1 = hbm.subharmonic() <= hbm.basis().harmonics() ? harmonic_magnitude(p.outputs.back().harmonics, hbm.subharmonic()) : 0.0;
+    p.outputs.back().h1 =
+        hbm.subharmonic() <= hbm.basis().harmonics() ? harmonic_magnitude(p.outputs.back().harmonics, hbm.subharmonic()) : 0.0;
   }
   return p;
 }
@@ -55,8 +54,8 @@ double force_scale(HarmonicBalance& hbm, double length_scale) {
   return hbm.model().stiffness.cwiseAbs().maxCoeff() * length_scale;
 }
 
-Eigen::VectorXd starting_guess(HarmonicBalance& hbm, ContinuationProblem& problem, double omega, double lambda,
-                               double tolerance, int max_iterations) {
+Eigen::VectorXd starting_guess(HarmonicBalance& hbm, ContinuationProblem& problem, double omega, double lambda, double tolerance,
+                               int max_iterations) {
   const Eigen::VectorXd linear = hbm.linear_solution(omega);
   Eigen::VectorXd trial = linear;
   if (newton_at_fixed_parameter(problem, trial, lambda, tolerance, max_iterations) >= 0) return linear;
@@ -70,24 +69,24 @@ NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const 
                                options.omega_end >= options.omega_start ? 1 : -1, false};
   Eigen::VectorXd guess;
   if (!restart.resume_from) {
-    const double reference = options.length_scale == 0 ? automatic_length_scale(hbm, options.omega_start, options.omega_end)
-                                                        : options.length_scale;
+    const double reference =
+        options.length_scale == 0 ? automatic_length_scale(hbm, options.omega_start, options.omega_end) : options.length_scale;
     NfrcProblem problem(hbm, reference, 1.0, force_scale(hbm, reference));
-    guess = starting_guess(hbm, problem, options.omega_start, options.omega_start, options.continuation.tolerance, 3 * options.continuation.max_iterations);
+    guess = starting_guess(hbm, problem, options.omega_start, options.omega_start, options.continuation.tolerance,
+                           3 * options.continuation.max_iterations);
   }
   return compute_branch(hbm, options, outputs, guess, options.omega_start, window, observer, restart);
 }
 
 NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
-                          const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window,
-                          const RecordedObserver& observer, const ContinuationRestart& restart) {
+                          const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window, const RecordedObserver& observer,
+                          const ContinuationRestart& restart) {
   options.validate();
   NfrcResult result;
   const bool adaptive = options.length_scale == 0;
   const double reference = adaptive ? automatic_length_scale(hbm, options.omega_start, options.omega_end) : options.length_scale;
   result.length_scale = adaptive ? 0.01 * reference : reference;
-  NfrcProblem problem(hbm, result.length_scale, std::abs(options.omega_end - options.omega_start),
-                      force_scale(hbm, reference), adaptive);
+  NfrcProblem problem(hbm, result.length_scale, std::abs(options.omega_end - options.omega_start), force_scale(hbm, reference), adaptive);
   FloquetMonitor monitor(hbm, options.stability);
   result.continuation = continue_within(
       problem, x0, omega0, window, options.continuation,
@@ -109,8 +108,8 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
   return result;
 }
 
-FixedFrequencySolution solve_at_frequency(HarmonicBalance& hbm, double omega, const std::vector<OutputDof>& outputs,
-                                          double tolerance, int max_iterations, const Eigen::VectorXd* guess) {
+FixedFrequencySolution solve_at_frequency(HarmonicBalance& hbm, double omega, const std::vector<OutputDof>& outputs, double tolerance,
+                                          int max_iterations, const Eigen::VectorXd* guess) {
   FixedFrequencySolution s;
   const double length = automatic_length_scale(hbm, omega, omega);
   NfrcProblem problem(hbm, length, std::max(omega, 1.0), force_scale(hbm, length));

@@ -8,15 +8,18 @@
 
 namespace hbtrack {
 
-ParameterProblem::ParameterProblem(const HarmonicBalance& hbm, int parameter, double omega, double length_scale,
-                                   double parameter_scale, double force_scale)
-    : hbm_(hbm), parameter_(parameter), omega_(omega), length_scale_(length_scale), parameter_scale_(parameter_scale),
+ParameterProblem::ParameterProblem(const HarmonicBalance& hbm, int parameter, double omega, double length_scale, double parameter_scale,
+                                   double force_scale)
+    : hbm_(hbm),
+      parameter_(parameter),
+      omega_(omega),
+      length_scale_(length_scale),
+      parameter_scale_(parameter_scale),
       force_scale_(force_scale) {
   if (parameter < 0 || parameter >= hbm.parameters().size()) throw std::invalid_argument("parameter index out of range");
 }
 
-void ParameterProblem::evaluate(const Eigen::VectorXd& u, double p, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
-                                Eigen::VectorXd* r_p) {
+void ParameterProblem::evaluate(const Eigen::VectorXd& u, double p, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, Eigen::VectorXd* r_p) {
   hbm_.set_parameter(parameter_, p);
   hbm_.evaluate(u, omega_, r, jacobian, nullptr);
   if (r_p) *r_p = hbm_.parameter_derivative(u, omega_, parameter_);

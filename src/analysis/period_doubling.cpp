@@ -8,7 +8,8 @@
 namespace hbtrack {
 
 HarmonicBalanceOptions period_doubled_options(const HarmonicBalanceOptions& o) {
-  if (o.subharmonic != 1) throw std::invalid_argument("period doubling: the system is already subharmonic (nu = " + std::to_string(o.subharmonic) + ")");
+  if (o.subharmonic != 1)
+    throw std::invalid_argument("period doubling: the system is already subharmonic (nu = " + std::to_string(o.subharmonic) + ")");
   std::vector<int> list;
   const std::vector<int> period_one = o.selected_harmonics();
   for (int k = 0; k <= 2 * o.harmonics; ++k) {
@@ -26,7 +27,8 @@ Eigen::VectorXd embed_in_subharmonic_basis(const FourierBasis& from, const Fouri
   const Eigen::VectorXd dense = from.to_dense(x, dofs);
   Eigen::VectorXd wide = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(dofs) * (2 * to.harmonics() + 1));
   for (int k : from.harmonic_numbers()) {
-    if (nu * k > to.harmonics()) throw std::invalid_argument("embed_in_subharmonic_basis: harmonic " + std::to_string(k) + " is beyond the target basis");
+    if (nu * k > to.harmonics())
+      throw std::invalid_argument("embed_in_subharmonic_basis: harmonic " + std::to_string(k) + " is beyond the target basis");
     if (k == 0) {
       wide.head(dofs) = dense.head(dofs);
     } else {

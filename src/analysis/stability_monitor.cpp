@@ -37,7 +37,8 @@ bool any_element_without_stepping(const HarmonicBalance& hbm) {
 }  // namespace
 
 bool hill_needs_cross_check(const HarmonicBalance& hbm, const FloquetResult& hill, const StabilityOptions& options) {
-  if (options.method != StabilityMethod::hill || options.cross_check == CrossCheck::off || hbm.model().dofs() > kCrossCheckDofs) return false;
+  if (options.method != StabilityMethod::hill || options.cross_check == CrossCheck::off || hbm.model().dofs() > kCrossCheckDofs)
+    return false;
   if (any_element_without_stepping(hbm)) return false;
   // Hysteretic (history) elements are not smooth either, and there Hill is worse than slow:
   // the harmonic balance linearises the hysteresis for periodic perturbations only (lambda = 0),

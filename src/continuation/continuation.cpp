@@ -36,17 +36,16 @@ bool ContinuationResult::success() const {
          summary.stop_reason == StopReason::closed;
 }
 
-ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
-                                   double lambda_end, const ContinuationOptions& options, const PointObserver& observer,
-                                   BranchMonitor* monitor) {
-  const ParameterWindow window{std::min(lambda_start, lambda_end), std::max(lambda_start, lambda_end),
-                               lambda_end >= lambda_start ? 1 : -1, false};
+ContinuationResult continue_branch(ContinuationProblem& problem, const VectorXd& u0, double lambda_start, double lambda_end,
+                                   const ContinuationOptions& options, const PointObserver& observer, BranchMonitor* monitor) {
+  const ParameterWindow window{std::min(lambda_start, lambda_end), std::max(lambda_start, lambda_end), lambda_end >= lambda_start ? 1 : -1,
+                               false};
   return continue_within(problem, u0, lambda_start, window, options, observer, monitor);
 }
 
-ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd& u0, double lambda_start,
-                                   const ParameterWindow& window, const ContinuationOptions& options,
-                                   const PointObserver& observer, BranchMonitor* monitor, const ContinuationRestart& restart) {
+ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd& u0, double lambda_start, const ParameterWindow& window,
+                                   const ContinuationOptions& options, const PointObserver& observer, BranchMonitor* monitor,
+                                   const ContinuationRestart& restart) {
   options.validate();
   if (!(window.lambda_min <= lambda_start && lambda_start <= window.lambda_max))
     throw std::invalid_argument("continuation: the start " + std::to_string(lambda_start) + " lies outside the parameter window");

@@ -56,8 +56,8 @@ bool ContinuationStepper::start(const VectorXd& u0, double lambda_start, BranchP
 void ContinuationStepper::resume(const ContinuationState& state) {
   const int m = s_.m;
   if (state.x.size() != m + 1 || state.tangent.size() != m + 1 || state.unknown_scale.size() != m)
-    throw std::invalid_argument("continuation: the state to resume from has " + std::to_string(state.x.size() - 1) + " unknowns, the problem " +
-                                std::to_string(m));
+    throw std::invalid_argument("continuation: the state to resume from has " + std::to_string(state.x.size() - 1) +
+                                " unknowns, the problem " + std::to_string(m));
   points_ = state.points;
   x_ = state.x;
   x_before_ = state.x_before;
@@ -90,8 +90,20 @@ ContinuationSummary ContinuationStepper::summary() const {
 }
 
 ContinuationState ContinuationStepper::state() const {
-  return ContinuationState{points_,         x_,          x_before_,    t_,           s_.su,        ds_, farthest_, previous_.values, previous_.bp_log_det,
-                           first_point_,    first_scale_, first_parameter_scale_, special_points_, summary()};
+  return ContinuationState{points_,
+                           x_,
+                           x_before_,
+                           t_,
+                           s_.su,
+                           ds_,
+                           farthest_,
+                           previous_.values,
+                           previous_.bp_log_det,
+                           first_point_,
+                           first_scale_,
+                           first_parameter_scale_,
+                           special_points_,
+                           summary()};
 }
 
 TestValues ContinuationStepper::test_values(const BranchPoint& p, const Tangent& tan) {

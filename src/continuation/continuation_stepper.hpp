@@ -36,8 +36,8 @@ class ContinuationStepper {
   Outcome step();
 
   int points() const { return points_; }  // accepted so far, by this run and the one resumed
-  ContinuationState state() const;         // everything the next step depends on
-  ContinuationSummary summary() const;     // counters so far (stop_reason and wall_s unset)
+  ContinuationState state() const;        // everything the next step depends on
+  ContinuationSummary summary() const;    // counters so far (stop_reason and wall_s unset)
   const std::vector<SpecialPoint>& special_points() const { return special_points_; }
 
  private:

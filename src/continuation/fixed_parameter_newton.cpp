@@ -73,8 +73,7 @@ int damped_newton(ContinuationProblem& problem, VectorXd& u, double lambda, doub
   return -1;
 }
 
-int fixed_parameter_newton(ContinuationProblem& problem, VectorXd& u, double lambda, double tolerance, int max_iterations,
-                           int& used) {
+int fixed_parameter_newton(ContinuationProblem& problem, VectorXd& u, double lambda, double tolerance, int max_iterations, int& used) {
   const VectorXd start = u;
   const int iterations = plain_newton(problem, u, lambda, tolerance, max_iterations, used);
   if (iterations >= 0 || !problem.has_corners()) return iterations;

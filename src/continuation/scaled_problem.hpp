@@ -157,8 +157,8 @@ struct Scaled {
   // and an O(m^3) factorization) as long as each step shrinks the error by options.contraction;
   // after a step that does not, the corrector goes on as Newton, from where that step started
   // when it made the error worse.
-  bool correct(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere,
-               const ContinuationOptions& options, int& iterations) {
+  bool correct(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere, const ContinuationOptions& options,
+               int& iterations) {
     newton_factors_current = false;
     const double plane_tolerance = 1e-8 * ds * std::max(1.0, ds);
     double last_error = std::numeric_limits<double>::infinity();

@@ -25,8 +25,8 @@ struct Locator {
   bool point_at(const VectorXd& x0, const VectorXd& t0, double arc, VectorXd& y, Tangent& tan);
   double value(size_t which, const VectorXd& y, const Tangent& tan, double reference_log_det);
   // Returns true and the located point when the iteration converged.
-  bool locate(size_t which, const VectorXd& x0, const VectorXd& t0, double f0, const VectorXd& x1, double f1,
-              double reference_log_det, VectorXd& y_out, Tangent& tan_out);
+  bool locate(size_t which, const VectorXd& x0, const VectorXd& t0, double f0, const VectorXd& x1, double f1, double reference_log_det,
+              VectorXd& y_out, Tangent& tan_out);
 };
 
 }  // namespace hbtrack::continuation_detail

@@ -14,18 +14,24 @@ ContactLawKind parse_contact_law(const std::string& name) {
 
 std::string to_string(ContactLawKind kind) {
   switch (kind) {
-    case ContactLawKind::penalty: return "penalty";
-    case ContactLawKind::polynomial: return "polynomial";
-    case ContactLawKind::sqrt: return "sqrt";
+    case ContactLawKind::penalty:
+      return "penalty";
+    case ContactLawKind::polynomial:
+      return "polynomial";
+    case ContactLawKind::sqrt:
+      return "sqrt";
   }
   return "?";
 }
 
 std::string smoothness_limit(ContactLawKind kind) {
   switch (kind) {
-    case ContactLawKind::penalty: return "law \"penalty\" is only C0";
-    case ContactLawKind::polynomial: return "law \"polynomial\" is only C1";
-    case ContactLawKind::sqrt: return "";
+    case ContactLawKind::penalty:
+      return "law \"penalty\" is only C0";
+    case ContactLawKind::polynomial:
+      return "law \"polynomial\" is only C1";
+    case ContactLawKind::sqrt:
+      return "";
   }
   return "";
 }

@@ -9,8 +9,7 @@ namespace hbtrack {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-CoulombSlider::CoulombSlider(int directions, double tangential_stiffness, double mu)
-    : d_(directions), kt_(tangential_stiffness), mu_(mu) {
+CoulombSlider::CoulombSlider(int directions, double tangential_stiffness, double mu) : d_(directions), kt_(tangential_stiffness), mu_(mu) {
   if (d_ < 1 || d_ > 2) throw std::invalid_argument("CoulombSlider: 1 or 2 tangential directions");
 }
 
@@ -84,7 +83,8 @@ void CoulombSlider::solve_period(const VectorXd& normal, const MatrixXd& x, cons
   }
   // Round-off of a pass: a few ulps of the largest quantity, per step.
   const double scale = x.cwiseAbs().maxCoeff() + mu_ * normal.maxCoeff() / kt_ + static_cast<double>(n) * drift.cwiseAbs().maxCoeff();
-  const double tolerance = 64 * std::numeric_limits<double>::epsilon() * std::max(scale, std::numeric_limits<double>::min()) * static_cast<double>(n);
+  const double tolerance =
+      64 * std::numeric_limits<double>::epsilon() * std::max(scale, std::numeric_limits<double>::min()) * static_cast<double>(n);
   constexpr int kMaxPasses = 200;
   for (int pass = 0;; ++pass) {
     SliderVector state = zeta;

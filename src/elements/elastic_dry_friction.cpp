@@ -16,8 +16,7 @@ ScalarElement::ScalarLaw ElasticDryFriction::law(double, double, const double*) 
 }
 
 void ElasticDryFriction::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& /*v*/, double /*omega*/,
-                                  const std::vector<double>& props, ElementResponse& out,
-                                  bool want_property_derivatives) const {
+                                  const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) const {
   const Eigen::VectorXd d = x * weights;
   JenkinsPeriod period;
   std::vector<Eigen::Triplet<double>> scalar_terms;  // d f(t) / d d(s)
@@ -49,8 +48,7 @@ void ElasticDryFriction::history_step(const Eigen::MatrixXd& x, const Eigen::Vec
   out.dstate_dstate = Eigen::MatrixXd::Constant(1, 1, s.dslider_dslider);
 }
 
-Eigen::MatrixXd ElasticDryFriction::periodic_history(const Eigen::MatrixXd& x, double /*omega*/,
-                                                     const std::vector<double>& props) const {
+Eigen::MatrixXd ElasticDryFriction::periodic_history(const Eigen::MatrixXd& x, double /*omega*/, const std::vector<double>& props) const {
   // The slider sits at d - f / k.
   const Eigen::VectorXd d = x * weights;
   JenkinsPeriod period;

@@ -11,24 +11,36 @@ namespace hbtrack {
 
 std::string to_string(PropertyRange range) {
   switch (range) {
-    case PropertyRange::any: return "";
-    case PropertyRange::positive: return "> 0";
-    case PropertyRange::nonnegative: return ">= 0";
-    case PropertyRange::nonzero: return "!= 0";
-    case PropertyRange::above_minus_one: return "> -1";
-    case PropertyRange::at_least_one: return ">= 1";
+    case PropertyRange::any:
+      return "";
+    case PropertyRange::positive:
+      return "> 0";
+    case PropertyRange::nonnegative:
+      return ">= 0";
+    case PropertyRange::nonzero:
+      return "!= 0";
+    case PropertyRange::above_minus_one:
+      return "> -1";
+    case PropertyRange::at_least_one:
+      return ">= 1";
   }
   return "";
 }
 
 bool admits(PropertyRange range, double value) {
   switch (range) {
-    case PropertyRange::any: return true;
-    case PropertyRange::positive: return value > 0;
-    case PropertyRange::nonnegative: return value >= 0;
-    case PropertyRange::nonzero: return value != 0;
-    case PropertyRange::above_minus_one: return value > -1;
-    case PropertyRange::at_least_one: return value >= 1;
+    case PropertyRange::any:
+      return true;
+    case PropertyRange::positive:
+      return value > 0;
+    case PropertyRange::nonnegative:
+      return value >= 0;
+    case PropertyRange::nonzero:
+      return value != 0;
+    case PropertyRange::above_minus_one:
+      return value > -1;
+    case PropertyRange::at_least_one:
+      return value >= 1;
   }
   return false;
 }
@@ -47,7 +59,14 @@ auto choice(const ElementSetup& setup, const std::string& key, Parse parse) {
   }
 }
 
-const ElementKey kContactLaw{"law", ElementKey::Kind::choice, {"polynomial", "penalty", "sqrt"}, "polynomial", 0, 0, "", "",
+const ElementKey kContactLaw{"law",
+                             ElementKey::Kind::choice,
+                             {"polynomial", "penalty", "sqrt"},
+                             "polynomial",
+                             0,
+                             0,
+                             "",
+                             "",
                              "the normal contact law: penalty (C0), polynomial (C1 blend over width), sqrt (smooth)"};
 
 PropertySpec stiffness(const std::string& name = "stiffness", const std::string& doc = "contact stiffness k") {
@@ -68,8 +87,8 @@ ElementBuild tip_contact(const ElementSetup& s) {
                   {"width", "F", Range::positive, {}, "regularisation half-width of the contact law"},
                   mu(),
                   {"radius", "L", Range::positive, {}, "radius of the tip node (casing speed = W radius)"},
-                  {"engine_order", "1", sliding ? Range::nonzero : Range::any, 1.0, "rotation speed W = engine_order omega + rotation_speed",
-                   sliding ? "its sign is the sense of rotation" : ""},
+                  {"engine_order", "1", sliding ? Range::nonzero : Range::any, 1.0,
+                   "rotation speed W = engine_order omega + rotation_speed", sliding ? "its sign is the sense of rotation" : ""},
                   {"rotation_speed", "rad/s", Range::any, 0.0, "the rotation speed that does not follow omega"}}};
   if (!sliding) b.properties.push_back(stiffness("tangential_stiffness", "stiffness of the stick-slip slider"));
   return b;
@@ -83,78 +102,145 @@ ElementBuild frictional_contact(const ElementSetup& s) {
                          stiffness("tangential_stiffness", "stiffness k_t of the Jenkins slider"),
                          mu(),
                          {"normal_preload", "F", Range::any, 0.0, "normal force at x_n = 0: N = max(0, preload + k_n x_n)"}}};
-  return ElementBuild{std::make_shared<FrictionalContact>(law),
-                      {mu(),
-                       {"epsilon", "F/L", Range::positive, {}, "penalty factor of the augmented Lagrangian (a convergence factor)"},
-                       gap()}};
+  return ElementBuild{
+      std::make_shared<FrictionalContact>(law),
+      {mu(), {"epsilon", "F/L", Range::positive, {}, "penalty factor of the augmented Lagrangian (a convergence factor)"}, gap()}};
 }
 
 std::vector<ElementType> make_catalog() {
   return {
-      {"cubic_spring", "f = cubic_stiffness d^3", true, {}, {},
+      {"cubic_spring",
+       "f = cubic_stiffness d^3",
+       true,
+       {},
+       {},
        [](const ElementSetup&) {
          return ElementBuild{std::make_shared<CubicSpring>(), {{"cubic_stiffness", "F/L^3", Range::any, {}, "k3 of f = k3 d^3"}}};
        }},
-      {"unilateral_spring", "f = stiffness max(0, d - gap) (penalty contact, C0)", true, {}, {},
+      {"unilateral_spring",
+       "f = stiffness max(0, d - gap) (penalty contact, C0)",
+       true,
+       {},
+       {},
        [](const ElementSetup&) {
          // width: the regularisation of the other contact laws, which the penalty law ignores.
          return ElementBuild{std::make_shared<GapContact>(ContactLawKind::penalty, "unilateral_spring"),
                              {stiffness(), gap(), {"width", "F", Range::any, 0.0, "ignored (the penalty law is not regularised)"}}};
        }},
-      {"regularized_contact", "f = stiffness max(0, d - gap), regularised over width by `law`", true, {}, {kContactLaw},
+      {"regularized_contact",
+       "f = stiffness max(0, d - gap), regularised over width by `law`",
+       true,
+       {},
+       {kContactLaw},
        [](const ElementSetup& s) {
          return ElementBuild{std::make_shared<GapContact>(choice(s, "law", parse_contact_law), "regularized_contact"),
                              {stiffness(), gap(), {"width", "F", Range::positive, {}, "regularisation half-width of the contact law"}}};
        }},
-      {"tanh_friction", "f = mu normal_load tanh(d' / regularization_velocity)", true, {}, {},
+      {"tanh_friction",
+       "f = mu normal_load tanh(d' / regularization_velocity)",
+       true,
+       {},
+       {},
        [](const ElementSetup&) {
          return ElementBuild{std::make_shared<TanhFriction>(),
                              {mu(),
                               {"normal_load", "F", Range::nonnegative, {}, "constant normal load N"},
                               {"regularization_velocity", "L/s", Range::positive, {}, "velocity over which the force saturates"}}};
        }},
-      {"polynomial_stiffness", "f_i = sum_m coefficients[m][i] prod_j x_j^exponents[m][j]", false, {},
+      {"polynomial_stiffness",
+       "f_i = sum_m coefficients[m][i] prod_j x_j^exponents[m][j]",
+       false,
+       {},
        {{"exponents", ElementKey::Kind::integer_rows, {}, "", 0, 64, "monomial", "exponent", "one row of exponents per monomial"},
-        {"coefficients", ElementKey::Kind::property_rows, {}, "", 0, 0, "monomial", "coefficient",
+        {"coefficients",
+         ElementKey::Kind::property_rows,
+         {},
+         "",
+         0,
+         0,
+         "monomial",
+         "coefficient",
          "one row per monomial, one bindable coefficient per dof"}},
        [](const ElementSetup& s) {
          // The properties coefficients[m][i] come as the rows of `coefficients`.
          return ElementBuild{std::make_shared<PolynomialStiffness>(s.integer_rows.at("exponents")), {}};
        }},
-      {"power_damper", "f = coefficient |d'|^exponent sign(d')", true, {}, {},
+      {"power_damper",
+       "f = coefficient |d'|^exponent sign(d')",
+       true,
+       {},
+       {},
        [](const ElementSetup&) {
          return ElementBuild{std::make_shared<PowerDamper>(),
                              {{"coefficient", "F (s/L)^exponent", Range::any, {}, "damping coefficient c"},
                               {"exponent", "1", Range::at_least_one, 2.0, "velocity exponent",
                                "the force derivative is unbounded at zero velocity below 1"}}};
        }},
-      {"elastic_dry_friction", "Jenkins element: a spring in series with a Coulomb slider, exact periodic stick-slip", true, {}, {},
+      {"elastic_dry_friction",
+       "Jenkins element: a spring in series with a Coulomb slider, exact periodic stick-slip",
+       true,
+       {},
+       {},
        [](const ElementSetup&) {
          return ElementBuild{std::make_shared<ElasticDryFriction>(),
                              {stiffness("stiffness", "stiffness of the spring in series with the slider"),
                               {"limit_force", "F", Range::nonnegative, {}, "slip force of the slider"}}};
        }},
-      {"frictional_contact", "normal contact with a Jenkins slider of limit mu N(t) on the tangential dof", false, {"normal", "tangential"},
-       {{"law", ElementKey::Kind::choice, {"penalty", "dlft"}, "penalty", 0, 0, "", "",
+      {"frictional_contact",
+       "normal contact with a Jenkins slider of limit mu N(t) on the tangential dof",
+       false,
+       {"normal", "tangential"},
+       {{"law",
+         ElementKey::Kind::choice,
+         {"penalty", "dlft"},
+         "penalty",
+         0,
+         0,
+         "",
+         "",
          "penalty contact and slider, or dlft (rigid contact and stick, Lagrange multipliers)"}},
        frictional_contact},
-      {"iwan", "Segalman's four-parameter Iwan joint: parallel Jenkins sliders with a power-law density", true, {},
+      {"iwan",
+       "Segalman's four-parameter Iwan joint: parallel Jenkins sliders with a power-law density",
+       true,
+       {},
        // Each slider costs a pass over the samples; beyond 1000 the discretisation error (second
        // order in the grid ratio) is far below any identified joint's.
-       {{"sliders", ElementKey::Kind::integer, {}, std::to_string(Iwan::kDefaultSliders), 2, 1000, "", "",
+       {{"sliders",
+         ElementKey::Kind::integer,
+         {},
+         std::to_string(Iwan::kDefaultSliders),
+         2,
+         1000,
+         "",
+         "",
          "number of discrete sliders (not bindable)"}},
        [](const ElementSetup& s) {
-         return ElementBuild{std::make_shared<Iwan>(s.integers.at("sliders")),
-                             {{"limit_force", "F", Range::positive, {}, "macro-slip force F_S"},
-                              stiffness("stiffness", "stuck stiffness K_T"),
-                              {"chi", "1", Range::above_minus_one, {}, "exponent of the slip-length density (micro-slip dissipation)",
-                               "the slider density phi^chi is not integrable at 0 otherwise"},
-                              {"beta", "1", Range::nonnegative, {}, "weight of the Dirac in the slip-length density: S = K_T beta / (1 + beta)"}}};
+         return ElementBuild{
+             std::make_shared<Iwan>(s.integers.at("sliders")),
+             {{"limit_force", "F", Range::positive, {}, "macro-slip force F_S"},
+              stiffness("stiffness", "stuck stiffness K_T"),
+              {"chi",
+               "1",
+               Range::above_minus_one,
+               {},
+               "exponent of the slip-length density (micro-slip dissipation)",
+               "the slider density phi^chi is not integrable at 0 otherwise"},
+              {"beta", "1", Range::nonnegative, {}, "weight of the Dirac in the slip-length density: S = K_T beta / (1 + beta)"}}};
        }},
-      {"tip_contact", "blade-tip/casing contact with friction, rotation speed engine_order omega + rotation_speed", false,
+      {"tip_contact",
+       "blade-tip/casing contact with friction, rotation speed engine_order omega + rotation_speed",
+       false,
        {"radial", "circumferential", "axial"},
        {kContactLaw,
-        {"friction", ElementKey::Kind::choice, {"sliding", "stick_slip"}, "sliding", 0, 0, "", "",
+        {"friction",
+         ElementKey::Kind::choice,
+         {"sliding", "stick_slip"},
+         "sliding",
+         0,
+         0,
+         "",
+         "",
          "permanent sliding, or a stick-slip slider carried by the casing"}},
        tip_contact},
   };

@@ -41,14 +41,15 @@ std::optional<FrictionCoupling> FrictionalContact::friction_coupling(const std::
   return FrictionCoupling{0, 1, props[kMu], props[kNormalStiffness], 0};
 }
 
-void FrictionalContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& /*v*/, double /*omega*/,
-                                 const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) const {
+void FrictionalContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& /*v*/, double /*omega*/, const std::vector<double>& props,
+                                 ElementResponse& out, bool want_property_derivatives) const {
   if (local_dofs() != 2 || x.cols() != 2) throw std::invalid_argument("frictional_contact: needs 2 dofs [normal, tangential]");
   if (law_ == ContactFormulation::dlft) throw std::logic_error("frictional_contact with law = \"dlft\" needs the linear residual");
   penalty_contact_period(x, props, out, want_property_derivatives);
 }
 
-void penalty_contact_period(const Eigen::MatrixXd& x, const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) {
+void penalty_contact_period(const Eigen::MatrixXd& x, const std::vector<double>& props, ElementResponse& out,
+                            bool want_property_derivatives) {
   out.residual_operator.reset();
   const Eigen::Index n = x.rows();
   Eigen::VectorXd normal(n), slope(n);

@@ -28,7 +28,8 @@ class ScaledSensitivity final : public HistorySensitivity {
 }  // namespace
 
 void FrictionalContact::evaluate_with_residual(const Eigen::MatrixXd& x, const Eigen::MatrixXd& r, double /*omega*/,
-                                               const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) const {
+                                               const std::vector<double>& props, ElementResponse& out,
+                                               bool want_property_derivatives) const {
   if (law_ != ContactFormulation::dlft) throw std::logic_error("frictional_contact: only law = \"dlft\" reads the linear residual");
   const double epsilon = props[kEpsilon];
   const Eigen::Index n = x.rows();
@@ -53,8 +54,8 @@ void FrictionalContact::evaluate_with_residual(const Eigen::MatrixXd& x, const E
   const Eigen::MatrixXd moved = penalty.history_operator->apply(shifts);
   out.dforce_dproperty.resize(n, 6);
   out.dforce_dproperty.middleCols(2 * kMu, 2) = penalty.dforce_dproperty.middleCols(2 * kPenaltyMu, 2);
-  out.dforce_dproperty.middleCols(2 * kEpsilon, 2) = penalty.dforce_dproperty.middleCols(2 * kNormalStiffness, 2) +
-                                                      penalty.dforce_dproperty.middleCols(2 * kTangentialStiffness, 2);
+  out.dforce_dproperty.middleCols(2 * kEpsilon, 2) =
+      penalty.dforce_dproperty.middleCols(2 * kNormalStiffness, 2) + penalty.dforce_dproperty.middleCols(2 * kTangentialStiffness, 2);
   for (int i = 0; i < 2; ++i) {
     out.dforce_dproperty.col(2 * kEpsilon + i) += moved.col(0).segment(i * n, n);
     out.dforce_dproperty.col(2 * kGap + i) = moved.col(1).segment(i * n, n);

@@ -75,8 +75,8 @@ namespace {
 // The slider's periodic state. A Dirac slider of zero stiffness (beta = 0) adds no force, but
 // its property derivatives need its stick-slip pattern, which its slip length phi_max fixes:
 // the pattern of a unit slider with that slip length.
-void slider_period(const Eigen::VectorXd& d, const SampledRange& range, double stiffness, double limit, double phi,
-                   JenkinsPeriod& out, std::vector<Eigen::Triplet<double>>& terms) {
+void slider_period(const Eigen::VectorXd& d, const SampledRange& range, double stiffness, double limit, double phi, JenkinsPeriod& out,
+                   std::vector<Eigen::Triplet<double>>& terms) {
   if (stiffness > 0) {
     jenkins_period(d, range, stiffness, limit, 1.0, out, terms);
     return;

@@ -2,8 +2,8 @@
 
 namespace hbtrack {
 
-void jenkins_period(const Eigen::VectorXd& d, const SampledRange& range, double stiffness, double limit, double scale,
-                    JenkinsPeriod& out, std::vector<Eigen::Triplet<double>>& terms) {
+void jenkins_period(const Eigen::VectorXd& d, const SampledRange& range, double stiffness, double limit, double scale, JenkinsPeriod& out,
+                    std::vector<Eigen::Triplet<double>>& terms) {
   const Eigen::Index n = d.size();
   out.force.resize(n);
   out.dforce_dstiffness.resize(n);

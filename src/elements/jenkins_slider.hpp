@@ -23,8 +23,8 @@ struct JenkinsPeriod {
 
 // The periodic steady state of the slider under the samples d. Appends scale * d f(t) / d d(s)
 // to `terms` as (t, s, value) (repeated entries are meant to be summed).
-void jenkins_period(const Eigen::VectorXd& d, const SampledRange& range, double stiffness, double limit, double scale,
-                    JenkinsPeriod& out, std::vector<Eigen::Triplet<double>>& terms);
+void jenkins_period(const Eigen::VectorXd& d, const SampledRange& range, double stiffness, double limit, double scale, JenkinsPeriod& out,
+                    std::vector<Eigen::Triplet<double>>& terms);
 
 // The scalar sensitivities d f(t) / d d(s) of a force w f along d = w.x, spread over the k dofs:
 // entry (t + N i, s + N j) = w_i w_j d f(t) / d d(s) of an (N k) x (N k) matrix.

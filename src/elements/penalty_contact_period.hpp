@@ -6,6 +6,7 @@
 
 namespace hbtrack {
 
-void penalty_contact_period(const Eigen::MatrixXd& x, const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives);
+void penalty_contact_period(const Eigen::MatrixXd& x, const std::vector<double>& props, ElementResponse& out,
+                            bool want_property_derivatives);
 
 }  // namespace hbtrack

@@ -24,8 +24,7 @@ PolynomialStiffness::PolynomialStiffness(Eigen::MatrixXi exponents) : exponents_
 }
 
 void PolynomialStiffness::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& /*v*/, double /*omega*/,
-                                   const std::vector<double>& props, ElementResponse& out,
-                                   bool want_property_derivatives) const {
+                                   const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) const {
   const Eigen::Index n = x.rows();
   const int k = local_dofs();
   const Eigen::Index monomials = exponents_.rows();

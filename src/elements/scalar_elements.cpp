@@ -5,9 +5,8 @@
 
 namespace hbtrack {
 
-void ScalarElement::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                             const std::vector<double>& props, ElementResponse& out,
-                             bool want_property_derivatives) const {
+void ScalarElement::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& props,
+                             ElementResponse& out, bool want_property_derivatives) const {
   const Eigen::Index n = x.rows();
   const int k = local_dofs();
   const int np = static_cast<int>(props.size());
@@ -19,8 +18,14 @@ void ScalarElement::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v,
   const double dh_dv = averaged ? std::numbers::pi / (omega * static_cast<double>(n)) : 0.0;
   out.force.resize(n, k);
   out.dforce_dx.resize(n, k * k);
-  if (with_v) out.dforce_dv.resize(n, k * k); else out.dforce_dv.resize(0, 0);
-  if (averaged) out.dforce_domega.resize(n, k); else out.dforce_domega.resize(0, 0);
+  if (with_v)
+    out.dforce_dv.resize(n, k * k);
+  else
+    out.dforce_dv.resize(0, 0);
+  if (averaged)
+    out.dforce_domega.resize(n, k);
+  else
+    out.dforce_domega.resize(0, 0);
   if (want_property_derivatives) out.dforce_dproperty.resize(n, k * np);
   for (Eigen::Index t = 0; t < n; ++t) {
     double d = 0, dd = 0;
@@ -99,12 +104,9 @@ bool GapContact::sample_mean_law(double d, double h, const double* p, ScalarLaw&
   return true;
 }
 
-int GapContact::switching_surfaces(const std::vector<double>& p) const {
-  return kind_ == ContactLawKind::penalty || p[2] <= 0.0 ? 1 : 0;
-}
+int GapContact::switching_surfaces(const std::vector<double>& p) const { return kind_ == ContactLawKind::penalty || p[2] <= 0.0 ? 1 : 0; }
 
-void GapContact::switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd&, const std::vector<double>& p,
-                                  double* out) const {
+void GapContact::switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd&, const std::vector<double>& p, double* out) const {
   out[0] = x.row(0).dot(weights) - p[1];
 }
 

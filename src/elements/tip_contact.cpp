@@ -19,10 +19,9 @@ TipFriction parse_tip_friction(const std::string& name) {
 std::string to_string(TipFriction friction) { return friction == TipFriction::sliding ? "sliding" : "stick_slip"; }
 
 const std::vector<std::string>& TipContact::property_names() const {
-  static const std::vector<std::string> sliding{"stiffness", "clearance",    "width",         "mu",
-                                                "radius",    "engine_order", "rotation_speed"};
-  static const std::vector<std::string> stick_slip{"stiffness",    "clearance",      "width", "mu", "radius",
-                                                   "engine_order", "rotation_speed", "tangential_stiffness"};
+  static const std::vector<std::string> sliding{"stiffness", "clearance", "width", "mu", "radius", "engine_order", "rotation_speed"};
+  static const std::vector<std::string> stick_slip{"stiffness", "clearance",    "width",          "mu",
+                                                   "radius",    "engine_order", "rotation_speed", "tangential_stiffness"};
   return friction_ == TipFriction::sliding ? sliding : stick_slip;
 }
 
@@ -37,8 +36,7 @@ int TipContact::switching_surfaces(const std::vector<double>& p) const {
   return kind_ == ContactLawKind::penalty || p[kWidth] <= 0.0 ? 1 : 0;
 }
 
-void TipContact::switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd&, const std::vector<double>& p,
-                                  double* out) const {
+void TipContact::switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd&, const std::vector<double>& p, double* out) const {
   out[0] = x(0, kR) - p[kClearance];
 }
 
@@ -59,9 +57,8 @@ void TipContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, do
   evaluate_sliding(x, v, omega, p, out, want_property_derivatives);
 }
 
-void TipContact::evaluate_sliding(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                                  const std::vector<double>& p, ElementResponse& out,
-                                  bool want_property_derivatives) const {
+void TipContact::evaluate_sliding(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& p,
+                                  ElementResponse& out, bool want_property_derivatives) const {
   const Eigen::Index n = x.rows();
   constexpr int k = 3;
   out.force.setZero(n, k);

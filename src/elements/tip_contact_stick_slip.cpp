@@ -85,8 +85,8 @@ void TipContact::evaluate_stick_slip(const Eigen::MatrixXd& x, double omega, con
   out.history_operator = std::make_shared<ContactSliderSensitivity>(std::move(slider), std::move(slope));
 }
 
-void TipContact::history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
-                              const std::vector<double>& p, HistoryStep& out) const {
+void TipContact::history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega, const std::vector<double>& p,
+                              HistoryStep& out) const {
   if (friction_ != TipFriction::stick_slip) {
     NonlinearElement::history_step(x, state, dt, omega, p, out);
     return;

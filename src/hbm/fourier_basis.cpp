@@ -42,8 +42,8 @@ FourierBasis::FourierBasis(std::vector<int> harmonic_numbers, int samples)
   }
   harmonics_ = numbers_.back();
   if (samples < 2 * harmonics_ + 1)
-    throw std::invalid_argument("samples must be >= 2*harmonics+1 = " + std::to_string(2 * harmonics_ + 1) +
-                                ", got " + std::to_string(samples));
+    throw std::invalid_argument("samples must be >= 2*harmonics+1 = " + std::to_string(2 * harmonics_ + 1) + ", got " +
+                                std::to_string(samples));
   build();
 }
 
@@ -107,7 +107,10 @@ Eigen::VectorXd FourierBasis::from_dense(const Eigen::VectorXd& dense, int dofs)
 
 void FourierBasis::product_matrix(const double* g, Eigen::Ref<Eigen::MatrixXd> out) const {
   // A(m), B(m): cosine and sine coefficients of g, with A(-m) = A(m), B(-m) = -B(m).
-  auto A = [g](int m) { m = m < 0 ? -m : m; return m == 0 ? g[0] : g[2 * m - 1]; };
+  auto A = [g](int m) {
+    m = m < 0 ? -m : m;
+    return m == 0 ? g[0] : g[2 * m - 1];
+  };
   auto B = [g](int m) {
     if (m == 0) return 0.0;
     return m > 0 ? g[2 * m] : -g[-2 * m];

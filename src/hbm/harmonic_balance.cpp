@@ -426,4 +426,3 @@ VectorXd HarmonicBalanceSystem::linear_omega_derivative(HarmonicBalanceWorkspace
 }
 
 }  // namespace hbtrack
-

@@ -15,8 +15,9 @@ using Eigen::VectorXd;
 void HarmonicBalanceSystem::refuse_residual_elements(const std::string& analysis) const {
   for (const auto& e : elements_)
     if (e->uses_linear_residual())
-      throw std::invalid_argument(analysis + " does not support element " + e->type() +
-                                  " with law = \"dlft\" (its forces are Lagrange multipliers of the harmonic balance): use law = \"penalty\"");
+      throw std::invalid_argument(
+          analysis + " does not support element " + e->type() +
+          " with law = \"dlft\" (its forces are Lagrange multipliers of the harmonic balance): use law = \"penalty\"");
 }
 
 VectorXd HarmonicBalanceSystem::linear_residual(const ParameterValues& p, HarmonicBalanceWorkspace& ws, const VectorXd& x,

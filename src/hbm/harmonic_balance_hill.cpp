@@ -40,7 +40,8 @@ void HarmonicBalanceSystem::hill_matrices(const ParameterValues& p, HarmonicBala
     damping.block(a, b, n, n) = 2.0 * w * j * model_.mass;
     damping.block(b, a, n, n) = -2.0 * w * j * model_.mass;
   }
-  add_hill_element_blocks(p, ws, x, omega, n, [](int dof) { return dof; }, jacobian, damping);
+  add_hill_element_blocks(
+      p, ws, x, omega, n, [](int dof) { return dof; }, jacobian, damping);
 }
 
 void HarmonicBalanceSystem::hill_element_blocks(const ParameterValues& p, HarmonicBalanceWorkspace& ws, const VectorXd& x, double omega,

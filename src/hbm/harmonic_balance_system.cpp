@@ -44,7 +44,8 @@ void HarmonicBalanceOptions::validate() const {
   if (!harmonic_list.empty()) {
     const std::string got = ", got " + list_text(harmonic_list);
     for (size_t i = 0; i < harmonic_list.size(); ++i) {
-      if (harmonic_list[i] < 0) throw std::invalid_argument("harmonic_balance.harmonics: a list of harmonics must hold integers >= 0" + got);
+      if (harmonic_list[i] < 0)
+        throw std::invalid_argument("harmonic_balance.harmonics: a list of harmonics must hold integers >= 0" + got);
       if (i > 0 && harmonic_list[i] <= harmonic_list[i - 1])
         throw std::invalid_argument("harmonic_balance.harmonics: a list of harmonics must be sorted and unique (increasing)" + got);
     }
@@ -57,8 +58,8 @@ void HarmonicBalanceOptions::validate() const {
   if (harmonics < 1) throw std::invalid_argument("harmonic_balance.harmonics: must be >= 1, got " + std::to_string(harmonics));
   if (harmonics > 500) throw std::invalid_argument("harmonic_balance.harmonics: must be <= 500, got " + std::to_string(harmonics));
   if (samples != 0 && samples < 2 * harmonics + 1)
-    throw std::invalid_argument("harmonic_balance.samples: must be >= 2*harmonics+1 = " + std::to_string(2 * harmonics + 1) +
-                                ", got " + std::to_string(samples));
+    throw std::invalid_argument("harmonic_balance.samples: must be >= 2*harmonics+1 = " + std::to_string(2 * harmonics + 1) + ", got " +
+                                std::to_string(samples));
   if (samples > (1 << 20)) throw std::invalid_argument("harmonic_balance.samples: must be <= 1048576");
 }
 
@@ -117,7 +118,8 @@ HarmonicBalanceSystem::HarmonicBalanceSystem(StructuralModel model, ElementList 
   }
   if (method == Condensation::modal) {
     if (!modes_diagonalise_damping(model_))
-      throw std::invalid_argument("harmonic_balance.condensation: 'modal' needs damping diagonalised by the normal modes and K > 0; use 'schur'");
+      throw std::invalid_argument(
+          "harmonic_balance.condensation: 'modal' needs damping diagonalised by the normal modes and K > 0; use 'schur'");
     condenser_ = make_modal_condenser(linear_model, retained_, options_.harmonics);
   } else {
     condenser_ = make_schur_condenser(linear_model, retained_, options_.harmonics);
@@ -133,8 +135,9 @@ HarmonicBalanceSystem::HarmonicBalanceSystem(StructuralModel model, ElementList 
     for (size_t o = 0; o < elements_.size(); ++o)
       for (int d : elements_[o]->dofs)
         if (o != e && std::find(elements_[e]->dofs.begin(), elements_[e]->dofs.end(), d) != elements_[e]->dofs.end())
-          throw std::invalid_argument("element " + elements_[e]->type() + " reads the linear residual (DLFT) at dof " + model_.dof_names[static_cast<size_t>(d)] +
-                                      ", which another element (" + elements_[o]->type() + ") also acts on");
+          throw std::invalid_argument("element " + elements_[e]->type() + " reads the linear residual (DLFT) at dof " +
+                                      model_.dof_names[static_cast<size_t>(d)] + ", which another element (" + elements_[o]->type() +
+                                      ") also acts on");
   }
   slots_.resize(elements_.size());
   for (size_t e = 0; e < elements_.size(); ++e) {
@@ -162,6 +165,5 @@ void HarmonicBalanceSystem::check(const ParameterValues& p, const HarmonicBalanc
     throw std::logic_error("HarmonicBalanceSystem: " + std::to_string(p.size()) + " parameter values for " +
                            std::to_string(parameters_.size()) + " parameters");
 }
-
 
 }  // namespace hbtrack

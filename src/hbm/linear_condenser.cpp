@@ -90,7 +90,7 @@ class SchurCondenser final : public LinearCondenser {
       VectorXcd fr = subvector(forcing_[s], retained_);
       if (!linear_.empty()) {
         at.lu[s].compute(submatrix(z, linear_, linear_));
-        at.coupling[s] = at.lu[s].solve(submatrix(z, linear_, retained_));      // Z_ll^-1 Z_lr
+        at.coupling[s] = at.lu[s].solve(submatrix(z, linear_, retained_));        // Z_ll^-1 Z_lr
         at.linear_response[s] = at.lu[s].solve(subvector(forcing_[s], linear_));  // Z_ll^-1 F_l
         const MatrixXcd zrl = submatrix(z, retained_, linear_);
         zrr.noalias() -= zrl * at.coupling[s];
@@ -148,8 +148,7 @@ class ModalCondenser final : public LinearCondenser {
   VectorXcd receptance_diagonal(int j, double omega) const {
     const double w = j * omega;
     VectorXcd d(frequencies_.size());
-    for (Eigen::Index r = 0; r < d.size(); ++r)
-      d(r) = 1.0 / cd(frequencies_(r) * frequencies_(r) - w * w, w * modal_damping_(r));
+    for (Eigen::Index r = 0; r < d.size(); ++r) d(r) = 1.0 / cd(frequencies_(r) * frequencies_(r) - w * w, w * modal_damping_(r));
     return d;
   }
 
@@ -173,8 +172,7 @@ class ModalCondenser final : public LinearCondenser {
     const VectorXcd& d = at.modal_receptance[s];
     // d/domega of 1/(w_r^2 - (j w)^2 + i j w c_r)
     VectorXcd dd(d.size());
-    for (Eigen::Index r = 0; r < d.size(); ++r)
-      dd(r) = -d(r) * d(r) * cd(-2.0 * j * j * at.omega, j * modal_damping_(r));
+    for (Eigen::Index r = 0; r < d.size(); ++r) dd(r) = -d(r) * d(r) * cd(-2.0 * j * j * at.omega, j * modal_damping_(r));
     const MatrixXcd& zr = at.reduced_stiffness[s];
     const VectorXcd u = zr * (z - amplitude * at.retained_forced_response[s]);  // = -g at a solution
     const VectorXcd dh_u = retained_shapes_.cast<cd>() * dd.cwiseProduct(retained_shapes_.transpose().cast<cd>() * u);
@@ -209,13 +207,11 @@ bool modes_diagonalise_damping(const StructuralModel& model) {
   return modal_c.cwiseAbs().maxCoeff() <= 1e-10 * std::max(scale, 1e-300);
 }
 
-std::unique_ptr<LinearCondenser> make_schur_condenser(const StructuralModel& model, std::vector<int> retained,
-                                                      int harmonics) {
+std::unique_ptr<LinearCondenser> make_schur_condenser(const StructuralModel& model, std::vector<int> retained, int harmonics) {
   return std::make_unique<SchurCondenser>(model, std::move(retained), harmonics);
 }
 
-std::unique_ptr<LinearCondenser> make_modal_condenser(const StructuralModel& model, std::vector<int> retained,
-                                                      int harmonics) {
+std::unique_ptr<LinearCondenser> make_modal_condenser(const StructuralModel& model, std::vector<int> retained, int harmonics) {
   return std::make_unique<ModalCondenser>(model, std::move(retained), harmonics);
 }
 

@@ -129,12 +129,17 @@ class NodeDeckReader {
     if (f.empty() || f.size() > 4) fail(path, line, "a *NODE line is 'id, x, y, z', got " + std::to_string(f.size()) + " fields");
     CalculixNode node;
     const auto [end, error] = std::from_chars(f[0].data(), f[0].data() + f[0].size(), node.id);
-    if (error != std::errc() || end != f[0].data() + f[0].size() || node.id < 1) fail(path, line, "node id '" + f[0] + "' must be an integer >= 1");
+    if (error != std::errc() || end != f[0].data() + f[0].size() || node.id < 1)
+      fail(path, line, "node id '" + f[0] + "' must be an integer >= 1");
     for (size_t d = 1; d < f.size(); ++d)
       if (!parse_number(f[d], node.position(static_cast<Eigen::Index>(d - 1))))
-        fail(path, line, "coordinate " + std::string(1, "xyz"[d - 1]) + " of node " + std::to_string(node.id) + " must be a finite number, got '" + f[d] + "'");
+        fail(path, line,
+             "coordinate " + std::string(1, "xyz"[d - 1]) + " of node " + std::to_string(node.id) + " must be a finite number, got '" +
+                 f[d] + "'");
     if (const auto seen = defined_at_.find(node.id); seen != defined_at_.end())
-      fail(path, line, "node " + std::to_string(node.id) + " is already defined at " + seen->second.path + ": line " + std::to_string(seen->second.line));
+      fail(path, line,
+           "node " + std::to_string(node.id) + " is already defined at " + seen->second.path + ": line " +
+               std::to_string(seen->second.line));
     defined_at_.emplace(node.id, Where{path, line});
     nodes.push_back(node);
   }

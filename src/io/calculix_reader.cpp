@@ -75,8 +75,9 @@ std::vector<CalculixDof> read_calculix_dof_map(const std::string& path) {
     if (dof.direction < 0 || dof.direction > 6) fail(path, line, "direction must be 0 to 6 (1-3: x, y, z)");
     const std::int64_t key = std::int64_t{dof.node} * 8 + dof.direction;
     if (const auto seen = first_line.find(key); seen != first_line.end())
-      fail(path, line, "dof " + std::to_string(dof.node) + "." + std::to_string(dof.direction) + " already listed on line " +
-                           std::to_string(seen->second));
+      fail(path, line,
+           "dof " + std::to_string(dof.node) + "." + std::to_string(dof.direction) + " already listed on line " +
+               std::to_string(seen->second));
     first_line.emplace(key, line);
     dofs.push_back(dof);
   }
@@ -112,7 +113,8 @@ Eigen::SparseMatrix<double> read_calculix_matrix(const std::string& path, int ro
     }
     const std::int64_t key = (std::int64_t{row} << 31) + column;
     if (const auto seen = first_line.find(key); seen != first_line.end())
-      fail(path, line, "duplicate entry (" + std::to_string(row) + ", " + std::to_string(column) + "), first on line " + std::to_string(seen->second));
+      fail(path, line,
+           "duplicate entry (" + std::to_string(row) + ", " + std::to_string(column) + "), first on line " + std::to_string(seen->second));
     first_line.emplace(key, line);
     largest = std::max({largest, row, column});
     entries.emplace_back(row - 1, column - 1, value);

@@ -13,13 +13,11 @@ namespace hbtrack {
 namespace {
 
 // A line of a names file, quoted in an error: at most 60 characters.
-std::string quoted(std::string_view line) {
-  return "'" + std::string(line.substr(0, 60)) + (line.size() > 60 ? "...'" : "'");
-}
+std::string quoted(std::string_view line) { return "'" + std::string(line.substr(0, 60)) + (line.size() > 60 ? "...'" : "'"); }
 
 // One name per line; blank lines and `#` comments (whole lines or after a name) are skipped.
-std::vector<std::string> names_from_text(const CaseReader& in, const toml::value& where, const std::string& field,
-                                         const std::string& path, const std::string& text) {
+std::vector<std::string> names_from_text(const CaseReader& in, const toml::value& where, const std::string& field, const std::string& path,
+                                         const std::string& text) {
   if (const std::size_t bad = first_invalid_utf8(text); bad != std::string_view::npos)
     in.fail(&where, field, path + ": not valid UTF-8 (byte " + std::to_string(bad) + ")");
   std::vector<std::string> names;
@@ -36,15 +34,17 @@ std::vector<std::string> names_from_text(const CaseReader& in, const toml::value
     name = name.substr(first, name.find_last_not_of(" \t\r") + 1 - first);
     for (const char ch : name)
       if (static_cast<unsigned char>(ch) <= 0x20 || ch == 0x7f)
-        in.fail(&where, field, path + ":" + std::to_string(line) + ": " + quoted(name) + " is not one name (one name per line, without blanks or control characters)");
+        in.fail(&where, field,
+                path + ":" + std::to_string(line) + ": " + quoted(name) +
+                    " is not one name (one name per line, without blanks or control characters)");
     names.emplace_back(name);
   }
   return names;
 }
 
 // The "dof_names" array of a summary.json written by `hbtrack reduce`.
-std::vector<std::string> names_from_json(const CaseReader& in, const toml::value& where, const std::string& field,
-                                         const std::string& path, const std::string& text) {
+std::vector<std::string> names_from_json(const CaseReader& in, const toml::value& where, const std::string& field, const std::string& path,
+                                         const std::string& text) {
   try {
     // The JSON parser recurses once per bracket, as the TOML one: same limit.
     check_toml_nesting(text, path);
@@ -55,7 +55,8 @@ std::vector<std::string> names_from_json(const CaseReader& in, const toml::value
   if (j.is_discarded()) in.fail(&where, field, path + ": not valid JSON");
   const auto names = j.is_object() ? j.find("dof_names") : j.end();
   if (!j.is_object() || names == j.end() || !names->is_array())
-    in.fail(&where, field, path + ": no \"dof_names\" array (expected the summary.json of hbtrack reduce, or a .txt file with one name per line)");
+    in.fail(&where, field,
+            path + ": no \"dof_names\" array (expected the summary.json of hbtrack reduce, or a .txt file with one name per line)");
   std::vector<std::string> out;
   for (std::size_t i = 0; i < names->size(); ++i) {
     if (!(*names)[i].is_string()) in.fail(&where, field, path + ": dof_names[" + std::to_string(i) + "] is not a string");
@@ -96,7 +97,8 @@ std::string column_name_problem(const std::string& what, const std::string& name
       shown += ch;
     }
   }
-  if (bad) return what + " " + quoted(std::string_view(shown)) + " holds a comma, a double quote or a control character (it heads CSV columns)";
+  if (bad)
+    return what + " " + quoted(std::string_view(shown)) + " holds a comma, a double quote or a control character (it heads CSV columns)";
   return "";
 }
 
@@ -112,7 +114,8 @@ std::vector<std::string> read_dof_names(const CaseReader& in, const toml::value&
   std::vector<std::string> names;
   if (dofs.is_table()) {
     names = names_from_file(in, dofs, field);
-    if (names.empty()) in.fail(&dofs.at("file"), field + ".file", "names no dof (one name per line; blank lines and # comments are skipped)");
+    if (names.empty())
+      in.fail(&dofs.at("file"), field + ".file", "names no dof (one name per line; blank lines and # comments are skipped)");
   } else if (dofs.is_string() || dofs.is_array()) {
     names = in.strings(dofs, field);
     if (names.empty()) in.fail(&dofs, field, "needs at least one dof name");

@@ -33,7 +33,8 @@ Eigen::MatrixXi integer_rows(const CaseReader& in, const toml::value& e, const E
     if (static_cast<Eigen::Index>(row.size()) != out.cols())
       in.fail(&rows[m], row_field, "every row needs the same length (one " + key.entry + " per dof)");
     for (size_t j = 0; j < row.size(); ++j)
-      out(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(j)) = bounded_integer(in, row[j], key, row_field + "[" + std::to_string(j) + "]");
+      out(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(j)) =
+          bounded_integer(in, row[j], key, row_field + "[" + std::to_string(j) + "]");
   }
   return out;
 }
@@ -45,10 +46,17 @@ ElementSetup read_setup(const CaseReader& in, const toml::value& e, const Elemen
     const toml::value* v = in.find(e, key.name);
     const std::string key_field = field + "." + key.name;
     switch (key.kind) {
-      case ElementKey::Kind::choice: setup.choices[key.name] = v ? in.string(*v, key_field) : key.fallback; break;
-      case ElementKey::Kind::integer: setup.integers[key.name] = v ? bounded_integer(in, *v, key, key_field) : std::stoi(key.fallback); break;
-      case ElementKey::Kind::integer_rows: setup.integer_rows[key.name] = integer_rows(in, e, key, key_field); break;
-      case ElementKey::Kind::property_rows: break;  // properties: read once the dofs are known
+      case ElementKey::Kind::choice:
+        setup.choices[key.name] = v ? in.string(*v, key_field) : key.fallback;
+        break;
+      case ElementKey::Kind::integer:
+        setup.integers[key.name] = v ? bounded_integer(in, *v, key, key_field) : std::stoi(key.fallback);
+        break;
+      case ElementKey::Kind::integer_rows:
+        setup.integer_rows[key.name] = integer_rows(in, e, key, key_field);
+        break;
+      case ElementKey::Kind::property_rows:
+        break;  // properties: read once the dofs are known
     }
   }
   return setup;
@@ -110,8 +118,9 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
     const ElementType* type = find_element_type(type_name);
     if (!type) {
       const std::string guess = nearest(type_name, types);
-      in.fail(&type_value, field + ".type", "unknown element type '" + type_name + "'" +
-                                                 (guess.empty() ? " (expected one of: " + join(types) + ")" : " (did you mean '" + guess + "'?)"));
+      in.fail(&type_value, field + ".type",
+              "unknown element type '" + type_name + "'" +
+                  (guess.empty() ? " (expected one of: " + join(types) + ")" : " (did you mean '" + guess + "'?)"));
     }
     const ElementSetup setup = read_setup(in, e, *type, field);
     // Templates are expanded before the overrides: only `--set elements[i].nodes=...` gets here.
@@ -151,7 +160,8 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
       const std::string key_field = field + "." + key.name;
       if (key.kind == ElementKey::Kind::integer_rows) {
         const Eigen::MatrixXi& m = setup.integer_rows.at(key.name);
-        if (m.cols() != k) in.fail(&e.at(key.name), key_field, "expected one " + key.entry + " per dof (" + std::to_string(k) + ") in each row");
+        if (m.cols() != k)
+          in.fail(&e.at(key.name), key_field, "expected one " + key.entry + " per dof (" + std::to_string(k) + ") in each row");
         rows = m.rows();
       } else if (key.kind == ElementKey::Kind::property_rows) {
         read_property_rows(in, e, key, key_field, c, element, rows);

@@ -82,7 +82,8 @@ void read_damping(const CaseReader& in, const toml::value& root, CaseDefinition&
   }
   in.table(*damping, "damping");
   in.check_keys(*damping, "damping", {"C", "rayleigh", "modal_ratios"});
-  const int given = (in.find(*damping, "C") ? 1 : 0) + (in.find(*damping, "rayleigh") ? 1 : 0) + (in.find(*damping, "modal_ratios") ? 1 : 0);
+  const int given =
+      (in.find(*damping, "C") ? 1 : 0) + (in.find(*damping, "rayleigh") ? 1 : 0) + (in.find(*damping, "modal_ratios") ? 1 : 0);
   if (given != 1) in.fail(damping, "damping", "give exactly one of C, rayleigh, modal_ratios");
   if (const toml::value* cm = in.find(*damping, "C")) {
     m.damping = in.matrix(*cm, "damping.C", n);
@@ -121,7 +122,8 @@ void read_forcing(const CaseReader& in, const toml::value& root, CaseDefinition&
     if (const toml::value* shape = in.find(f, "shape")) {
       // scale * M phi_mode cos(h w t), phi mass-normalised with its largest entry positive.
       if (in.string(*shape, field + ".shape") != "mass_mode") in.fail(shape, field + ".shape", "must be \"mass_mode\"");
-      if (in.find(f, "dof") || in.find(f, "cos") || in.find(f, "sin")) in.fail(shape, field + ".shape", "cannot be combined with dof, cos or sin");
+      if (in.find(f, "dof") || in.find(f, "cos") || in.find(f, "sin"))
+        in.fail(shape, field + ".shape", "cannot be combined with dof, cos or sin");
       const int mode = in.integer(in.require(f, "mode", field + ".mode"), field + ".mode");
       if (mode < 1 || mode > n) in.fail(&f.at("mode"), field + ".mode", "must be in [1, " + std::to_string(n) + "] (1 is the lowest mode)");
       const NormalModes modes = normal_modes(m.mass, m.stiffness);
@@ -179,7 +181,8 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
       std::vector<int> harmonics;
       for (size_t i = 0; i < list->as_array().size(); ++i)
         harmonics.push_back(in.integer(list->as_array()[i], "harmonic_balance.harmonics[" + std::to_string(i) + "]"));
-      if (harmonics.empty()) in.fail(list, "harmonic_balance.harmonics", "an empty list (give H, or the harmonics to balance, e.g. [1, 3, 5])");
+      if (harmonics.empty())
+        in.fail(list, "harmonic_balance.harmonics", "an empty list (give H, or the harmonics to balance, e.g. [1, 3, 5])");
       c.harmonic_balance.harmonic_list = harmonics;
       c.harmonic_balance.harmonics = harmonics.back();
       try {
@@ -202,10 +205,10 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
     }
   }
   const toml::value& cont = in.table(in.require(root, "continuation", "continuation"), "continuation");
-  in.check_keys(cont, "continuation",
-                {"omega_start", "omega_end", "length_scale", "step", "step_min", "step_max", "max_points", "max_iterations",
-                 "target_iterations", "tolerance", "max_angle", "predictor", "corrector", "wall_time_limit", "locate",
-                 "reuse_factorization", "contraction"});
+  in.check_keys(
+      cont, "continuation",
+      {"omega_start", "omega_end", "length_scale", "step", "step_min", "step_max", "max_points", "max_iterations", "target_iterations",
+       "tolerance", "max_angle", "predictor", "corrector", "wall_time_limit", "locate", "reuse_factorization", "contraction"});
   NfrcOptions& o = c.nfrc;
   ContinuationOptions& co = o.continuation;
   o.omega_start = in.number(in.require(cont, "omega_start", "continuation.omega_start"), "continuation.omega_start");
@@ -257,7 +260,8 @@ void check_stability_supported(const CaseReader& in, const toml::value& root, co
     if (!c.elements[i]->uses_linear_residual()) continue;
     const toml::value& e = root.at("elements").as_array()[i];
     in.fail(in.find(e, "law"), "elements[" + std::to_string(i) + "].law",
-            "\"dlft\" has no stability analysis (its forces are Lagrange multipliers of the harmonic balance): set stability.method = \"none\"");
+            "\"dlft\" has no stability analysis (its forces are Lagrange multipliers of the harmonic balance): set stability.method = "
+            "\"none\"");
   }
 }
 
@@ -271,12 +275,12 @@ void check_forcing_within_harmonics(const CaseReader& in, const toml::value& roo
     const int order = in.integer_or(f, "harmonic", field, 1);
     const toml::value* where = in.find(f, "harmonic") ? in.find(f, "harmonic") : &f;
     if (order * c.harmonic_balance.subharmonic > harmonics)
-      in.fail(where, field, "must be <= harmonic_balance.harmonics = " + std::to_string(harmonics) + " (a higher harmonic is not represented)");
+      in.fail(where, field,
+              "must be <= harmonic_balance.harmonics = " + std::to_string(harmonics) + " (a higher harmonic is not represented)");
     const std::vector<int> listed = c.harmonic_balance.selected_harmonics();
     const int basis_order = order * c.harmonic_balance.subharmonic;
     if (std::find(listed.begin(), listed.end(), basis_order) == listed.end())
-      in.fail(where, field,
-              "harmonic " + std::to_string(order) + " is not in the list harmonic_balance.harmonics (it would be dropped)");
+      in.fail(where, field, "harmonic " + std::to_string(order) + " is not in the list harmonic_balance.harmonics (it would be dropped)");
   }
 }
 
@@ -357,7 +361,8 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
     study.convergence_harmonics = in.integer_or(*conv, "harmonics", "study.convergence.harmonics", 0);
     study.convergence_samples = in.integer_or(*conv, "samples", "study.convergence.samples", 0);
     // harmonics = 0 turns the check off (e.g. with --set study.convergence.harmonics=0).
-    if (study.convergence_harmonics < 0 || (study.convergence_harmonics > 0 && study.convergence_samples < 2 * study.convergence_harmonics + 1))
+    if (study.convergence_harmonics < 0 ||
+        (study.convergence_harmonics > 0 && study.convergence_samples < 2 * study.convergence_harmonics + 1))
       in.fail(conv, "study.convergence", "expected {harmonics = H >= 1, samples = N >= 2 H + 1} (H = 0: no check)");
   }
   read_study_branches(in, *st, c);
@@ -373,7 +378,9 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
     s.parameter = in.string(name, field + ".parameter");
     if (c.parameters.find(s.parameter) < 0) {
       const std::string guess = nearest(s.parameter, c.parameters.names());
-      in.fail(&name, field + ".parameter", "unknown parameter '" + s.parameter + "'" + (guess.empty() ? " (declare it in [parameters])" : " (did you mean '" + guess + "'?)"));
+      in.fail(&name, field + ".parameter",
+              "unknown parameter '" + s.parameter + "'" +
+                  (guess.empty() ? " (declare it in [parameters])" : " (did you mean '" + guess + "'?)"));
     }
     const toml::value& range = in.require(t, "range", field + ".range");
     const VectorXd r = in.vector(range, field + ".range");
@@ -382,7 +389,8 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
     s.max = r(1);
     const double value = c.parameters.value(c.parameters.find(s.parameter));
     if (!(s.min <= value && value <= s.max))
-      in.fail(&range, field + ".range", "must contain the case's " + s.parameter + " = " + std::to_string(value) + " (tracking starts there)");
+      in.fail(&range, field + ".range",
+              "must contain the case's " + s.parameter + " = " + std::to_string(value) + " (tracking starts there)");
     if (const toml::value* validate = in.find(t, "validate")) {
       const VectorXd v = in.vector(*validate, field + ".validate");
       for (Eigen::Index k = 0; k < v.size(); ++k) {
@@ -420,7 +428,8 @@ void apply_overrides(const CaseReader& in, toml::value& root, const std::vector<
     if (parsed) {
       std::istringstream ss("v = " + text);
       if (!toml::parse<toml::preserve_comments>(ss, "--set").at("v").comments().empty())
-        throw CaseError("--set " + name + ": '" + text + "' is one value followed by a '#' comment (quote a string: " + name + "='\"...\"')");
+        throw CaseError("--set " + name + ": '" + text + "' is one value followed by a '#' comment (quote a string: " + name +
+                        "='\"...\"')");
     }
     if (!parsed) {
       if (text.find_first_of("[]{}#\"'=,") != std::string::npos)
@@ -436,7 +445,8 @@ void apply_overrides(const CaseReader& in, toml::value& root, const std::vector<
         for (const auto& [k, v] : params.as_table())
           if (k != "amplitude") known.push_back(k);
         const std::string guess = nearest(name, known);
-        throw CaseError("--set " + name + ": unknown parameter" + (guess.empty() ? " (known: " + join(known) + ")" : " (did you mean '" + guess + "'?)"));
+        throw CaseError("--set " + name + ": unknown parameter" +
+                        (guess.empty() ? " (known: " + join(known) + ")" : " (did you mean '" + guess + "'?)"));
       }
       if (!value.is_integer() && !value.is_floating()) throw CaseError("--set " + name + ": expected a number, got '" + text + "'");
       params[name] = value;
@@ -452,8 +462,7 @@ void apply_overrides(const CaseReader& in, toml::value& root, const std::vector<
       int index = -1;
       if (const size_t open = key.find('['); open != std::string::npos) {
         const size_t close = key.find(']', open);
-        if (close != key.size() - 1 || close == open + 1 ||
-            key.find_first_not_of("0123456789", open + 1) != close)
+        if (close != key.size() - 1 || close == open + 1 || key.find_first_not_of("0123456789", open + 1) != close)
           throw CaseError("--set " + name + ": expected KEY or KEY[INDEX] in the path, got '" + key + "'");
         index = std::stoi(key.substr(open + 1, close - open - 1));
         key = key.substr(0, open);
@@ -495,7 +504,8 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   // UTF-8 inside a string (fuzzing: a literal string holding the byte 0xE0).
   if (const std::size_t bad = first_invalid_utf8(text); bad != std::string_view::npos) {
     const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n');
-    throw CaseError(path + ":" + std::to_string(line) + ": not valid UTF-8 (byte " + std::to_string(bad) + "); a TOML case file must be UTF-8");
+    throw CaseError(path + ":" + std::to_string(line) + ": not valid UTF-8 (byte " + std::to_string(bad) +
+                    "); a TOML case file must be UTF-8");
   }
   check_toml_nesting(text, path);
   toml::value root;
@@ -507,7 +517,8 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
     std::string msg = e.what();
     const std::string first = msg.substr(0, msg.find('\n'));
     const std::string line = std::to_string(e.location().line());
-    throw CaseError(path + ":" + line + ": TOML syntax error: " + first.substr(first.find(':') == std::string::npos ? 0 : first.find(':') + 2));
+    throw CaseError(path + ":" + line +
+                    ": TOML syntax error: " + first.substr(first.find(':') == std::string::npos ? 0 : first.find(':') + 2));
   } catch (const std::exception& e) {
     std::string msg = e.what();
     throw CaseError(path + ": cannot read: " + msg.substr(0, msg.find('\n')));
@@ -517,7 +528,9 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   // Before the overrides, so that `--set elements[i]...` addresses element i of the expanded list.
   expand_element_templates(in, root);
   apply_overrides(in, root, overrides);
-  in.check_keys(root, "", {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs", "study"});
+  in.check_keys(
+      root, "",
+      {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs", "study"});
   CaseDefinition c;
   c.path = path;
   read_model(in, root, c);

@@ -16,8 +16,7 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
   for (size_t i = 1; i <= a.size(); ++i) {
     cur[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+    for (size_t j = 1; j <= b.size(); ++j) cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
     std::swap(prev, cur);
   }
   return prev[b.size()];
@@ -50,7 +49,8 @@ MatrixXd CaseReader::matrix(const toml::value& v, const std::string& field, int 
       const VectorXd row = vector(rows[i], field + "[" + std::to_string(i) + "]");
       if (i == 0) m.resize(static_cast<Eigen::Index>(rows.size()), row.size());
       if (row.size() != m.cols())
-        fail(&rows[i], field, "row " + std::to_string(i) + " has " + std::to_string(row.size()) + " entries, row 0 has " + std::to_string(m.cols()));
+        fail(&rows[i], field,
+             "row " + std::to_string(i) + " has " + std::to_string(row.size()) + " entries, row 0 has " + std::to_string(m.cols()));
       m.row(static_cast<Eigen::Index>(i)) = row.transpose();
     }
   } else if (v.is_table()) {
@@ -80,8 +80,9 @@ MatrixXd CaseReader::matrix(const toml::value& v, const std::string& field, int 
     fail(&v, field, "expected an array of rows or a table {file = ...} / {diagonal = [...]}");
   }
   if (n >= 0 && (m.rows() != n || m.cols() != n))
-    fail(&v, field, "expected " + std::to_string(n) + "x" + std::to_string(n) + " (one row per dof), got " +
-                        std::to_string(m.rows()) + "x" + std::to_string(m.cols()));
+    fail(&v, field,
+         "expected " + std::to_string(n) + "x" + std::to_string(n) + " (one row per dof), got " + std::to_string(m.rows()) + "x" +
+             std::to_string(m.cols()));
   if (!m.allFinite()) fail(&v, field, "contains NaN or Inf");
   return m;
 }
@@ -102,7 +103,8 @@ ParameterBinding binding(const CaseReader& in, const CaseDefinition& c, const to
     const int index = c.parameters.find(name);
     if (index < 0) {
       const std::string guess = nearest(name, c.parameters.names());
-      in.fail(&name_value, field, "unknown parameter '" + name + "'" + (guess.empty() ? " (declare it in [parameters])" : " (did you mean '" + guess + "'?)"));
+      in.fail(&name_value, field,
+              "unknown parameter '" + name + "'" + (guess.empty() ? " (declare it in [parameters])" : " (did you mean '" + guess + "'?)"));
     }
     return ParameterBinding::linked(index, scale, offset);
   };

@@ -60,9 +60,12 @@ class CaseReader {
   }
   double number(const toml::value& v, const std::string& field) const {
     double x = 0;
-    if (v.is_integer()) x = static_cast<double>(v.as_integer());
-    else if (v.is_floating()) x = v.as_floating();
-    else fail(&v, field, "expected a number");
+    if (v.is_integer())
+      x = static_cast<double>(v.as_integer());
+    else if (v.is_floating())
+      x = v.as_floating();
+    else
+      fail(&v, field, "expected a number");
     if (!std::isfinite(x)) fail(&v, field, "must be finite");
     return x;
   }

@@ -44,7 +44,8 @@ void check_plain_block(const CaseReader& in, const toml::value& block, const std
         in.fail(values[i], dof_field(field, *dofs, i), "{node} is replaced only in a template: add nodes = [\"n1\", ...] to the block");
   }
   for (const auto& [key, value] : block.as_table())
-    if (is_per_node(value)) in.fail(&value, field + "." + key + ".per_node", "needs nodes = [\"n1\", ...] in the block (one entry per node)");
+    if (is_per_node(value))
+      in.fail(&value, field + "." + key + ".per_node", "needs nodes = [\"n1\", ...] in the block (one entry per node)");
 }
 
 // The nodes of a template: a non-empty array of distinct, non-empty strings.

@@ -16,8 +16,7 @@ void require_regular_file(const std::string& path, const std::string& what) {
   const fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) throw CaseError(path + ": file does not exist");
   if (fs::is_directory(status)) throw CaseError(path + ": is a directory, expected " + what);
-  if (!fs::is_regular_file(status))
-    throw CaseError(path + ": is not a regular file (a device, pipe or socket), expected " + what);
+  if (!fs::is_regular_file(status)) throw CaseError(path + ": is not a regular file (a device, pipe or socket), expected " + what);
 }
 
 std::string read_bounded_file(const std::string& path, std::size_t max_bytes, const std::string& what) {
@@ -31,7 +30,8 @@ std::string read_bounded_file(const std::string& path, std::size_t max_bytes, co
     text.append(chunk, static_cast<std::size_t>(file.gcount()));
   if (file.bad()) throw CaseError(path + ": cannot read: " + std::strerror(errno));
   if (text.size() > max_bytes)
-    throw CaseError(path + ": larger than " + (max_bytes >= (1u << 20) ? std::to_string(max_bytes >> 20) + " MiB" : std::to_string(max_bytes) + " bytes") +
+    throw CaseError(path + ": larger than " +
+                    (max_bytes >= (1u << 20) ? std::to_string(max_bytes >> 20) + " MiB" : std::to_string(max_bytes) + " bytes") +
                     ", the limit for " + what);
   return text;
 }
@@ -59,11 +59,16 @@ void check_toml_nesting(std::string_view text, const std::string& source) {
     }
     switch (state) {
       case State::code:
-        if (ch == '#') state = State::comment;
-        else if (starts(i, "\"\"\"")) state = State::multiline_basic, i += 2;
-        else if (starts(i, "'''")) state = State::multiline_literal, i += 2;
-        else if (ch == '"') state = State::basic;
-        else if (ch == '\'') state = State::literal;
+        if (ch == '#')
+          state = State::comment;
+        else if (starts(i, "\"\"\""))
+          state = State::multiline_basic, i += 2;
+        else if (starts(i, "'''"))
+          state = State::multiline_literal, i += 2;
+        else if (ch == '"')
+          state = State::basic;
+        else if (ch == '\'')
+          state = State::literal;
         else if (ch == '[' || ch == '{') {
           if (++depth > kMaxTomlNesting)
             throw CaseError(source + ":" + std::to_string(line) + ": arrays or inline tables nested deeper than " +
@@ -75,8 +80,10 @@ void check_toml_nesting(std::string_view text, const std::string& source) {
       case State::comment:
         break;
       case State::basic:
-        if (ch == '\\') ++i;  // an escaped quote or backslash
-        else if (ch == '"') state = State::code;
+        if (ch == '\\')
+          ++i;  // an escaped quote or backslash
+        else if (ch == '"')
+          state = State::code;
         break;
       case State::literal:
         if (ch == '\'') state = State::code;

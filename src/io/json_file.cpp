@@ -15,8 +15,10 @@ void check_json_nesting(std::string_view text, const std::string& source) {
     const char ch = text[i];
     if (ch == '\n') ++line;
     if (in_string) {
-      if (ch == '\\') ++i;  // an escaped quote or backslash
-      else if (ch == '"') in_string = false;
+      if (ch == '\\')
+        ++i;  // an escaped quote or backslash
+      else if (ch == '"')
+        in_string = false;
     } else if (ch == '"') {
       in_string = true;
     } else if (ch == '[' || ch == '{') {

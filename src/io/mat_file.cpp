@@ -32,24 +32,42 @@ using MatVar = std::unique_ptr<matvar_t, MatVarFreer>;
 
 const char* class_name(matio_classes class_type) {
   switch (class_type) {
-    case MAT_C_EMPTY: return "empty";
-    case MAT_C_CELL: return "cell";
-    case MAT_C_STRUCT: return "struct";
-    case MAT_C_OBJECT: return "object";
-    case MAT_C_CHAR: return "char";
-    case MAT_C_SPARSE: return "sparse";
-    case MAT_C_DOUBLE: return "double";
-    case MAT_C_SINGLE: return "single";
-    case MAT_C_INT8: return "int8";
-    case MAT_C_UINT8: return "uint8";
-    case MAT_C_INT16: return "int16";
-    case MAT_C_UINT16: return "uint16";
-    case MAT_C_INT32: return "int32";
-    case MAT_C_UINT32: return "uint32";
-    case MAT_C_INT64: return "int64";
-    case MAT_C_UINT64: return "uint64";
-    case MAT_C_FUNCTION: return "function handle";
-    case MAT_C_OPAQUE: return "opaque object";
+    case MAT_C_EMPTY:
+      return "empty";
+    case MAT_C_CELL:
+      return "cell";
+    case MAT_C_STRUCT:
+      return "struct";
+    case MAT_C_OBJECT:
+      return "object";
+    case MAT_C_CHAR:
+      return "char";
+    case MAT_C_SPARSE:
+      return "sparse";
+    case MAT_C_DOUBLE:
+      return "double";
+    case MAT_C_SINGLE:
+      return "single";
+    case MAT_C_INT8:
+      return "int8";
+    case MAT_C_UINT8:
+      return "uint8";
+    case MAT_C_INT16:
+      return "int16";
+    case MAT_C_UINT16:
+      return "uint16";
+    case MAT_C_INT32:
+      return "int32";
+    case MAT_C_UINT32:
+      return "uint32";
+    case MAT_C_INT64:
+      return "int64";
+    case MAT_C_UINT64:
+      return "uint64";
+    case MAT_C_FUNCTION:
+      return "function handle";
+    case MAT_C_OPAQUE:
+      return "opaque object";
   }
   return "unknown class";
 }
@@ -70,17 +88,28 @@ struct ElementLoader {
 // matio stores each class at its own width (e.g. int16 stays int16), so pick the reader per type.
 ElementLoader loader_for(matio_types data_type) {
   switch (data_type) {
-    case MAT_T_DOUBLE: return {&load_as_double<double>, sizeof(double)};
-    case MAT_T_SINGLE: return {&load_as_double<float>, sizeof(float)};
-    case MAT_T_INT8: return {&load_as_double<std::int8_t>, sizeof(std::int8_t)};
-    case MAT_T_UINT8: return {&load_as_double<std::uint8_t>, sizeof(std::uint8_t)};
-    case MAT_T_INT16: return {&load_as_double<std::int16_t>, sizeof(std::int16_t)};
-    case MAT_T_UINT16: return {&load_as_double<std::uint16_t>, sizeof(std::uint16_t)};
-    case MAT_T_INT32: return {&load_as_double<std::int32_t>, sizeof(std::int32_t)};
-    case MAT_T_UINT32: return {&load_as_double<std::uint32_t>, sizeof(std::uint32_t)};
-    case MAT_T_INT64: return {&load_as_double<std::int64_t>, sizeof(std::int64_t)};
-    case MAT_T_UINT64: return {&load_as_double<std::uint64_t>, sizeof(std::uint64_t)};
-    default: return {};
+    case MAT_T_DOUBLE:
+      return {&load_as_double<double>, sizeof(double)};
+    case MAT_T_SINGLE:
+      return {&load_as_double<float>, sizeof(float)};
+    case MAT_T_INT8:
+      return {&load_as_double<std::int8_t>, sizeof(std::int8_t)};
+    case MAT_T_UINT8:
+      return {&load_as_double<std::uint8_t>, sizeof(std::uint8_t)};
+    case MAT_T_INT16:
+      return {&load_as_double<std::int16_t>, sizeof(std::int16_t)};
+    case MAT_T_UINT16:
+      return {&load_as_double<std::uint16_t>, sizeof(std::uint16_t)};
+    case MAT_T_INT32:
+      return {&load_as_double<std::int32_t>, sizeof(std::int32_t)};
+    case MAT_T_UINT32:
+      return {&load_as_double<std::uint32_t>, sizeof(std::uint32_t)};
+    case MAT_T_INT64:
+      return {&load_as_double<std::int64_t>, sizeof(std::int64_t)};
+    case MAT_T_UINT64:
+      return {&load_as_double<std::uint64_t>, sizeof(std::uint64_t)};
+    default:
+      return {};
   }
 }
 
@@ -109,16 +138,13 @@ class MatVariableReader {
 
     Eigen::SparseMatrix<double> matrix(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
     const std::vector<Triplet> triplets =
-        variable->class_type == MAT_C_SPARSE ? sparse_triplets(*variable, rows, cols)
-                                             : dense_triplets(*variable, rows, cols);
+        variable->class_type == MAT_C_SPARSE ? sparse_triplets(*variable, rows, cols) : dense_triplets(*variable, rows, cols);
     matrix.setFromTriplets(triplets.begin(), triplets.end());
     return matrix;
   }
 
  private:
-  [[noreturn]] void fail_variable(const std::string& what) const {
-    fail(path_, "variable " + single_quoted(name_) + ": " + what);
-  }
+  [[noreturn]] void fail_variable(const std::string& what) const { fail(path_, "variable " + single_quoted(name_) + ": " + what); }
 
   // Returns {rows, cols} once the variable is known to be a real 2-D numeric or sparse matrix.
   std::pair<std::size_t, std::size_t> check_header(const matvar_t& variable) const {
@@ -137,11 +163,10 @@ class MatVariableReader {
   }
 
   void check_plausible_size(const matvar_t& info, mat_ft version) const {
-    if (info.class_type == MAT_C_SPARSE) return;  // its size depends on nnz, which the header lacks
+    if (info.class_type == MAT_C_SPARSE) return;               // its size depends on nnz, which the header lacks
     const std::size_t elements = info.dims[0] * info.dims[1];  // both at most kMaxDimension
     if (elements > static_cast<std::size_t>(kMaxEntries))
-      fail_variable("has " + std::to_string(elements) + " elements, more than the limit of " +
-                    std::to_string(kMaxEntries));
+      fail_variable("has " + std::to_string(elements) + " elements, more than the limit of " + std::to_string(kMaxEntries));
     // v4/v5 store every element in at least one byte, and zlib expands at most ~1032:1.
     // v7.3 (HDF5) may legitimately store unwritten data as a fill value, so it is not bounded.
     if (version == MAT_FT_MAT73) return;
@@ -149,8 +174,7 @@ class MatVariableReader {
     const std::uintmax_t file_bytes = std::filesystem::file_size(path_, ec);
     if (ec) return;
     constexpr std::uintmax_t kMaxZlibRatio = 1032;
-    const std::uintmax_t max_elements =
-        info.compression == MAT_COMPRESSION_ZLIB ? file_bytes * kMaxZlibRatio : file_bytes;
+    const std::uintmax_t max_elements = info.compression == MAT_COMPRESSION_ZLIB ? file_bytes * kMaxZlibRatio : file_bytes;
     if (elements > max_elements)
       fail_variable("header claims " + std::to_string(info.dims[0]) + " x " + std::to_string(info.dims[1]) +
                     " elements but the file has only " + std::to_string(file_bytes) + " bytes (corrupt file?)");
@@ -202,8 +226,8 @@ class MatVariableReader {
     if (loader.load == nullptr) fail_variable("sparse matrix has an unsupported element type");
     // Check the CSC arrays against each other before trusting any index from the file.
     if (sparse->jc == nullptr || sparse->njc != cols + 1)
-      fail_variable("corrupt sparse column pointers (expected " + std::to_string(cols + 1) + ", found " +
-                    std::to_string(sparse->njc) + ")");
+      fail_variable("corrupt sparse column pointers (expected " + std::to_string(cols + 1) + ", found " + std::to_string(sparse->njc) +
+                    ")");
     const std::size_t nonzeros = sparse->jc[cols];
     if (sparse->jc[0] != 0 || nonzeros > sparse->nir || nonzeros > sparse->ndata ||
         (nonzeros > 0 && (sparse->ir == nullptr || sparse->data == nullptr)))
@@ -217,8 +241,7 @@ class MatVariableReader {
       if (end < begin || end > nonzeros) fail_variable("corrupt sparse column pointers (not ascending)");
       for (std::size_t k = begin; k < end; ++k) {
         const std::size_t row = sparse->ir[k];
-        if (row >= rows)
-          fail_variable("corrupt sparse row index " + std::to_string(row) + " in column " + std::to_string(col + 1));
+        if (row >= rows) fail_variable("corrupt sparse row index " + std::to_string(row) + " in column " + std::to_string(col + 1));
         const double value = loader.load(sparse->data, k);
         if (!std::isfinite(value)) fail_variable("non-finite value at " + position(row, col));
         triplets.emplace_back(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(col), value);

@@ -27,11 +27,27 @@ std::string number_text(double v) {
 // unknown types, which no writer produces. miMATRIX and miCOMPRESSED hold other elements: 1.
 unsigned v5_type_width(std::uint32_t type) {
   switch (type) {
-    case 1: case 2: case 16: case 14: case 15: return 1;  // int8, uint8, utf8; matrix, compressed
-    case 3: case 4: case 17: return 2;                    // int16, uint16, utf16
-    case 5: case 6: case 7: case 18: return 4;            // int32, uint32, single, utf32
-    case 9: case 12: case 13: return 8;                   // double, int64, uint64
-    default: return 0;
+    case 1:
+    case 2:
+    case 16:
+    case 14:
+    case 15:
+      return 1;  // int8, uint8, utf8; matrix, compressed
+    case 3:
+    case 4:
+    case 17:
+      return 2;  // int16, uint16, utf16
+    case 5:
+    case 6:
+    case 7:
+    case 18:
+      return 4;  // int32, uint32, single, utf32
+    case 9:
+    case 12:
+    case 13:
+      return 8;  // double, int64, uint64
+    default:
+      return 0;
   }
 }
 
@@ -125,8 +141,8 @@ class MatHeaderCheck {
                       std::to_string(type >> 16 ? type >> 16 : bytes) + " bytes; the format requires miUINT32 (6) of 8 bytes");
   }
   [[noreturn]] void fail_compressed(std::uint64_t begin, std::uint64_t claimed, std::uint64_t room) const {
-    fail(path_, "corrupt MAT file: the compressed element at byte " + std::to_string(begin - 8) + " holds a tag of " + std::to_string(claimed) +
-                    " bytes, at most " + std::to_string(room) + " fit");
+    fail(path_, "corrupt MAT file: the compressed element at byte " + std::to_string(begin - 8) + " holds a tag of " +
+                    std::to_string(claimed) + " bytes, at most " + std::to_string(room) + " fit");
   }
 
   bool read_at(std::uint64_t offset, unsigned char* out, std::size_t n) {
@@ -159,11 +175,12 @@ class MatHeaderCheck {
                         std::to_string(end - at - 8) + " remain");
       if (type == kMatrix && depth < 8) {
         unsigned char flags_tag[8];
-        if (bytes > 0 && read_at(at + 8, flags_tag, 8)) check_array_flags("byte " + std::to_string(at + 8), word32(flags_tag), word32(flags_tag + 4));
+        if (bytes > 0 && read_at(at + 8, flags_tag, 8))
+          check_array_flags("byte " + std::to_string(at + 8), word32(flags_tag), word32(flags_tag + 4));
         unsigned char dims_size[4];
         if (bytes >= kDimsSizeAt - 4 && read_at(at + kDimsSizeAt, dims_size, 4) && word32(dims_size) > bytes)
-          fail(path_, "corrupt MAT file: the matrix at byte " + std::to_string(at) + " claims dims of " + std::to_string(word32(dims_size)) +
-                          " bytes in " + std::to_string(bytes));
+          fail(path_, "corrupt MAT file: the matrix at byte " + std::to_string(at) + " claims dims of " +
+                          std::to_string(word32(dims_size)) + " bytes in " + std::to_string(bytes));
         check_elements(at + 8, at + 8 + bytes, depth + 1);
       }
       if (type == kCompressed && depth == 0) check_compressed(at + 8, bytes);
@@ -222,12 +239,38 @@ class MatHeaderCheck {
     if (!read_at(data + index * kWidth[precision], b, kWidth[precision])) return false;
     if (swap_) std::reverse(b, b + kWidth[precision]);
     switch (precision) {
-      case 0: { double d; std::memcpy(&d, b, 8); value = d; break; }
-      case 1: { float f; std::memcpy(&f, b, 4); value = f; break; }
-      case 2: { std::int32_t i; std::memcpy(&i, b, 4); value = i; break; }
-      case 3: { std::int16_t i; std::memcpy(&i, b, 2); value = i; break; }
-      case 4: { std::uint16_t i; std::memcpy(&i, b, 2); value = i; break; }
-      default: value = b[0];
+      case 0: {
+        double d;
+        std::memcpy(&d, b, 8);
+        value = d;
+        break;
+      }
+      case 1: {
+        float f;
+        std::memcpy(&f, b, 4);
+        value = f;
+        break;
+      }
+      case 2: {
+        std::int32_t i;
+        std::memcpy(&i, b, 4);
+        value = i;
+        break;
+      }
+      case 3: {
+        std::int16_t i;
+        std::memcpy(&i, b, 2);
+        value = i;
+        break;
+      }
+      case 4: {
+        std::uint16_t i;
+        std::memcpy(&i, b, 2);
+        value = i;
+        break;
+      }
+      default:
+        value = b[0];
     }
     return true;
   }

@@ -6,9 +6,7 @@
 
 namespace hbtrack::matrix_file {
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw std::runtime_error(path + ": " + what);
-}
+[[noreturn]] void fail(const std::string& path, const std::string& what) { throw std::runtime_error(path + ": " + what); }
 
 std::string errno_text(int error_number) { return std::generic_category().message(error_number); }
 
@@ -34,8 +32,7 @@ std::string single_quoted(std::string_view text) {
 void require_readable_file(const std::string& path) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (status.type() == std::filesystem::file_type::not_found)
-    fail(path, "cannot open file: No such file or directory");
+  if (status.type() == std::filesystem::file_type::not_found) fail(path, "cannot open file: No such file or directory");
   if (ec) fail(path, "cannot open file: " + ec.message());
   if (std::filesystem::is_directory(status)) fail(path, "cannot open file: is a directory");
 }
@@ -43,9 +40,8 @@ void require_readable_file(const std::string& path) {
 Eigen::MatrixXd to_dense(const std::string& where, const Eigen::SparseMatrix<double>& sparse) {
   const std::int64_t entries = static_cast<std::int64_t>(sparse.rows()) * static_cast<std::int64_t>(sparse.cols());
   if (entries > kMaxEntries)
-    fail(where, std::to_string(sparse.rows()) + " x " + std::to_string(sparse.cols()) +
-                    " is too large to read as a dense matrix (limit " + std::to_string(kMaxEntries) +
-                    " entries); use the sparse reader");
+    fail(where, std::to_string(sparse.rows()) + " x " + std::to_string(sparse.cols()) + " is too large to read as a dense matrix (limit " +
+                    std::to_string(kMaxEntries) + " entries); use the sparse reader");
   return Eigen::MatrixXd(sparse);
 }
 

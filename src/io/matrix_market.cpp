@@ -113,25 +113,23 @@ class MatrixMarketParser {
     std::int64_t declared_entries = 0;
     if (header.format == MmFormat::coordinate) {
       if (size.count != 3)
-        fail_line("size line must be 'rows columns entries' (3 integers), found " + std::to_string(size.count) +
-                  " fields");
+        fail_line("size line must be 'rows columns entries' (3 integers), found " + std::to_string(size.count) + " fields");
       rows = parse_size_field(size.token[0], "rows", kMaxDimension);
       cols = parse_size_field(size.token[1], "columns", kMaxDimension);
       declared_entries = parse_size_field(size.token[2], "entries", kMaxEntries);
     } else {
       if (size.count != 2)
-        fail_line("size line must be 'rows columns' (2 integers) for array format, found " +
-                  std::to_string(size.count) + " fields");
+        fail_line("size line must be 'rows columns' (2 integers) for array format, found " + std::to_string(size.count) + " fields");
       rows = parse_size_field(size.token[0], "rows", kMaxDimension);
       cols = parse_size_field(size.token[1], "columns", kMaxDimension);
       // Both are at most kMaxDimension, so the product cannot overflow 64 bits.
       if (rows * cols > kMaxEntries)
-        fail_line("array of " + std::to_string(rows) + " x " + std::to_string(cols) +
-                  " entries exceeds the limit of " + std::to_string(kMaxEntries));
+        fail_line("array of " + std::to_string(rows) + " x " + std::to_string(cols) + " entries exceeds the limit of " +
+                  std::to_string(kMaxEntries));
     }
     if (header.symmetry != MmSymmetry::general && rows != cols)
-      fail_line("a symmetric or skew-symmetric matrix must be square, size line says " + std::to_string(rows) +
-                " x " + std::to_string(cols));
+      fail_line("a symmetric or skew-symmetric matrix must be square, size line says " + std::to_string(rows) + " x " +
+                std::to_string(cols));
 
     rows_ = rows;
     cols_ = cols;
@@ -148,9 +146,7 @@ class MatrixMarketParser {
   }
 
  private:
-  [[noreturn]] void fail_line(const std::string& what) const {
-    fail(path_, "line " + std::to_string(line_number_) + ": " + what);
-  }
+  [[noreturn]] void fail_line(const std::string& what) const { fail(path_, "line " + std::to_string(line_number_) + ": " + what); }
 
   bool next_line(std::string_view& line) {
     if (!std::getline(in_, buffer_)) {
@@ -231,16 +227,14 @@ class MatrixMarketParser {
     if (!parse_integer(token, value) || value < 0)
       fail_line(std::string("size line: ") + what + " " + single_quoted(token) + " is not a non-negative integer");
     if (value > limit)
-      fail_line(std::string("size line: ") + what + " " + std::to_string(value) + " exceeds the limit of " +
-                std::to_string(limit));
+      fail_line(std::string("size line: ") + what + " " + std::to_string(value) + " exceeds the limit of " + std::to_string(limit));
     return value;
   }
 
   // Returns the 0-based index.
   Eigen::Index parse_index(std::string_view token, std::int64_t extent, const char* what) const {
     std::int64_t index = 0;
-    if (!parse_integer(token, index))
-      fail_line(std::string(what) + " index " + single_quoted(token) + " is not an integer");
+    if (!parse_integer(token, index)) fail_line(std::string(what) + " index " + single_quoted(token) + " is not an integer");
     if (index < 1 || index > extent)
       fail_line(std::string(what) + " index " + std::to_string(index) + " out of range 1.." + std::to_string(extent));
     return static_cast<Eigen::Index>(index - 1);
@@ -249,15 +243,17 @@ class MatrixMarketParser {
   double parse_value(std::string_view token) const {
     if (header_.field == MmField::integer) {
       std::int64_t integer = 0;
-      if (!parse_integer(token, integer))
-        fail_line("value " + single_quoted(token) + " is not an integer (field is integer)");
+      if (!parse_integer(token, integer)) fail_line("value " + single_quoted(token) + " is not an integer (field is integer)");
       return static_cast<double>(integer);
     }
     double value = 0.0;
     switch (parse_real(token, value)) {
-      case RealParse::malformed: fail_line("value " + single_quoted(token) + " is not a number");
-      case RealParse::overflow: fail_line("value " + single_quoted(token) + " is out of range for a double");
-      case RealParse::ok: break;
+      case RealParse::malformed:
+        fail_line("value " + single_quoted(token) + " is not a number");
+      case RealParse::overflow:
+        fail_line("value " + single_quoted(token) + " is out of range for a double");
+      case RealParse::ok:
+        break;
     }
     if (!std::isfinite(value)) fail_line("value " + single_quoted(token) + " is not finite");
     return value;
@@ -286,12 +282,12 @@ class MatrixMarketParser {
     std::string_view line;
     for (std::int64_t k = 0; k < declared_entries; ++k) {
       if (!next_data_line(line))
-        fail(path_, "file ends after " + std::to_string(k) + " of " + std::to_string(declared_entries) +
-                        " entries declared on the size line");
+        fail(path_,
+             "file ends after " + std::to_string(k) + " of " + std::to_string(declared_entries) + " entries declared on the size line");
       const Fields entry = split_fields(line);
       if (entry.count != expected_fields)
-        fail_line("expected " + std::to_string(expected_fields) + " numbers (" +
-                  (has_value ? "row column value" : "row column") + "), found " + std::to_string(entry.count));
+        fail_line("expected " + std::to_string(expected_fields) + " numbers (" + (has_value ? "row column value" : "row column") +
+                  "), found " + std::to_string(entry.count));
       const Eigen::Index row = parse_index(entry.token[0], rows_, "row");
       const Eigen::Index col = parse_index(entry.token[1], cols_, "column");
       const double value = has_value ? parse_value(entry.token[2]) : 1.0;
@@ -299,8 +295,7 @@ class MatrixMarketParser {
         // Mirroring entries from both triangles would silently double them.
         seen_lower = seen_lower || row > col;
         seen_upper = seen_upper || row < col;
-        if (seen_lower && seen_upper)
-          fail_line("symmetric file stores entries in both triangles; store only the lower (or upper) one");
+        if (seen_lower && seen_upper) fail_line("symmetric file stores entries in both triangles; store only the lower (or upper) one");
         if (row == col && header_.symmetry == MmSymmetry::skew_symmetric && value != 0.0)
           fail_line("skew-symmetric matrix has a nonzero diagonal entry");
       }
@@ -312,9 +307,12 @@ class MatrixMarketParser {
   void read_array_entries() {
     const auto first_stored_row = [this](std::int64_t col) -> std::int64_t {
       switch (header_.symmetry) {
-        case MmSymmetry::general: return 0;
-        case MmSymmetry::symmetric: return col;
-        case MmSymmetry::skew_symmetric: return col + 1;
+        case MmSymmetry::general:
+          return 0;
+        case MmSymmetry::symmetric:
+          return col;
+        case MmSymmetry::skew_symmetric:
+          return col + 1;
       }
       return 0;
     };
@@ -327,11 +325,9 @@ class MatrixMarketParser {
     for (std::int64_t col = 0; col < cols_; ++col) {
       for (std::int64_t row = first_stored_row(col); row < rows_; ++row) {
         if (!next_data_line(line))
-          fail(path_, "file ends after " + std::to_string(read) + " of " + std::to_string(expected) +
-                          " array entries");
+          fail(path_, "file ends after " + std::to_string(read) + " of " + std::to_string(expected) + " array entries");
         const Fields entry = split_fields(line);
-        if (entry.count != 1)
-          fail_line("expected 1 number per line in array format, found " + std::to_string(entry.count));
+        if (entry.count != 1) fail_line("expected 1 number per line in array format, found " + std::to_string(entry.count));
         const double value = parse_value(entry.token[0]);
         ++read;
         if (value != 0.0) add_entry(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(col), value);
@@ -363,9 +359,7 @@ Eigen::SparseMatrix<double> read_matrix_market_sparse(const std::string& path) {
   return MatrixMarketParser(path, in).parse();
 }
 
-Eigen::MatrixXd read_matrix_market(const std::string& path) {
-  return to_dense(path, read_matrix_market_sparse(path));
-}
+Eigen::MatrixXd read_matrix_market(const std::string& path) { return to_dense(path, read_matrix_market_sparse(path)); }
 
 void write_matrix_market(const std::string& path, const Eigen::SparseMatrix<double>& matrix) {
   // Refuse before touching the file: the reader would reject a non-finite value anyway.
@@ -373,8 +367,7 @@ void write_matrix_market(const std::string& path, const Eigen::SparseMatrix<doub
   for (Eigen::Index outer = 0; outer < matrix.outerSize(); ++outer)
     for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, outer); it; ++it) {
       if (!std::isfinite(it.value()))
-        fail(path, "cannot write non-finite value at (" + std::to_string(it.row() + 1) + ", " +
-                       std::to_string(it.col() + 1) + ")");
+        fail(path, "cannot write non-finite value at (" + std::to_string(it.row() + 1) + ", " + std::to_string(it.col() + 1) + ")");
       ++entries;
     }
 
@@ -385,12 +378,11 @@ void write_matrix_market(const std::string& path, const Eigen::SparseMatrix<doub
   if (!file) fail(path, "cannot open for writing: " + errno_text(errno));
 
   std::fprintf(file.get(), "%%%%MatrixMarket matrix coordinate real general\n");
-  std::fprintf(file.get(), "%lld %lld %lld\n", static_cast<long long>(matrix.rows()),
-               static_cast<long long>(matrix.cols()), static_cast<long long>(entries));
+  std::fprintf(file.get(), "%lld %lld %lld\n", static_cast<long long>(matrix.rows()), static_cast<long long>(matrix.cols()),
+               static_cast<long long>(entries));
   for (Eigen::Index outer = 0; outer < matrix.outerSize(); ++outer)
     for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, outer); it; ++it)
-      std::fprintf(file.get(), "%lld %lld %.17g\n", static_cast<long long>(it.row() + 1),
-                   static_cast<long long>(it.col() + 1), it.value());
+      std::fprintf(file.get(), "%lld %lld %.17g\n", static_cast<long long>(it.row() + 1), static_cast<long long>(it.col() + 1), it.value());
 
   const bool write_failed = std::ferror(file.get()) != 0;
   // fclose flushes, so its result is the last chance to notice a full disk.

@@ -11,9 +11,7 @@ namespace {
 
 double lerp(double root, double tip, double s) { return root + s * (tip - root); }
 
-double stagger(const BladeGeometry& g, double s) {
-  return lerp(g.root_stagger_deg, g.tip_stagger_deg, s) * std::numbers::pi / 180.0;
-}
+double stagger(const BladeGeometry& g, double s) { return lerp(g.root_stagger_deg, g.tip_stagger_deg, s) * std::numbers::pi / 180.0; }
 
 // The point at chord fraction u, thickness fraction v, span fraction s (all in [0, 1]).
 Eigen::Vector3d blade_point(const BladeGeometry& g, const Eigen::Vector3d& unit) {
@@ -29,7 +27,6 @@ Eigen::Vector3d blade_point(const BladeGeometry& g, const Eigen::Vector3d& unit)
   return {along * std::cos(beta) - across * std::sin(beta), lerp(g.hub_radius, g.tip_radius, s),
           along * std::sin(beta) + across * std::cos(beta)};
 }
-
 
 }  // namespace
 

@@ -67,9 +67,9 @@ BladeModeType classify_blade_mode(const BladeMesh& blade, const Eigen::VectorXd&
       along_span(k) = displacement(blade, shape, blade.mid_chord_line[station]).dot(n);
     } else {
       type.family = 'T';  // twist: leading edge minus trailing edge out-of-plane motion
-      along_span(k) = (displacement(blade, shape, blade.leading_edge_line[station]) -
-                       displacement(blade, shape, blade.trailing_edge_line[station]))
-                          .dot(n);
+      along_span(k) =
+          (displacement(blade, shape, blade.leading_edge_line[station]) - displacement(blade, shape, blade.trailing_edge_line[station]))
+              .dot(n);
     }
   }
   type.order = 1 + sign_changes(along_span);

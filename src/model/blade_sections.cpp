@@ -78,8 +78,7 @@ Eigen::Vector3d cartesian_point(double axial, double radius, double theta) {
 
 SectionBladeShape::SectionBladeShape(const BladeSections& sections, const SectionBladeShapeOptions& options) : options_(options) {
   sections.validate();
-  if (!(options.tip_clearance >= 0) || !(options.minimum_thickness >= 0))
-    invalid("tip clearance and minimum thickness must be >= 0");
+  if (!(options.tip_clearance >= 0) || !(options.minimum_thickness >= 0)) invalid("tip clearance and minimum thickness must be >= 0");
   for (size_t s = 0; s < sections.surfaces.size(); ++s) {
     const bool tip = s + 1 == sections.surfaces.size();
     const auto points = tip ? tip_section(sections.surfaces[s], options.tip_clearance) : sections.surfaces[s];

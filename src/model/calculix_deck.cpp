@@ -24,7 +24,8 @@ std::string calculix_deck(const SolidMesh& mesh, const std::vector<int>& clamped
     deck << "*BOUNDARY\n";
     for (int n : clamped_nodes) deck << n + 1 << ", 1, 3\n";
   }
-  deck << "*MATERIAL, NAME=MAT\n*ELASTIC\n" << material.youngs_modulus << ", " << material.poisson_ratio << "\n*DENSITY\n"
+  deck << "*MATERIAL, NAME=MAT\n*ELASTIC\n"
+       << material.youngs_modulus << ", " << material.poisson_ratio << "\n*DENSITY\n"
        << material.density << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=MAT\n";
   deck << "*STEP\n" << step << "\n*END STEP\n";
   return deck.str();

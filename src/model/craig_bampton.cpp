@@ -52,16 +52,18 @@ CraigBamptonModel craig_bampton(const SparseMatrix& mass, const SparseMatrix& st
   const int boundary_dofs = 3 * static_cast<int>(boundary.size());
   const int interior_dofs = n - boundary_dofs;
   if (fixed_interface_modes < 0 || fixed_interface_modes > interior_dofs)
-    throw std::invalid_argument("Craig-Bampton: " + std::to_string(fixed_interface_modes) + " fixed-interface modes asked, the interior has " +
-                                std::to_string(std::max(interior_dofs, 0)) + " dofs");
+    throw std::invalid_argument("Craig-Bampton: " + std::to_string(fixed_interface_modes) +
+                                " fixed-interface modes asked, the interior has " + std::to_string(std::max(interior_dofs, 0)) + " dofs");
 
   // Boundary dofs numbered in node order, interior dofs in their full-model order.
   std::vector<int> boundary_index(static_cast<size_t>(n), -1), interior_index(static_cast<size_t>(n), -1);
   for (size_t j = 0; j < boundary.size(); ++j)
     for (size_t d = 0; d < 3; ++d) {
       const int dof = boundary[j].dofs[d];
-      if (dof < 0 || dof >= n) throw std::invalid_argument("Craig-Bampton: boundary node " + std::to_string(j + 1) + " has a dof outside the model");
-      if (boundary_index[static_cast<size_t>(dof)] >= 0) throw std::invalid_argument("Craig-Bampton: dof " + std::to_string(dof + 1) + " is on the boundary twice");
+      if (dof < 0 || dof >= n)
+        throw std::invalid_argument("Craig-Bampton: boundary node " + std::to_string(j + 1) + " has a dof outside the model");
+      if (boundary_index[static_cast<size_t>(dof)] >= 0)
+        throw std::invalid_argument("Craig-Bampton: dof " + std::to_string(dof + 1) + " is on the boundary twice");
       boundary_index[static_cast<size_t>(dof)] = static_cast<int>(3 * j + d);
     }
   std::vector<int> interior_dof_list;
@@ -78,7 +80,8 @@ CraigBamptonModel craig_bampton(const SparseMatrix& mass, const SparseMatrix& st
   // Constraint modes: interior response to a unit displacement of each boundary dof, Psi = -K_ii^-1 K_ib.
   SparseLdlt k_ii_factor(k_ii);
   if (k_ii_factor.info() != Eigen::Success || (k_ii_factor.vectorD().array() <= 0.0).any())
-    throw std::runtime_error("Craig-Bampton: K_ii is not positive definite (the boundary and constraints do not fix the rigid-body motion)");
+    throw std::runtime_error(
+        "Craig-Bampton: K_ii is not positive definite (the boundary and constraints do not fix the rigid-body motion)");
   const Eigen::MatrixXd constraint_modes = -k_ii_factor.solve(Eigen::MatrixXd(k_ib));
 
   CraigBamptonModel out;

@@ -7,14 +7,16 @@ namespace hbtrack {
 
 CylindricalFrame cylindrical_frame(const Eigen::Vector3d& position, const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) {
   const double length = direction.norm();
-  if (!(length > 0.0) || !std::isfinite(length)) throw std::invalid_argument("cylindrical frame: the axis direction must be a finite, nonzero vector");
+  if (!(length > 0.0) || !std::isfinite(length))
+    throw std::invalid_argument("cylindrical frame: the axis direction must be a finite, nonzero vector");
   const Eigen::Vector3d axial = direction / length;
   const Eigen::Vector3d offset = position - origin;
   const Eigen::Vector3d off_axis = offset - offset.dot(axial) * axial;
   CylindricalFrame frame;
   frame.radius = off_axis.norm();
   // Relative to the point's distance from the origin: a point this close sits on the axis.
-  if (!(frame.radius > 1e-12 * std::max(1.0, offset.norm()))) throw std::invalid_argument("cylindrical frame: the point lies on the rotation axis");
+  if (!(frame.radius > 1e-12 * std::max(1.0, offset.norm())))
+    throw std::invalid_argument("cylindrical frame: the point lies on the rotation axis");
   const Eigen::Vector3d radial = off_axis / frame.radius;
   frame.directions.col(0) = radial;
   frame.directions.col(1) = axial.cross(radial);

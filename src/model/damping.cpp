@@ -5,8 +5,7 @@
 
 namespace hbtrack {
 
-Eigen::MatrixXd rayleigh_damping(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, double alpha,
-                                 double beta) {
+Eigen::MatrixXd rayleigh_damping(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, double alpha, double beta) {
   return alpha * mass + beta * stiffness;
 }
 
@@ -20,8 +19,7 @@ NormalModes normal_modes(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& sti
   return modes;
 }
 
-Eigen::MatrixXd modal_damping(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness,
-                              const Eigen::VectorXd& ratios) {
+Eigen::MatrixXd modal_damping(const Eigen::MatrixXd& mass, const Eigen::MatrixXd& stiffness, const Eigen::VectorXd& ratios) {
   if (ratios.size() == 0) throw std::invalid_argument("damping.ratios: needs at least one value");
   const NormalModes modes = normal_modes(mass, stiffness);
   const Eigen::Index n = modes.frequencies.size();

@@ -20,11 +20,11 @@ Eigen::Vector3d rim_point(const SectionBladeShape& shape, double pitch, double d
   return cartesian_point(hub(0), hub(1) - rho * depth, hub(2) + (0.5 - unit.y()) * width);
 }
 
-
 }  // namespace
 
 void SectionBladeOptions::validate() const {
-  if (chord_elements < 4 || chord_elements % 4 != 0) throw std::invalid_argument("section blade: chord_elements must be a positive multiple of 4");
+  if (chord_elements < 4 || chord_elements % 4 != 0)
+    throw std::invalid_argument("section blade: chord_elements must be a positive multiple of 4");
   if (thickness_elements < 2 || thickness_elements % 2 != 0) throw std::invalid_argument("section blade: thickness_elements must be even");
   if (span_elements_per_surface < 1) throw std::invalid_argument("section blade: span_elements_per_surface must be >= 1");
   if (refinement < 1 || refinement > 16) throw std::invalid_argument("section blade: refinement must be in 1..16");
@@ -45,8 +45,8 @@ SectionBlade generate_section_blade(const BladeSections& sections, const Section
   const std::array<int, 3> cells{options.chord_elements * r, options.thickness_elements * r, rim_layers + airfoil_layers};
   const long elements = long{cells[0]} * cells[1] * cells[2];
   if (elements > kMaxSectionBladeElements)
-    throw std::invalid_argument("section blade: " + std::to_string(elements) + " elements (surfaces x refinement), more than the limit of " +
-                                std::to_string(kMaxSectionBladeElements));
+    throw std::invalid_argument("section blade: " + std::to_string(elements) +
+                                " elements (surfaces x refinement), more than the limit of " + std::to_string(kMaxSectionBladeElements));
   const double hub_level = double(rim_layers) / cells[2];  // unit-cube span coordinate of the hub
   const double pitch = 2.0 * std::numbers::pi / sections.blade_count;
   StructuredHex20Grid grid(cells, [&](const Eigen::Vector3d& unit) -> Eigen::Vector3d {

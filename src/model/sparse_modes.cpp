@@ -21,7 +21,8 @@ namespace {
 class SparseShiftInvert {
  public:
   using Scalar = double;
-  SparseShiftInvert(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass, const SparseLdlt* stiffness_factor)
+  SparseShiftInvert(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                    const SparseLdlt* stiffness_factor)
       : stiffness_(stiffness), mass_(mass), stiffness_factor_(stiffness_factor) {}
   Eigen::Index rows() const { return stiffness_.rows(); }
   Eigen::Index cols() const { return stiffness_.cols(); }
@@ -32,7 +33,8 @@ class SparseShiftInvert {
     }
     own_factor_.compute(stiffness_ - sigma * mass_);
     if (own_factor_.info() != Eigen::Success || (own_factor_.vectorD().array() <= 0.0).any())
-      throw std::runtime_error("sparse modes: K - sigma M is not positive definite (rigid-body motion not constrained, or shift above the lowest mode)");
+      throw std::runtime_error(
+          "sparse modes: K - sigma M is not positive definite (rigid-body motion not constrained, or shift above the lowest mode)");
     factor_in_use_ = &own_factor_;
   }
   void perform_op(const double* x_in, double* y_out) const {
@@ -71,7 +73,8 @@ NormalModes lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eig
   const Eigen::Index n = stiffness.rows();
   if (stiffness.cols() != n || mass.rows() != n || mass.cols() != n)
     throw std::runtime_error("sparse modes: K and M must be square and of the same size");
-  if (count < 1 || count > n) throw std::runtime_error("sparse modes: asked for " + std::to_string(count) + " modes of a " + std::to_string(n) + "-dof model");
+  if (count < 1 || count > n)
+    throw std::runtime_error("sparse modes: asked for " + std::to_string(count) + " modes of a " + std::to_string(n) + "-dof model");
   // Lanczos needs a subspace of more than `count` vectors; below a few hundred dofs dense is as fast.
   const Eigen::Index subspace = std::max<Eigen::Index>(2 * count + 1, 20);
   if (n <= 300 || subspace >= n) return dense_lowest_modes(stiffness, mass, count);

@@ -17,8 +17,7 @@ namespace {
 void check_square(const Eigen::MatrixXd& m, int n, const char* what) {
   if (m.rows() != n || m.cols() != n)
     throw std::invalid_argument(std::string(what) + ": expected " + std::to_string(n) + "x" + std::to_string(n) +
-                                " (one row per dof), got " + std::to_string(m.rows()) + "x" +
-                                std::to_string(m.cols()));
+                                " (one row per dof), got " + std::to_string(m.rows()) + "x" + std::to_string(m.cols()));
   if (!m.allFinite()) throw std::invalid_argument(std::string(what) + ": contains NaN or Inf");
 }
 bool symmetric(const Eigen::MatrixXd& m) {
@@ -38,8 +37,7 @@ void StructuralModel::validate() const {
   check_square(damping, n, "damping.C");
   if (!symmetric(mass)) throw std::invalid_argument("model.M: must be symmetric");
   if (!symmetric(stiffness)) throw std::invalid_argument("model.K: must be symmetric");
-  if (Eigen::LLT<Eigen::MatrixXd>(mass).info() != Eigen::Success)
-    throw std::invalid_argument("model.M: must be positive definite");
+  if (Eigen::LLT<Eigen::MatrixXd>(mass).info() != Eigen::Success) throw std::invalid_argument("model.M: must be positive definite");
   for (const HarmonicForce& f : forcing) {
     if (f.order < 0) throw std::invalid_argument("forcing.harmonic: must be >= 0, got " + std::to_string(f.order));
     if (f.cos_part.size() != n || f.sin_part.size() != n)

@@ -43,9 +43,7 @@ std::vector<double> backbone_state_row(const BackbonePoint& p, const Eigen::Vect
   return state_row(p.omega, p.amplitude * u.head(unknowns));
 }
 
-json backbone_options_json(const BackboneOptions& o) {
-  return {{"mode", o.mode}, {"range", {o.amplitude_start, o.amplitude_end}}};
-}
+json backbone_options_json(const BackboneOptions& o) { return {{"mode", o.mode}, {"range", {o.amplitude_start, o.amplitude_end}}}; }
 
 void add_backbone_summary(json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const BackboneResult& r) {
   const auto& s = r.continuation.summary;
@@ -55,8 +53,8 @@ void add_backbone_summary(json& summary, const CaseDefinition& c, HarmonicBalanc
   json special = json::array();
   for (const auto& sp : r.continuation.special_points) {
     const BackbonePoint p = backbone_point(hbm, sp.u, sp.lambda, c.outputs);
-    json j = {{"type", sp.type}, {"index", sp.index}, {"located", sp.located}, {"amplitude", p.amplitude},
-              {"omega", p.omega}, {"damping_ratio", p.damping_ratio}};
+    json j = {{"type", sp.type},          {"index", sp.index}, {"located", sp.located},
+              {"amplitude", p.amplitude}, {"omega", p.omega},  {"damping_ratio", p.damping_ratio}};
     add_outputs(j, c, p.recorded);
     special.push_back(j);
   }

@@ -12,8 +12,8 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kFormat = 1;          // an NFRC (frc) checkpoint
-constexpr int kTrackingFormat = 101; // a tracking (track) checkpoint: not resumable as an NFRC
+constexpr int kFormat = 1;            // an NFRC (frc) checkpoint
+constexpr int kTrackingFormat = 101;  // a tracking (track) checkpoint: not resumable as an NFRC
 
 json vector_json(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
@@ -161,16 +161,17 @@ void write_tracking_state(const std::string& path, const FoldTrackingState& stat
   }
   json extrema = json::array();
   for (const FoldExtremum& e : state.extrema)
-    extrema.push_back({{"type", e.type}, {"located", e.located}, {"x", vector_json(e.x)}, {"omega", e.omega},
-                       {"parameter", e.parameter}, {"index", e.index}});
-  const json tracking = {{"leg", state.leg},
-                         {"leg_offset", state.leg_offset},
-                         {"curve_points", state.curve_points},
-                         {"borders", borders},
-                         {"lambda_slopes", state.lambda_slopes},
-                         {"finished_legs", legs},
+    extrema.push_back({{"type", e.type},
+                       {"located", e.located},
+                       {"x", vector_json(e.x)},
+                       {"omega", e.omega},
+                       {"parameter", e.parameter},
+                       {"index", e.index}});
+  const json tracking = {{"leg", state.leg},   {"leg_offset", state.leg_offset},       {"curve_points", state.curve_points},
+                         {"borders", borders}, {"lambda_slopes", state.lambda_slopes}, {"finished_legs", legs},
                          {"extrema", extrema}};
-  write_json_atomically(path, {{"format", kTrackingFormat}, {"settings", settings}, {"tracking", tracking}, {"state", state_json(state.continuation)}});
+  write_json_atomically(
+      path, {{"format", kTrackingFormat}, {"settings", settings}, {"tracking", tracking}, {"state", state_json(state.continuation)}});
 }
 
 SavedTracking read_tracking_state(const std::string& path) {

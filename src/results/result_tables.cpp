@@ -50,7 +50,11 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
             {"locate", co.locate},
             {"reuse_factorization", co.reuse_factorization},
             {"contraction", co.contraction}}},
-          {"stability", {{"method", to_string(c.nfrc.stability.method)}, {"monodromy_steps", c.nfrc.stability.monodromy_steps}, {"hill_solver", to_string(c.nfrc.stability.hill_solver)}, {"cross_check", to_string(c.nfrc.stability.cross_check)}}}};
+          {"stability",
+           {{"method", to_string(c.nfrc.stability.method)},
+            {"monodromy_steps", c.nfrc.stability.monodromy_steps},
+            {"hill_solver", to_string(c.nfrc.stability.hill_solver)},
+            {"cross_check", to_string(c.nfrc.stability.cross_check)}}}};
 }
 
 json outputs_json(const CaseDefinition& c) {
@@ -152,8 +156,8 @@ std::vector<std::vector<double>> stability_rows(int point, const RecordedPoint& 
   std::vector<std::vector<double>> rows;
   for (size_t k = 0; k < order.size(); ++k) {
     const std::complex<double> exponent = p.floquet_exponents(order[k]), multiplier = p.floquet_multipliers(order[k]);
-    rows.push_back({static_cast<double>(point), p.omega, static_cast<double>(k), exponent.real(), exponent.imag(),
-                    multiplier.real(), multiplier.imag(), stability_method_code(p.stability_method)});
+    rows.push_back({static_cast<double>(point), p.omega, static_cast<double>(k), exponent.real(), exponent.imag(), multiplier.real(),
+                    multiplier.imag(), stability_method_code(p.stability_method)});
   }
   return rows;
 }
@@ -232,10 +236,17 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   int newton = 0, jacobians = 0, residuals = 0, factorizations = 0, chords = 0;
   for (size_t i = 0; i < r.legs.size(); ++i) {
     const ContinuationSummary& s = r.legs[i];
-    legs.push_back({{"leg", i + 1}, {"towards", i == 0 ? "min" : "max"}, {"stop_reason", to_string(s.stop_reason)}, {"points", s.points},
-                    {"newton_iterations", s.newton_iterations}, {"failed_steps", s.failed_steps},
-                    {"jacobian_evaluations", s.jacobian_evaluations}, {"chord_iterations", s.chord_iterations},
-                    {"residual_evaluations", s.residual_evaluations}, {"factorizations", s.factorizations}, {"wall_s", s.wall_s}});
+    legs.push_back({{"leg", i + 1},
+                    {"towards", i == 0 ? "min" : "max"},
+                    {"stop_reason", to_string(s.stop_reason)},
+                    {"points", s.points},
+                    {"newton_iterations", s.newton_iterations},
+                    {"failed_steps", s.failed_steps},
+                    {"jacobian_evaluations", s.jacobian_evaluations},
+                    {"chord_iterations", s.chord_iterations},
+                    {"residual_evaluations", s.residual_evaluations},
+                    {"factorizations", s.factorizations},
+                    {"wall_s", s.wall_s}});
     newton += s.newton_iterations;
     jacobians += s.jacobian_evaluations;
     residuals += s.residual_evaluations;

@@ -52,12 +52,14 @@ CsvAppender CsvAppender::keep_leading_rows(const std::string& path, const std::v
 }
 
 CsvAppender CsvAppender::continuing(const std::string& path, const std::vector<std::string>& header, int rows) {
-  return keep_leading_rows(path, header, [rows](const std::string&, int found) { return found < rows; }, rows);
+  return keep_leading_rows(
+      path, header, [rows](const std::string&, int found) { return found < rows; }, rows);
 }
 
 CsvAppender CsvAppender::continuing_points(const std::string& path, const std::vector<std::string>& header, int points) {
   // Rows are in point order: keep them up to the first of a point beyond the checkpoint.
-  return keep_leading_rows(path, header, [points](const std::string& line, int) { return std::atof(line.c_str()) < points; }, 0);
+  return keep_leading_rows(
+      path, header, [points](const std::string& line, int) { return std::atof(line.c_str()) < points; }, 0);
 }
 
 void CsvAppender::append(const std::vector<double>& row) {

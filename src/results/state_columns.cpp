@@ -74,7 +74,8 @@ std::vector<double> dof_state_row(const HarmonicBalance& hbm, double omega, cons
 
 bool is_unknown_layout(const std::vector<std::string>& columns) { return !columns.empty() && columns.front() == "x0"; }
 
-Eigen::VectorXd unknowns_from_state(const HarmonicBalance& hbm, const std::vector<std::string>& columns, const std::vector<double>& values) {
+Eigen::VectorXd unknowns_from_state(const HarmonicBalance& hbm, const std::vector<std::string>& columns,
+                                    const std::vector<double>& values) {
   if (is_unknown_layout(columns)) return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
   std::unordered_map<std::string, size_t> position;
   for (size_t i = 0; i < columns.size(); ++i) position.emplace(columns[i], i);
@@ -87,7 +88,8 @@ Eigen::VectorXd unknowns_from_state(const HarmonicBalance& hbm, const std::vecto
       const std::string column = harmonic_column(hbm, name, c);
       const auto found = position.find(column);
       if (found == position.end() || found->second >= values.size())
-        throw std::invalid_argument("no column " + column + " (the case's dof " + name + " at harmonic " + harmonic_label(basis.harmonic_of(c), hbm.subharmonic()) +
+        throw std::invalid_argument("no column " + column + " (the case's dof " + name + " at harmonic " +
+                                    harmonic_label(basis.harmonic_of(c), hbm.subharmonic()) +
                                     "): results of another case or harmonic balance?");
       const double stored = values[found->second];
       x(c * q + r) = basis.harmonic_of(c) == 0 ? 2.0 * stored : stored;

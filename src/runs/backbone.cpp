@@ -33,7 +33,8 @@ RunReport backbone(CaseDefinition c, BackboneOptions options, ResultSink& sink, 
     throw CaseError("harmonic_balance: the backbone needs harmonic 1 among the harmonics and subharmonic = 1");
   const NormalModes modes = normal_modes(c.model.mass, c.model.stiffness);
   if (!(modes.frequencies(options.mode - 1) > 1e-6 * modes.frequencies.maxCoeff()))
-    throw CaseError("--mode: mode " + std::to_string(options.mode) + " has no positive frequency (a rigid-body mode): follow a flexible one");
+    throw CaseError("--mode: mode " + std::to_string(options.mode) +
+                    " has no positive frequency (a rigid-body mode): follow a flexible one");
   options.continuation = c.nfrc.continuation;
   json summary = {{"verb", "backbone"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["backbone"] = backbone_options_json(options);

@@ -16,7 +16,8 @@ void require_same_settings(const std::string& path, const json& saved, const jso
   // Named first: a diff of two hashes says less than what they stand for.
   const json saved_model = saved.value("model_fnv1a", json("(none: written before model hashes)"));
   if (settings.contains("model_fnv1a") && saved_model != settings["model_fnv1a"])
-    throw CaseError("--resume: " + path + " was computed with another model (mass, damping, stiffness, forcing or elements differ: model_fnv1a " +
+    throw CaseError("--resume: " + path +
+                    " was computed with another model (mass, damping, stiffness, forcing or elements differ: model_fnv1a " +
                     saved_model.dump() + " there, " + settings["model_fnv1a"].dump() + " now)");
   if (saved != settings)
     throw CaseError("--resume: " + path +

@@ -35,13 +35,15 @@ double signed_circle_distance(const Eigen::VectorXcd& mu, Candidate candidate, i
 }  // namespace
 
 double period_doubling_test(const Eigen::VectorXcd& mu) {
-  return signed_circle_distance(mu, [](std::complex<double> m) { return is_real(m) && m.real() < 0; }, 1);
+  return signed_circle_distance(
+      mu, [](std::complex<double> m) { return is_real(m) && m.real() < 0; }, 1);
 }
 
 double neimark_sacker_test(const Eigen::VectorXcd& mu) {
   // Complex multipliers cross in conjugate pairs. A collision of two real multipliers outside
   // the circle into a complex pair also flips it: a located NS point is confirmed below.
-  return signed_circle_distance(mu, [](std::complex<double> m) { return !is_real(m); }, 2);
+  return signed_circle_distance(
+      mu, [](std::complex<double> m) { return !is_real(m); }, 2);
 }
 
 std::string crossing_type(const Eigen::VectorXcd& mu, double tolerance, double real_tolerance) {

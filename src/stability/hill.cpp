@@ -65,8 +65,8 @@ Eigen::VectorXcd eigenvalues_near_axis(const HillSystem& system, int count, doub
 
 // Every eigenvalue of the first-order form [p; l p]: A = [[0, I], [-D2^-1 J, -D2^-1 D1]], and
 // the p part of its eigenvectors.
-Eigen::VectorXcd all_eigenvalues(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping,
-                                 const Eigen::MatrixXd& mass_matrix, int blocks, Eigen::MatrixXcd& vectors) {
+Eigen::VectorXcd all_eigenvalues(const Eigen::MatrixXd& jacobian, const Eigen::MatrixXd& damping, const Eigen::MatrixXd& mass_matrix,
+                                 int blocks, Eigen::MatrixXcd& vectors) {
   const Eigen::Index size = jacobian.rows(), n = mass_matrix.rows();
   const Eigen::LLT<Eigen::MatrixXd> mass(mass_matrix);
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * size, 2 * size);

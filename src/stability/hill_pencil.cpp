@@ -23,7 +23,8 @@ MatrixXd group_block(const HillSystem& system, const std::vector<int>& blocks, d
   MatrixXd out(nr * static_cast<Index>(blocks.size()), nc * static_cast<Index>(blocks.size()));
   for (size_t i = 0; i < blocks.size(); ++i)
     for (size_t j = 0; j < blocks.size(); ++j)
-      out.block(static_cast<Index>(i) * nr, static_cast<Index>(j) * nc, nr, nc) = system.linear_block(blocks[i], blocks[j], shift, rows, cols);
+      out.block(static_cast<Index>(i) * nr, static_cast<Index>(j) * nc, nr, nc) =
+          system.linear_block(blocks[i], blocks[j], shift, rows, cols);
   return out;
 }
 

@@ -21,7 +21,7 @@ class HillPencil {
   Eigen::VectorXd solve(const Eigen::VectorXd& r) const;
 
  private:
-  struct Group {  // one harmonic: its coefficient blocks' linear-dof and coupled-dof positions
+  struct Group {                                 // one harmonic: its coefficient blocks' linear-dof and coupled-dof positions
     std::vector<Eigen::Index> linear;            // in the full vector
     std::vector<Eigen::Index> coupled_in_schur;  // in the Schur unknowns (harmonic-major over the coupled dofs)
     Eigen::PartialPivLU<Eigen::MatrixXd> lu;     // of P[linear, linear]
@@ -30,7 +30,7 @@ class HillPencil {
   };
   std::vector<Group> groups_;
   std::vector<Eigen::Index> schur_positions_;  // the full-vector position of each Schur unknown
-  DenseLU schur_;  // the one large factorization: the continuation's LU (OpenBLAS when built with it)
+  DenseLU schur_;                              // the one large factorization: the continuation's LU (OpenBLAS when built with it)
   Eigen::Index size_;
 };
 

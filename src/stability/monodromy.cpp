@@ -112,7 +112,9 @@ FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, 
     const std::vector<double> props = element->property_values(hbm.parameters());
     if (element->history_dependent()) {
       if (element->history_state_size() == 0)
-        throw std::invalid_argument("element " + element->type() + " has no time-stepping form: monodromy stability does not support it (use stability.method = \"hill\")");
+        throw std::invalid_argument(
+            "element " + element->type() +
+            " has no time-stepping form: monodromy stability does not support it (use stability.method = \"hill\")");
       tracks.emplace_back(*element, props, disp, omega, dt, m);
       m += element->history_state_size();
       continue;
@@ -211,7 +213,8 @@ FloquetResult monodromy_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, 
   full_map << phi, zeta;
   MatrixXd reduced(kept.size(), kept.size());
   for (size_t r = 0; r < kept.size(); ++r)
-    for (size_t c = 0; c < kept.size(); ++c) reduced(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = full_map(kept[r], kept[c]);
+    for (size_t c = 0; c < kept.size(); ++c)
+      reduced(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = full_map(kept[r], kept[c]);
   Eigen::VectorXcd mu = dense_eigenvalues(reduced);
   if (mu.size() > 2 * n) {
     // A slider that slips forgets its position: its multiplier is 0 (round-off). The 2n of

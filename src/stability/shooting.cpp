@@ -92,8 +92,8 @@ class PeriodFlow {
     return (2 * s3 - 3 * s2 + 1) * z0 + (s3 - 2 * s2 + s) * h * f0 + (-2 * s3 + 3 * s2) * z1 + (s3 - s2) * h * f1;
   }
   // The surface the step crosses first (-1: none); h is cut to end on it.
-  int earliest_crossing(double& h, const VectorXd& z0, const VectorXd& f0, const VectorXd& z1, const VectorXd& f1,
-                        const VectorXd& g1, const VectorXd& side) {
+  int earliest_crossing(double& h, const VectorXd& z0, const VectorXd& f0, const VectorXd& z1, const VectorXd& f1, const VectorXd& g1,
+                        const VectorXd& side) {
     int first = -1;
     double first_s = 1.0;
     VectorXd g;
@@ -124,8 +124,7 @@ class PeriodFlow {
     return first;
   }
   // Phi <- exp(Omega) Phi, Omega = h/2 (A1 + A2) + sqrt(3) h^2 / 12 [A2, A1] (Magnus, order 4).
-  void advance_variational(double h, const VectorXd& z0, const VectorXd& f0, const VectorXd& z1, const VectorXd& f1,
-                           MatrixXd& phi) {
+  void advance_variational(double h, const VectorXd& z0, const VectorXd& f0, const VectorXd& z1, const VectorXd& f1, MatrixXd& phi) {
     const double c = std::sqrt(3.0) / 6.0;
     const MatrixXd a1 = tangent(hermite(0.5 - c, h, z0, f0, z1, f1));
     const MatrixXd a2 = tangent(hermite(0.5 + c, h, z0, f0, z1, f1));
@@ -185,8 +184,8 @@ FloquetResult shooting_floquet(HarmonicBalance& hbm, const VectorXd& x, double o
   FloquetResult r;
   r.method = StabilityMethod::shooting;
   const double period = hbm.subharmonic() * equation.period();
-  const Eigen::VectorXcd mu = phi.allFinite() ? dense_eigenvalues(phi)
-                                              : Eigen::VectorXcd::Constant(2 * n, std::complex<double>(INFINITY, 0));
+  const Eigen::VectorXcd mu =
+      phi.allFinite() ? dense_eigenvalues(phi) : Eigen::VectorXcd::Constant(2 * n, std::complex<double>(INFINITY, 0));
   r.exponents = mu.array().log() / period;
   finish_floquet(r, hbm.fundamental(omega), 1e-9 * omega);
   r.multipliers = mu;

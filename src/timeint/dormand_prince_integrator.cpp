@@ -14,8 +14,7 @@ namespace odeint = boost::numeric::odeint;
 using OdeState = std::vector<double>;
 
 void DormandPrinceOptions::validate() const {
-  if (samples_per_period < 1)
-    throw std::invalid_argument("samples_per_period: must be >= 1, got " + std::to_string(samples_per_period));
+  if (samples_per_period < 1) throw std::invalid_argument("samples_per_period: must be >= 1, got " + std::to_string(samples_per_period));
   if (!(relative_tolerance > 0) || !std::isfinite(relative_tolerance)) throw std::invalid_argument("relative_tolerance: must be > 0");
   if (!(absolute_tolerance > 0) || !std::isfinite(absolute_tolerance)) throw std::invalid_argument("absolute_tolerance: must be > 0");
 }

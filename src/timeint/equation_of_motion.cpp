@@ -7,12 +7,10 @@
 
 namespace hbtrack {
 
-EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementList& elements,
-                                   const ParameterSet& parameters, double omega)
+EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementList& elements, const ParameterSet& parameters, double omega)
     : mass_(model.mass), damping_(model.damping), stiffness_(model.stiffness), omega_(omega) {
   model.validate();
-  if (!(omega > 0) || !std::isfinite(omega))
-    throw std::invalid_argument("omega: must be > 0 and finite, got " + std::to_string(omega));
+  if (!(omega > 0) || !std::isfinite(omega)) throw std::invalid_argument("omega: must be > 0 and finite, got " + std::to_string(omega));
   int history_size_so_far = 0;
   const int amplitude_index = parameters.find("amplitude");
   const double amplitude = amplitude_index < 0 ? 1.0 : parameters.value(amplitude_index);
@@ -22,7 +20,9 @@ EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementLi
     if (element->properties.size() != element->property_names().size())
       throw std::invalid_argument("element " + element->type() + ": property count does not match");
     if (element->uses_linear_residual())
-      throw std::invalid_argument("element " + element->type() + " takes its forces from the harmonic-balance residual (law = \"dlft\"): time integration needs a time-domain law (law = \"penalty\")");
+      throw std::invalid_argument("element " + element->type() +
+                                  " takes its forces from the harmonic-balance residual (law = \"dlft\"): time integration needs a "
+                                  "time-domain law (law = \"penalty\")");
     if (element->history_dependent() && element->history_state_size() == 0)
       throw std::invalid_argument("element " + element->type() + " has no time-stepping form: time integration does not support it");
     for (int d : element->dofs)
@@ -44,8 +44,8 @@ EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementLi
 
 void EquationOfMotion::start_history(double time, const Eigen::VectorXd& history) {
   if (history.size() != 0 && history.size() != history_.size())
-    throw std::invalid_argument("EquationOfMotion::start_history: expected " + std::to_string(history_.size()) + " internal variables, got " +
-                                std::to_string(history.size()));
+    throw std::invalid_argument("EquationOfMotion::start_history: expected " + std::to_string(history_.size()) +
+                                " internal variables, got " + std::to_string(history.size()));
   history_ = history.size() ? history : Eigen::VectorXd::Zero(history_.size());
   history_time_ = time;
 }

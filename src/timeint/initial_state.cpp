@@ -6,9 +6,7 @@
 
 namespace hbtrack {
 
-MotionState rest_state(int dofs, double time) {
-  return {time, Eigen::VectorXd::Zero(dofs), Eigen::VectorXd::Zero(dofs)};
-}
+MotionState rest_state(int dofs, double time) { return {time, Eigen::VectorXd::Zero(dofs), Eigen::VectorXd::Zero(dofs)}; }
 
 MotionState state_from_harmonics(const Eigen::VectorXd& full, int dofs, int harmonics, double omega, double time) {
   if (full.size() != static_cast<Eigen::Index>(dofs) * (2 * harmonics + 1))

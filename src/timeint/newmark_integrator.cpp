@@ -113,8 +113,8 @@ bool NewmarkIntegrator::solve_step(double t_next) {
     inertia_.noalias() = mass * a_;
     residual_ = inertia_ + (1.0 + alpha) * q_ - load_;
     // Relative to the largest term of the balance: the units of the model do not matter.
-    const double reference = std::max({inertia_.lpNorm<Eigen::Infinity>(), (1.0 + alpha) * q_.lpNorm<Eigen::Infinity>(),
-                                       load_.lpNorm<Eigen::Infinity>()});
+    const double reference =
+        std::max({inertia_.lpNorm<Eigen::Infinity>(), (1.0 + alpha) * q_.lpNorm<Eigen::Infinity>(), load_.lpNorm<Eigen::Infinity>()});
     const double error = residual_.lpNorm<Eigen::Infinity>();
     if (!std::isfinite(error)) {
       failure_ = {StopReason::diverged, "non-finite forces at t = " + std::to_string(t_next)};
@@ -122,9 +122,9 @@ bool NewmarkIntegrator::solve_step(double t_next) {
     }
     if (error <= options_.newton_tolerance * reference || at_round_off) break;
     if (iteration == options_.max_newton_iterations) {
-      failure_ = {StopReason::newton_failure, "Newton did not converge in " + std::to_string(iteration) + " iterations at t = " +
-                                        std::to_string(t_next) + " (residual " + std::to_string(error / reference) +
-                                        " of the largest force)"};
+      failure_ = {StopReason::newton_failure, "Newton did not converge in " + std::to_string(iteration) +
+                                                  " iterations at t = " + std::to_string(t_next) + " (residual " +
+                                                  std::to_string(error / reference) + " of the largest force)"};
       return false;
     }
     tangent_ = a_per_x * mass + (1.0 + alpha) * (equation_.stiffness() + df_dx_ + v_per_x * (equation_.damping() + df_dv_));
@@ -160,8 +160,7 @@ bool NewmarkIntegrator::advance_period(const SampleObserver& observe) {
   for (int i = 0; i < steps; ++i) {
     if (observe) observe(i, state_);
     // Step ends from the period index, so rounding does not accumulate over many periods.
-    const double t_next = i + 1 == steps ? start_time_ + static_cast<double>(period_index_ + 1) * period
-                                         : t0 + (i + 1) * (period / steps);
+    const double t_next = i + 1 == steps ? start_time_ + static_cast<double>(period_index_ + 1) * period : t0 + (i + 1) * (period / steps);
     if (!step(t_next, 0)) return false;
   }
   ++period_index_;

@@ -25,8 +25,7 @@ double PeriodSummary::first_harmonic() const { return harmonics.size() >= 3 ? st
 
 PeriodSummary summarise_period(const Eigen::VectorXd& samples, int harmonics) {
   const Eigen::Index n = samples.size();
-  if (harmonics < 0 || n < 2 * harmonics + 1)
-    throw std::invalid_argument("summarise_period: needs at least 2H+1 samples per period");
+  if (harmonics < 0 || n < 2 * harmonics + 1) throw std::invalid_argument("summarise_period: needs at least 2H+1 samples per period");
   PeriodSummary s;
   Eigen::Index imax = 0, imin = 0;
   s.max = samples.maxCoeff(&imax);

@@ -33,14 +33,13 @@ struct PeriodRecord {
 
 }  // namespace
 
-SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const MotionState& initial,
-                                            const std::vector<OutputDof>& outputs, const SteadyStateOptions& options,
-                                            const PeriodObserver& observer) {
+SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const MotionState& initial, const std::vector<OutputDof>& outputs,
+                                            const SteadyStateOptions& options, const PeriodObserver& observer) {
   options.validate();
   const int samples = integrator.samples_per_period();
   if (samples < 2 * options.harmonics + 1)
-    throw std::invalid_argument("samples per period: must be >= 2*harmonics+1 = " + std::to_string(2 * options.harmonics + 1) +
-                                ", got " + std::to_string(samples));
+    throw std::invalid_argument("samples per period: must be >= 2*harmonics+1 = " + std::to_string(2 * options.harmonics + 1) + ", got " +
+                                std::to_string(samples));
   const int n = integrator.equation().dofs();
   for (const OutputDof& o : outputs)
     if (o.dof < 0 || o.dof >= n) throw std::invalid_argument("output " + o.name + ": dof index out of range");
@@ -78,8 +77,7 @@ SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const Mo
     // (kept out of the records, whose values would be meaningless).
     if (!end.x.allFinite() || !end.v.allFinite() || !(period_scale <= kBlowUpFactor * first_scale)) {
       result.stop_reason = StopReason::diverged;
-      result.message = "the state blew up (non-finite or 1e8 times its first period's size) in period " +
-                       std::to_string(result.periods);
+      result.message = "the state blew up (non-finite or 1e8 times its first period's size) in period " + std::to_string(result.periods);
       break;
     }
     recorded.push_back(current);
@@ -92,8 +90,8 @@ SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const Mo
     // (a start on an HBM solution); below 1 % of the tolerance the change is round-off noise
     // and its growth means nothing.
     const bool small = result.last_change <= options.tolerance;
-    const bool growing = result.periods > 1 && result.last_change > previous_change &&
-                         result.last_change > kNoiseFraction * options.tolerance;
+    const bool growing =
+        result.periods > 1 && result.last_change > previous_change && result.last_change > kNoiseFraction * options.tolerance;
     confirmed = small && !growing ? confirmed + 1 : 0;
     if (confirmed >= options.confirmations) {
       result.converged = true;

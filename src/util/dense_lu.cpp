@@ -7,8 +7,8 @@
 extern "C" {
 // LAPACK's Fortran interface as OpenBLAS exports it (column-major, 1-based pivots).
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
-void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv, double* b,
-             const int* ldb, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv, double* b, const int* ldb,
+             int* info);
 void openblas_set_num_threads(int threads);
 char* openblas_get_corename(void);
 }
@@ -57,7 +57,7 @@ void DenseLU::compute(const MatrixXd& a) {
   for (int i = 0; i < n; ++i) swaps.indices()(i) = pivots_[static_cast<size_t>(i)] - 1;
   permutation_ = swaps;
 #else
-  const Eigen::PartialPivLU<Eigen::Ref<MatrixXd>> lu(factors_);  // factors in place
+  const Eigen::PartialPivLU<Eigen::Ref<MatrixXd> > lu(factors_);  // factors in place
   permutation_ = lu.permutationP();
   (void)n;
 #endif
@@ -128,8 +128,7 @@ bool refine_last_unit_solution(const DenseLU& nearby, const MatrixXd& a, VectorX
   return false;
 }
 
-double estimate_norm1(Eigen::Index n, const std::function<void(VectorXd&)>& apply,
-                      const std::function<void(VectorXd&)>& apply_transposed) {
+double estimate_norm1(Eigen::Index n, const std::function<void(VectorXd&)>& apply, const std::function<void(VectorXd&)>& apply_transposed) {
   if (n == 0) return 0.0;
   // Hager: maximise ||M x||_1 over the unit 1-norm ball by steepest ascent from the centre;
   // each step is one product with M and one with M^T, and it stops at a vertex.

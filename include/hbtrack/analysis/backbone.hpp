@@ -15,11 +15,11 @@
 namespace hbtrack {
 
 struct BackboneOptions {
-  int mode = 1;                 // linear mode followed, from 1 (ascending frequency)
-  double amplitude_start = 0;   // modal amplitude a: from the nearly linear mode at this value
-  double amplitude_end = 0;     // up to this one
+  int mode = 1;                // linear mode followed, from 1 (ascending frequency)
+  double amplitude_start = 0;  // modal amplitude a: from the nearly linear mode at this value
+  double amplitude_end = 0;    // up to this one
   ContinuationOptions continuation;
-  void validate() const;        // throws std::invalid_argument naming the field
+  void validate() const;  // throws std::invalid_argument naming the field
 };
 
 // The EPMC residual on every dof (the harmonic balance system must be built with
@@ -31,8 +31,7 @@ class EpmcProblem final : public ContinuationProblem {
   EpmcProblem(const HarmonicBalance& hbm, const Eigen::VectorXd& mode, double psi_scale, double omega_scale, double xi_scale,
               double log_amplitude_scale, double residual_scale);
   int size() const override { return hbm_.unknowns() + 2; }
-  void evaluate(const Eigen::VectorXd& u, double lambda, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
-                Eigen::VectorXd* r_lambda) override;
+  void evaluate(const Eigen::VectorXd& u, double lambda, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, Eigen::VectorXd* r_lambda) override;
   Eigen::VectorXd unknown_scale(const Eigen::VectorXd& u) const override;
   double parameter_scale() const override { return log_amplitude_scale_; }
   double residual_scale() const override { return residual_scale_; }
@@ -50,11 +49,11 @@ class EpmcProblem final : public ContinuationProblem {
 };
 
 struct BackbonePoint {
-  double amplitude = 0;      // a: sqrt(x_1^T M x_1), the first harmonic's modal amplitude
-  double omega = 0;          // rad/s
-  double xi = 0;             // the EPMC damping coefficient (1/s)
-  double damping_ratio = 0;  // xi / (2 omega)
-  RecordedPoint recorded;    // the outputs of x = a psi
+  double amplitude = 0;                    // a: sqrt(x_1^T M x_1), the first harmonic's modal amplitude
+  double omega = 0;                        // rad/s
+  double xi = 0;                           // the EPMC damping coefficient (1/s)
+  double damping_ratio = 0;                // xi / (2 omega)
+  RecordedPoint recorded;                  // the outputs of x = a psi
   std::vector<Eigen::VectorXd> harmonics;  // per output: harmonic_magnitude j = 0..H (0: the mean a0/2)
 };
 

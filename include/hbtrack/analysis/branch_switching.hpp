@@ -14,8 +14,8 @@ struct SwitchedBranch {
   Eigen::VectorXd tangent;  // the new branch's unit tangent at the BP, scaled ([x ./ s; omega / s_omega])
   Eigen::VectorXd x1;       // the first point on the new branch
   double omega1 = 0;
-  NfrcResult away;          // from that point, away from the BP
-  NfrcResult through;       // from that point, back through the BP to the other side (empty: one leg)
+  NfrcResult away;     // from that point, away from the BP
+  NfrcResult through;  // from that point, back through the BP to the other side (empty: one leg)
 };
 
 // x_bp, omega_bp: the BP; known: the known branch's direction there ([dx; d omega], e.g. the
@@ -29,7 +29,7 @@ struct SwitchedBranch {
 // that leg: stop_reason "interrupted"). Throws std::runtime_error when no point of a new branch
 // is found.
 SwitchedBranch switch_at_branch_point(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
-                                      const Eigen::VectorXd& x_bp, double omega_bp, const Eigen::VectorXd& known,
-                                      bool both_ways = true, bool local_steps = false, const RecordedObserver& leg_observer = {});
+                                      const Eigen::VectorXd& x_bp, double omega_bp, const Eigen::VectorXd& known, bool both_ways = true,
+                                      bool local_steps = false, const RecordedObserver& leg_observer = {});
 
 }  // namespace hbtrack

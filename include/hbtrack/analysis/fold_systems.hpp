@@ -42,8 +42,7 @@ class FoldSystem : public ContinuationProblem {
   double omega(const Eigen::VectorXd& u) const { return u(u.size() - 1); }
   // Unknowns at an approximate fold (x, omega) whose R_x has right and left null vectors
   // `right` and `left` (unit).
-  virtual Eigen::VectorXd start(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& right,
-                                const Eigen::VectorXd& left) = 0;
+  virtual Eigen::VectorXd start(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& right, const Eigen::VectorXd& left) = 0;
   // After each accepted point (the bordered system renews its borders there).
   virtual void accepted(const Eigen::VectorXd& /*u*/, double /*gamma*/) {}
   // What the system carries from point to point besides the unknowns (the bordered system's
@@ -70,8 +69,7 @@ class FoldSystem : public ContinuationProblem {
   void along(const Eigen::VectorXd& x, double omega, double gamma, const Eigen::VectorXd& d, const Evaluation& base,
              SecondDerivatives& out);
   // (R_gamma(xs) - R_gamma(x)) / eps with R_gamma(x) in `base`; zero for the amplitude.
-  void parameter_derivative_change(const Eigen::VectorXd& xs, double omega, double eps, const Evaluation& base,
-                                   Eigen::VectorXd& out);
+  void parameter_derivative_change(const Eigen::VectorXd& xs, double omega, double eps, const Evaluation& base, Eigen::VectorXd& out);
   // The same derivatives seen through a left vector w, all the bordered system needs:
   // d/de of R_x(x + e d)^T w, w . R_omega and w . R_gamma. Only the nonlinear forces' parts of
   // R_x and R_omega are differenced, and their products with w are formed in the time domain,
@@ -100,10 +98,8 @@ class ExtendedFoldSystem final : public FoldSystem {
   using FoldSystem::FoldSystem;
   std::string method() const override { return "extended"; }
   int size() const override { return 2 * q_ + 1; }
-  void evaluate(const Eigen::VectorXd& u, double gamma, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
-                Eigen::VectorXd* r_gamma) override;
-  Eigen::VectorXd start(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& right,
-                        const Eigen::VectorXd& left) override;
+  void evaluate(const Eigen::VectorXd& u, double gamma, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, Eigen::VectorXd* r_gamma) override;
+  Eigen::VectorXd start(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& right, const Eigen::VectorXd& left) override;
   Eigen::VectorXd unknown_scale(const Eigen::VectorXd& u) const override;
 };
 
@@ -112,10 +108,8 @@ class BorderedFoldSystem final : public FoldSystem {
   using FoldSystem::FoldSystem;
   std::string method() const override { return "bordered"; }
   int size() const override { return q_ + 1; }
-  void evaluate(const Eigen::VectorXd& u, double gamma, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
-                Eigen::VectorXd* r_gamma) override;
-  Eigen::VectorXd start(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& right,
-                        const Eigen::VectorXd& left) override;
+  void evaluate(const Eigen::VectorXd& u, double gamma, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, Eigen::VectorXd* r_gamma) override;
+  Eigen::VectorXd start(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& right, const Eigen::VectorXd& left) override;
   void accepted(const Eigen::VectorXd& u, double gamma) override;
   std::vector<Eigen::VectorXd> borders() const override { return {b_, c_}; }
   void restore_borders(const std::vector<Eigen::VectorXd>& borders) override;
@@ -133,8 +127,8 @@ class BorderedFoldSystem final : public FoldSystem {
   DenseLU border_lu_;              // factors of the last bordered matrix factored
   int border_factorizations_ = 0;
   Eigen::VectorXd solution_, correction_;  // refinement workspaces
-  Eigen::VectorXd b_, c_;  // borders: left and right null vectors of the last accepted point
-  Eigen::VectorXd v_, w_;  // of the last evaluation
+  Eigen::VectorXd b_, c_;                  // borders: left and right null vectors of the last accepted point
+  Eigen::VectorXd v_, w_;                  // of the last evaluation
   double g_ = 0;
   Eigen::VectorXd last_u_;  // where v_ and w_ were computed (w_ only if has_left_)
   double last_gamma_ = 0;

@@ -59,14 +59,14 @@ using FoldObserver = std::function<bool(const FoldCurvePoint&, int index)>;
 
 // A tracking run between two steps: enough to go on exactly as the uninterrupted run would.
 struct FoldTrackingState {
-  int leg = 1;                                  // the leg under way
-  int leg_offset = 0;                           // curve index of its point k is leg_offset + k (k >= 1)
-  int curve_points = 0;                         // curve points accepted so far, all legs
-  ContinuationState continuation;               // the leg's continuation engine
-  std::vector<Eigen::VectorXd> borders;         // the fold system's (FoldSystem::borders)
-  std::vector<double> lambda_slopes;            // the leg's tangents' parameter components, per point
+  int leg = 1;                           // the leg under way
+  int leg_offset = 0;                    // curve index of its point k is leg_offset + k (k >= 1)
+  int curve_points = 0;                  // curve points accepted so far, all legs
+  ContinuationState continuation;        // the leg's continuation engine
+  std::vector<Eigen::VectorXd> borders;  // the fold system's (FoldSystem::borders)
+  std::vector<double> lambda_slopes;     // the leg's tangents' parameter components, per point
   std::vector<ContinuationSummary> finished_legs;
-  std::vector<FoldExtremum> extrema;            // of the finished legs (recorded outputs not kept)
+  std::vector<FoldExtremum> extrema;  // of the finished legs (recorded outputs not kept)
 };
 
 // Optional checkpoint hooks of track_fold, as ContinuationRestart for one branch.
@@ -77,9 +77,8 @@ struct FoldTrackingRestart {
 
 // Follows the limit point near (x, omega) (an LP located on an NFRC at the parameter's current
 // value) while parameter `parameter` of hbm moves within [parameter_min, parameter_max].
-FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
-                              const FoldScales& scales, const FoldTrackingOptions& options,
-                              const std::vector<OutputDof>& outputs, const FoldObserver& observer = {},
+FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega, const FoldScales& scales,
+                              const FoldTrackingOptions& options, const std::vector<OutputDof>& outputs, const FoldObserver& observer = {},
                               const FoldTrackingRestart& restart = {});
 
 // A limit point of the NFRC at the parameter's current value, from an approximation: Newton on
@@ -90,8 +89,8 @@ struct LocatedFold {
   Eigen::VectorXd x;
   double omega = 0;
 };
-LocatedFold locate_fold(const HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega,
-                        const FoldScales& scales, const ContinuationOptions& options, const FoldScales& fallback);
+LocatedFold locate_fold(const HarmonicBalance& hbm, int parameter, const Eigen::VectorXd& x, double omega, const FoldScales& scales,
+                        const ContinuationOptions& options, const FoldScales& fallback);
 
 // ---- isolated branches ---------------------------------------------------------------------
 
@@ -112,9 +111,8 @@ struct IsolaCandidate {
 // limit points are located (the cheap check that a validation NFRC's LPs lie on the curves).
 // `observer` sees the points of every branch followed (index 0 starts a branch).
 std::vector<IsolaCandidate> compute_isolas(const HarmonicBalance& hbm, int parameter, double value,
-                                           const std::vector<std::vector<FoldCurvePoint>>& curves,
-                                           const FoldScales& scales, const NfrcOptions& options,
-                                           const std::vector<OutputDof>& outputs, bool follow_branches = true,
+                                           const std::vector<std::vector<FoldCurvePoint>>& curves, const FoldScales& scales,
+                                           const NfrcOptions& options, const std::vector<OutputDof>& outputs, bool follow_branches = true,
                                            const RecordedObserver& observer = {});
 
 }  // namespace hbtrack

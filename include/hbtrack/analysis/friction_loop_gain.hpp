@@ -29,11 +29,11 @@ struct FrictionLoopGain {
   int sense = 1;
   bool sense_from_law = true;
   double mu = 0;
-  double stiffness = 0;  // k_n; 0 for a rigid contact
-  double flexibility_nn = 0;  // G_nn = (K^-1)_nn
-  double flexibility_nt = 0;  // sense (K^-1)_nt
-  double ratio = 0;           // mu G_nt / G_nn
-  std::optional<double> gain;  // k G_nn (ratio - 1); none for a rigid contact (infinite when ratio > 1)
+  double stiffness = 0;          // k_n; 0 for a rigid contact
+  double flexibility_nn = 0;     // G_nn = (K^-1)_nn
+  double flexibility_nt = 0;     // sense (K^-1)_nt
+  double ratio = 0;              // mu G_nt / G_nn
+  std::optional<double> gain;    // k G_nn (ratio - 1); none for a rigid contact (infinite when ratio > 1)
   bool self_energising = false;  // gain > 1 (a rigid contact: ratio > 1)
   // With ratio > 1: the stiffness k above which the gain exceeds 1, 1 / (G_nn (ratio - 1)).
   std::optional<double> critical_stiffness;
@@ -45,7 +45,7 @@ struct FrictionLoopGain {
 // sliding sense of a law that turns with omega is read at both ends of [omega_a, omega_b]: when
 // they differ (or the law has none) the worse sense is taken. Nothing is factorised when no
 // element has friction.
-std::vector<FrictionLoopGain> friction_loop_gains(const StructuralModel& model, const ElementList& elements,
-                                                  const ParameterValues& values, double omega_a, double omega_b);
+std::vector<FrictionLoopGain> friction_loop_gains(const StructuralModel& model, const ElementList& elements, const ParameterValues& values,
+                                                  double omega_a, double omega_b);
 
 }  // namespace hbtrack

@@ -31,8 +31,7 @@ class NfrcProblem final : public ContinuationProblem {
   NfrcProblem(HarmonicBalance& hbm, double length_scale, double omega_scale, double force_scale, bool adaptive = false)
       : hbm_(hbm), length_scale_(length_scale), omega_scale_(omega_scale), force_scale_(force_scale), adaptive_(adaptive) {}
   int size() const override { return hbm_.unknowns(); }
-  void evaluate(const Eigen::VectorXd& u, double omega, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian,
-                Eigen::VectorXd* r_omega) override {
+  void evaluate(const Eigen::VectorXd& u, double omega, Eigen::VectorXd& r, Eigen::MatrixXd* jacobian, Eigen::VectorXd* r_omega) override {
     hbm_.evaluate(u, omega, r, jacobian, r_omega);
   }
   Eigen::VectorXd unknown_scale(const Eigen::VectorXd& u) const override {
@@ -57,14 +56,13 @@ struct RecordedPoint {
   double max_floquet_real = 0;        // largest real part of the Floquet exponents (1/s)
   // The Floquet exponents (1/s) and multipliers that decided `stable` (empty when not computed).
   Eigen::VectorXcd floquet_exponents, floquet_multipliers;
-  std::string stability_method;       // what decided `stable`: hill | monodromy ("" not computed)
+  std::string stability_method;  // what decided `stable`: hill | monodromy ("" not computed)
   // The harmonics balanced (multiples of omega / subharmonic): the hK_/phaseK_ columns written.
   std::vector<int> harmonic_numbers;
   int subharmonic = 1;
 };
 
-RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,
-                           const std::vector<OutputDof>& outputs);
+RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const std::vector<OutputDof>& outputs);
 
 // Scales used by NfrcProblem, from the case: peak linear response and forcing norm.
 double automatic_length_scale(HarmonicBalance& hbm, double omega_start, double omega_end);
@@ -88,15 +86,15 @@ NfrcResult compute_nfrc(HarmonicBalance& hbm, const NfrcOptions& options, const 
 // branch from one of its limit points, until it closes (window.stop_when_closed). Scales and
 // stability as compute_nfrc, from options (its omega range sets the arc-length units).
 NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, const std::vector<OutputDof>& outputs,
-                          const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window,
-                          const RecordedObserver& observer = {}, const ContinuationRestart& restart = {});
+                          const Eigen::VectorXd& x0, double omega0, const ParameterWindow& window, const RecordedObserver& observer = {},
+                          const ContinuationRestart& restart = {});
 
 // A first point for Newton at fixed omega: the linear solution when Newton converges from it,
 // otherwise the solution linearised about rest (HarmonicBalance::rest_linearized_solution), which
 // starts a stiff stuck friction element or a preloaded contact near its branch.
 // `lambda` is the problem's parameter at that point (omega itself for an NFRC).
-Eigen::VectorXd starting_guess(HarmonicBalance& hbm, ContinuationProblem& problem, double omega, double lambda,
-                               double tolerance, int max_iterations);
+Eigen::VectorXd starting_guess(HarmonicBalance& hbm, ContinuationProblem& problem, double omega, double lambda, double tolerance,
+                               int max_iterations);
 
 // One periodic solution at fixed omega, by Newton from the linear solution (or from `guess`).
 struct FixedFrequencySolution {
@@ -105,7 +103,7 @@ struct FixedFrequencySolution {
   Eigen::VectorXd x;
   RecordedPoint recorded;
 };
-FixedFrequencySolution solve_at_frequency(HarmonicBalance& hbm, double omega, const std::vector<OutputDof>& outputs,
-                                          double tolerance, int max_iterations, const Eigen::VectorXd* guess = nullptr);
+FixedFrequencySolution solve_at_frequency(HarmonicBalance& hbm, double omega, const std::vector<OutputDof>& outputs, double tolerance,
+                                          int max_iterations, const Eigen::VectorXd* guess = nullptr);
 
 }  // namespace hbtrack

@@ -18,8 +18,7 @@ HarmonicBalanceOptions period_doubled_options(const HarmonicBalanceOptions& o);
 
 // x (dofs blocks in the basis `from`, fundamental omega) as the same motion in the basis `to`
 // (fundamental omega / nu): harmonic k of `from` is harmonic nu k of `to`, which must list it.
-Eigen::VectorXd embed_in_subharmonic_basis(const FourierBasis& from, const FourierBasis& to, int nu, int dofs,
-                                           const Eigen::VectorXd& x);
+Eigen::VectorXd embed_in_subharmonic_basis(const FourierBasis& from, const FourierBasis& to, int nu, int dofs, const Eigen::VectorXd& x);
 
 // The period-doubled branch from a PD of an NFRC: `doubled` is the nu = 2 system; x_pd and known
 // (the NFRC's direction at the PD, [dx; d omega]) in the period-T layout of `basis`. Both legs

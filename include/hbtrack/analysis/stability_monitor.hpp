@@ -12,12 +12,12 @@ namespace hbtrack {
 
 struct StabilityOptions {
   StabilityMethod method = StabilityMethod::hill;
-  int monodromy_steps = 2000;   // RK4 steps per period for the monodromy matrix
+  int monodromy_steps = 2000;  // RK4 steps per period for the monodromy matrix
   HillSolver hill_solver = HillSolver::automatic;
   // Hill: where Hill's method is unreliable (a law that is not smooth, see
   // hill_needs_cross_check), the monodromy matrix decides instead (off: Hill alone).
   CrossCheck cross_check = CrossCheck::automatic;
-  void validate() const;        // throws std::invalid_argument naming the field
+  void validate() const;  // throws std::invalid_argument naming the field
   bool enabled() const { return method != StabilityMethod::none; }
 };
 

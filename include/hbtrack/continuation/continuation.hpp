@@ -32,18 +32,18 @@ class ContinuationProblem {
 };
 
 struct ContinuationOptions {
-  double step = 0.02;          // initial arc-length step (scaled units)
-  double step_min = 1e-7;      // a failed step is halved until it falls below this
+  double step = 0.02;      // initial arc-length step (scaled units)
+  double step_min = 1e-7;  // a failed step is halved until it falls below this
   double step_max = 0.1;
   int max_points = 5000;
-  int max_iterations = 15;     // Newton iterations per corrector
-  int target_iterations = 4;   // the step grows when Newton needs fewer, shrinks when more
+  int max_iterations = 15;    // Newton iterations per corrector
+  int target_iterations = 4;  // the step grows when Newton needs fewer, shrinks when more
   // Chord iterations: the corrector keeps its Newton matrix's factors while each step shrinks
   // the error at least by `contraction` (then factors anew); false: a fresh Jacobian and
   // factorization at every iteration.
   bool reuse_factorization = true;
   double contraction = 0.25;
-  double tolerance = 1e-9;     // on ||R||_inf / residual_scale
+  double tolerance = 1e-9;  // on ||R||_inf / residual_scale
   // A step whose tangent turns by more than this (radians), or whose corrector moves farther
   // than the step from the prediction, is retried at half length: it cut a corner or jumped
   // to another part of the branch.
@@ -54,7 +54,7 @@ struct ContinuationOptions {
   // Refine each bracketed special point onto the zero of its test function (secant along the
   // branch); false leaves it at the bracketing point.
   bool locate = true;
-  void validate() const;       // throws std::invalid_argument naming the field and the rule
+  void validate() const;  // throws std::invalid_argument naming the field and the rule
 };
 
 struct BranchPoint {
@@ -62,7 +62,7 @@ struct BranchPoint {
   double lambda = 0;
   Eigen::VectorXd tangent;  // unit tangent in scaled coordinates, size+1 entries, lambda last
   int newton_iterations = 0;
-  double step = 0;          // arc length from the previous point (scaled)
+  double step = 0;  // arc length from the previous point (scaled)
 };
 
 struct SpecialPoint {
@@ -122,15 +122,14 @@ class BranchMonitor {
 };
 
 // Solve R(u, lambda) = 0 at fixed lambda by Newton from u. Returns iterations used, -1 on failure.
-int newton_at_fixed_parameter(ContinuationProblem& problem, Eigen::VectorXd& u, double lambda, double tolerance,
-                              int max_iterations);
+int newton_at_fixed_parameter(ContinuationProblem& problem, Eigen::VectorXd& u, double lambda, double tolerance, int max_iterations);
 
 // Follows the branch from an approximate solution u0 at lambda_start towards lambda_end.
 // Stops with "reached_end" on lambda_end, "left_range" when the branch turns back below
 // lambda_start (both landed on exactly).
-ContinuationResult continue_branch(ContinuationProblem& problem, const Eigen::VectorXd& u0, double lambda_start,
-                                   double lambda_end, const ContinuationOptions& options,
-                                   const PointObserver& observer = {}, BranchMonitor* monitor = nullptr);
+ContinuationResult continue_branch(ContinuationProblem& problem, const Eigen::VectorXd& u0, double lambda_start, double lambda_end,
+                                   const ContinuationOptions& options, const PointObserver& observer = {},
+                                   BranchMonitor* monitor = nullptr);
 
 // The parameter interval a branch may explore, and how to leave the start.
 struct ParameterWindow {
@@ -144,12 +143,12 @@ struct ParameterWindow {
 // continues the branch exactly as the run it was taken from would have: same points, bit for
 // bit (`hbtrack frc --resume`).
 struct ContinuationState {
-  int points = 0;                // points accepted so far; the next one gets this index
-  Eigen::VectorXd x, x_before;   // last point and the one before it, scaled ([u ./ scale; lambda / sl])
-  Eigen::VectorXd tangent;       // unit tangent at x, scaled
-  Eigen::VectorXd unknown_scale; // the scale x, x_before and tangent are expressed in
-  double step = 0;               // arc length of the next step
-  double farthest = 0;           // farthest scaled distance from the first point (closure test)
+  int points = 0;                   // points accepted so far; the next one gets this index
+  Eigen::VectorXd x, x_before;      // last point and the one before it, scaled ([u ./ scale; lambda / sl])
+  Eigen::VectorXd tangent;          // unit tangent at x, scaled
+  Eigen::VectorXd unknown_scale;    // the scale x, x_before and tangent are expressed in
+  double step = 0;                  // arc length of the next step
+  double farthest = 0;              // farthest scaled distance from the first point (closure test)
   std::vector<double> test_values;  // special-point test functions at x (brackets the next step)
   double bp_log_det = 0;            // the BP test function's reference
   BranchPoint first;                // the first point and its scaling (closure test)
@@ -161,7 +160,7 @@ struct ContinuationState {
 
 // Optional restart and checkpoint hooks of continue_within.
 struct ContinuationRestart {
-  const ContinuationState* resume_from = nullptr;  // continue from here instead of u0 (indices go on)
+  const ContinuationState* resume_from = nullptr;          // continue from here instead of u0 (indices go on)
   std::function<void(const ContinuationState&)> on_state;  // called between steps, to save the state
 };
 
@@ -171,8 +170,7 @@ struct ContinuationRestart {
 // restart.resume_from, u0 is not used and result.points holds only the points after the state,
 // while the summary and special points include those before it.
 ContinuationResult continue_within(ContinuationProblem& problem, const Eigen::VectorXd& u0, double lambda_start,
-                                   const ParameterWindow& window, const ContinuationOptions& options,
-                                   const PointObserver& observer = {}, BranchMonitor* monitor = nullptr,
-                                   const ContinuationRestart& restart = {});
+                                   const ParameterWindow& window, const ContinuationOptions& options, const PointObserver& observer = {},
+                                   BranchMonitor* monitor = nullptr, const ContinuationRestart& restart = {});
 
 }  // namespace hbtrack

@@ -17,8 +17,8 @@ std::string to_string(ContactLawKind kind);
 std::string smoothness_limit(ContactLawKind kind);
 
 struct ContactForce {
-  double force = 0;     // f_N
-  double d_gap = 0;     // d f_N / d g
+  double force = 0;  // f_N
+  double d_gap = 0;  // d f_N / d g
   double d_stiffness = 0;
   double d_width = 0;
 };

@@ -26,19 +26,15 @@ class ElasticDryFriction final : public ScalarElement {
   const std::vector<std::string>& property_names() const override;
   bool depends_on_velocity() const override { return false; }
   bool history_dependent() const override { return true; }
-  std::string smoothness_limit() const override {
-    return "stick-slip transitions make the Jenkins force non-smooth";
-  }
+  std::string smoothness_limit() const override { return "stick-slip transitions make the Jenkins force non-smooth"; }
   bool force_has_corners() const override { return true; }
-  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                const std::vector<double>& property_values, ElementResponse& out,
-                bool want_property_derivatives) const override;
+  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& property_values,
+                ElementResponse& out, bool want_property_derivatives) const override;
   // One internal variable: the slider position z (f = k (d - z)).
   int history_state_size() const override { return 1; }
   void history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
                     const std::vector<double>& property_values, HistoryStep& out) const override;
-  Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega,
-                                   const std::vector<double>& property_values) const override;
+  Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& property_values) const override;
 
  protected:
   // Not used: the force is not a pointwise function of (d, d').

@@ -25,7 +25,7 @@ bool admits(PropertyRange range, double value);
 // dforce_dproperty, a parameter tracking can vary.
 struct PropertySpec {
   std::string name;
-  std::string unit;                // in the model's units: F force, L length, s time; "1" for none
+  std::string unit;  // in the model's units: F force, L length, s time; "1" for none
   PropertyRange range = PropertyRange::any;
   std::optional<double> fallback;  // the value when the case omits it; none: required
   std::string doc;                 // what it is, in one line (docstrings, element_types())

@@ -34,24 +34,19 @@ class FrictionalContact final : public NonlinearElement {
   const std::vector<std::string>& property_names() const override;
   bool depends_on_velocity() const override { return false; }
   bool history_dependent() const override { return true; }
-  std::string smoothness_limit() const override {
-    return "contact separation and stick-slip transitions make the force non-smooth";
-  }
+  std::string smoothness_limit() const override { return "contact separation and stick-slip transitions make the force non-smooth"; }
   bool force_has_corners() const override { return true; }
-  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                const std::vector<double>& property_values, ElementResponse& out,
-                bool want_property_derivatives) const override;
+  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& property_values,
+                ElementResponse& out, bool want_property_derivatives) const override;
   bool uses_linear_residual() const override { return law_ == ContactFormulation::dlft; }
-  void evaluate_with_residual(const Eigen::MatrixXd& x, const Eigen::MatrixXd& r, double omega,
-                              const std::vector<double>& property_values, ElementResponse& out,
-                              bool want_property_derivatives) const override;
+  void evaluate_with_residual(const Eigen::MatrixXd& x, const Eigen::MatrixXd& r, double omega, const std::vector<double>& property_values,
+                              ElementResponse& out, bool want_property_derivatives) const override;
   // Penalty: one internal variable, the slider position z (T = k_t (x_t - z)). DLFT has no
   // time-domain form.
   int history_state_size() const override { return law_ == ContactFormulation::penalty ? 1 : 0; }
   void history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
                     const std::vector<double>& property_values, HistoryStep& out) const override;
-  Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega,
-                                   const std::vector<double>& property_values) const override;
+  Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& property_values) const override;
   // The slider may slip either way (sense 0); DLFT's contact is rigid (stiffness 0).
   std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& property_values, double omega) const override;
   ContactFormulation law() const { return law_; }

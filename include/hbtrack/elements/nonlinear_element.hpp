@@ -101,8 +101,7 @@ class NonlinearElement {
                             const std::vector<double>& property_values, HistoryStep& out) const;
   // The internal variables after each of the N samples (N x m) of the periodic steady state that
   // evaluate() finds for the same samples: history_step from row t-1 to sample t gives row t.
-  virtual Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega,
-                                           const std::vector<double>& property_values) const;
+  virtual Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& property_values) const;
   // Why the force is not twice continuously differentiable ("" when it is): limit-point tracking
   // differentiates the Jacobian and cannot follow a fold through such a law.
   virtual std::string smoothness_limit() const { return ""; }
@@ -115,12 +114,11 @@ class NonlinearElement {
   // sample (x, v: 1 x k) that change sign there, so that time stepping can stop on them:
   // switching_surfaces() values written to `out`. None (0) for a law with a continuous tangent.
   virtual int switching_surfaces(const std::vector<double>& /*property_values*/) const { return 0; }
-  virtual void switching_values(const Eigen::MatrixXd& /*x*/, const Eigen::MatrixXd& /*v*/,
-                                const std::vector<double>& /*property_values*/, double* /*out*/) const {}
+  virtual void switching_values(const Eigen::MatrixXd& /*x*/, const Eigen::MatrixXd& /*v*/, const std::vector<double>& /*property_values*/,
+                                double* /*out*/) const {}
   // Evaluates forces and derivatives. x, v: N x k samples; property_values: one per property.
-  virtual void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                        const std::vector<double>& property_values, ElementResponse& out,
-                        bool want_property_derivatives) const = 0;
+  virtual void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& property_values,
+                        ElementResponse& out, bool want_property_derivatives) const = 0;
   // The dynamic Lagrangian frequency/time method (DLFT, Nacivet et al. 2003: frictional_contact
   // with law = "dlft") computes contact forces from what the rest of the structure asks of the
   // contact: the linear part of the harmonic-balance residual at the element's dofs,
@@ -137,8 +135,7 @@ class NonlinearElement {
                                       bool want_property_derivatives) const;
 
   // A contact element with Coulomb friction at frequency omega; nullopt for any other element.
-  virtual std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& /*property_values*/,
-                                                            double /*omega*/) const {
+  virtual std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& /*property_values*/, double /*omega*/) const {
     return std::nullopt;
   }
 

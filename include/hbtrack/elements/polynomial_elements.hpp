@@ -19,9 +19,8 @@ class PolynomialStiffness final : public NonlinearElement {
   std::string type() const override { return "polynomial_stiffness"; }
   const std::vector<std::string>& property_names() const override { return names_; }
   bool depends_on_velocity() const override { return false; }
-  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                const std::vector<double>& property_values, ElementResponse& out,
-                bool want_property_derivatives) const override;
+  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& property_values,
+                ElementResponse& out, bool want_property_derivatives) const override;
   const Eigen::MatrixXi& exponents() const { return exponents_; }
 
  private:

@@ -8,9 +8,8 @@ namespace hbtrack {
 
 class ScalarElement : public NonlinearElement {
  public:
-  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                const std::vector<double>& property_values, ElementResponse& out,
-                bool want_property_derivatives) const override;
+  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& property_values,
+                ElementResponse& out, bool want_property_derivatives) const override;
 
   // d = weights^T x_local. Default: [1] on one dof, [1, -1] between two dofs.
   Eigen::VectorXd weights;
@@ -28,9 +27,7 @@ class ScalarElement : public NonlinearElement {
   // jump of tangent that makes the branch a saw-tooth of folds narrower than a sample. It tends
   // to the law as N grows (the error is O(1/N^2), that of sampling itself) and is the law itself
   // at a turning point (h = 0). df_dv is d f / d h here. False: the law has no corner.
-  virtual bool sample_mean_law(double /*d*/, double /*h*/, const double* /*properties*/, ScalarLaw& /*out*/) const {
-    return false;
-  }
+  virtual bool sample_mean_law(double /*d*/, double /*h*/, const double* /*properties*/, ScalarLaw& /*out*/) const { return false; }
   virtual bool averages_over_samples(const std::vector<double>& /*properties*/) const { return false; }
 };
 
@@ -50,8 +47,7 @@ class CubicSpring final : public ScalarElement {
 // Properties: stiffness, gap, width.
 class GapContact final : public ScalarElement {
  public:
-  explicit GapContact(ContactLawKind kind, std::string type_name)
-      : kind_(kind), type_name_(std::move(type_name)) {}
+  explicit GapContact(ContactLawKind kind, std::string type_name) : kind_(kind), type_name_(std::move(type_name)) {}
   std::string type() const override { return type_name_; }
   const std::vector<std::string>& property_names() const override;
   // The penalty law's sample mean (sample_mean_law) depends on the velocity.
@@ -67,9 +63,7 @@ class GapContact final : public ScalarElement {
  protected:
   ScalarLaw law(double d, double, const double* p) const override;
   bool sample_mean_law(double d, double h, const double* p, ScalarLaw& out) const override;
-  bool averages_over_samples(const std::vector<double>& property_values) const override {
-    return switching_surfaces(property_values) > 0;
-  }
+  bool averages_over_samples(const std::vector<double>& property_values) const override { return switching_surfaces(property_values) > 0; }
 
  private:
   ContactLawKind kind_;

@@ -39,15 +39,13 @@ class TipContact final : public NonlinearElement {
   int switching_surfaces(const std::vector<double>& property_values) const override;
   void switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, const std::vector<double>& property_values,
                         double* out) const override;
-  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega,
-                const std::vector<double>& property_values, ElementResponse& out,
-                bool want_property_derivatives) const override;
+  void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& property_values,
+                ElementResponse& out, bool want_property_derivatives) const override;
   // stick_slip: two internal variables, the slider's position (theta, z) in the tip's frame.
   int history_state_size() const override { return friction_ == TipFriction::stick_slip ? 2 : 0; }
   void history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
                     const std::vector<double>& property_values, HistoryStep& out) const override;
-  Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega,
-                                   const std::vector<double>& property_values) const override;
+  Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& property_values) const override;
   // Friction on the tip along -sign(W) theta (the casing drags it the way it turns).
   std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& property_values, double omega) const override;
   ContactLawKind law_kind() const { return kind_; }

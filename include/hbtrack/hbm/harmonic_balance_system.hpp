@@ -24,8 +24,8 @@
 namespace hbtrack {
 
 struct HarmonicBalanceOptions {
-  int harmonics = 5;             // H, the largest harmonic balanced
-  int samples = 0;               // N time samples per period; 0 picks a power of two >= 8(H+1)
+  int harmonics = 5;  // H, the largest harmonic balanced
+  int samples = 0;    // N time samples per period; 0 picks a power of two >= 8(H+1)
   Condensation condensation = Condensation::automatic;
   // When not empty, the harmonics balanced (sorted, unique, >= 0, last = H; 0 only if listed),
   // e.g. {1, 3, 5, 7}; empty: 0..H. (After the first three: {H, N, condensation} still works.)
@@ -79,8 +79,7 @@ class HarmonicBalanceWorkspace {
 
 class HarmonicBalanceSystem {
  public:
-  HarmonicBalanceSystem(StructuralModel model, ElementList elements, ParameterSet parameters,
-                        HarmonicBalanceOptions options);
+  HarmonicBalanceSystem(StructuralModel model, ElementList elements, ParameterSet parameters, HarmonicBalanceOptions options);
   // Workspaces point to their system: it stays where it was built (held by a shared_ptr).
   HarmonicBalanceSystem(const HarmonicBalanceSystem&) = delete;
   HarmonicBalanceSystem& operator=(const HarmonicBalanceSystem&) = delete;

@@ -52,12 +52,10 @@ std::vector<Eigen::VectorXcd> complex_forcing(const StructuralModel& model, int 
 
 // Direct Schur complement with a complex LU of Z_ll per harmonic. Works for any damping.
 // With every dof retained it is the uncondensed (full) system.
-std::unique_ptr<LinearCondenser> make_schur_condenser(const StructuralModel& model, std::vector<int> retained,
-                                                      int harmonics);
+std::unique_ptr<LinearCondenser> make_schur_condenser(const StructuralModel& model, std::vector<int> retained, int harmonics);
 // Receptance from the undamped modes, Zr_j = (Phi_r D_j Phi_r^T)^-1: exact (all modes kept) and
 // much cheaper for many linear dofs, valid when the modes diagonalise C.
-std::unique_ptr<LinearCondenser> make_modal_condenser(const StructuralModel& model, std::vector<int> retained,
-                                                      int harmonics);
+std::unique_ptr<LinearCondenser> make_modal_condenser(const StructuralModel& model, std::vector<int> retained, int harmonics);
 // True when the undamped modes diagonalise C (relative off-diagonal below 1e-10) and K > 0.
 bool modes_diagonalise_damping(const StructuralModel& model);
 

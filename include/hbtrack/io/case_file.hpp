@@ -37,8 +37,8 @@ struct StudySettings {
   std::vector<StudyTrack> track;
   std::vector<StudyBackbone> backbones;
   bool switch_branches = false;  // follow the branches born at the nominal NFRC's BP and PD points
-  int max_points = 400;       // per leg of a tracking curve
-  int simulate_periods = 60;  // periods of the time-integration check, 0 for none
+  int max_points = 400;          // per leg of a tracking curve
+  int simulate_periods = 60;     // periods of the time-integration check, 0 for none
   // The convergence check: the nominal NFRC and the tracking curves recomputed with these
   // harmonics and samples (0: no check), their limit points and extrema compared.
   int convergence_harmonics = 0, convergence_samples = 0;

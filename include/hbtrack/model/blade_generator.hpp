@@ -19,13 +19,13 @@ struct BladeGeometry {
   // plate this tapered stays near 4 and 1T falls below 2B. The camber makes the blade, like a
   // real one, asymmetric between leading and trailing edge: a flat plate twisted about its
   // mid-chord is symmetric under a half turn about the span, and so is its tip contact.
-  double hub_radius = 0.080;  // m, root section (clamped)
-  double tip_radius = 0.260;  // m, tip section (where the 9 contact nodes are)
+  double hub_radius = 0.080;                               // m, root section (clamped)
+  double tip_radius = 0.260;                               // m, tip section (where the 9 contact nodes are)
   double root_chord = 0.078, tip_chord = 0.042;            // m
   double root_thickness = 0.0091, tip_thickness = 0.0025;  // m
   double root_stagger_deg = 16.0, tip_stagger_deg = 64.0;  // chord angle from the axial direction
-  double camber = 0.03;  // mid-chord camber height / chord (a parabolic arc; 0 is a flat plate)
-  IsotropicMaterial material{108e9, 0.34, 4400.0};  // TA6V, as in the paper
+  double camber = 0.03;                                    // mid-chord camber height / chord (a parabolic arc; 0 is a flat plate)
+  IsotropicMaterial material{108e9, 0.34, 4400.0};         // TA6V, as in the paper
 
   // Elements along chord, thickness and span at refinement 1. The chord count of 4 gives the
   // 2 * 4 + 1 = 9 tip nodes of the paper; the thickness count is even so that mid-thickness

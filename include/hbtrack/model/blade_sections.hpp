@@ -23,7 +23,7 @@ inline constexpr int kMaxBladeCount = 1000;
 
 struct BladeSections {
   std::vector<std::vector<SectionPoint>> surfaces;  // hub (0) to casing; each leading to trailing edge
-  int blade_count = 0;                               // blades on the rotor (the disk sector's pitch)
+  int blade_count = 0;                              // blades on the rotor (the disk sector's pitch)
   // Throws std::invalid_argument naming the rule broken (fewer than 2 surfaces or 4 points, a
   // negative thickness or radius, a non-finite value, surfaces of different point counts,
   // more than kMaxStreamSurfaces surfaces, a blade count outside 1..kMaxBladeCount).

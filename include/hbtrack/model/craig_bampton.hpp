@@ -13,7 +13,7 @@
 namespace hbtrack {
 
 struct CraigBamptonBoundaryNode {
-  std::array<int, 3> dofs{};        // full-model rows of its x, y, z translations
+  std::array<int, 3> dofs{};                            // full-model rows of its x, y, z translations
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // columns: local r, t, z in x, y, z
 };
 

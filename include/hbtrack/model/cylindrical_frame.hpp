@@ -8,8 +8,8 @@
 namespace hbtrack {
 
 struct CylindricalFrame {
-  double radius = 0;                // distance from the rotation axis
-  Eigen::Matrix3d directions;       // columns: radial, circumferential, axial unit vectors
+  double radius = 0;           // distance from the rotation axis
+  Eigen::Matrix3d directions;  // columns: radial, circumferential, axial unit vectors
   Eigen::Vector3d radial() const { return directions.col(0); }
   Eigen::Vector3d circumferential() const { return directions.col(1); }
   Eigen::Vector3d axial() const { return directions.col(2); }

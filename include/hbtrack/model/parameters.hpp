@@ -34,9 +34,7 @@ struct ParameterBinding {
   int parameter = -1;  // index in the ParameterSet, -1 for a constant (= offset)
 
   static ParameterBinding constant(double v) { return {v, 0.0, -1}; }
-  static ParameterBinding linked(int index, double scale_ = 1.0, double offset_ = 0.0) {
-    return {offset_, scale_, index};
-  }
+  static ParameterBinding linked(int index, double scale_ = 1.0, double offset_ = 0.0) { return {offset_, scale_, index}; }
   double value(const ParameterValues& p) const { return parameter < 0 ? offset : offset + scale * p[static_cast<size_t>(parameter)]; }
   double value(const ParameterSet& p) const { return value(p.values()); }
   // d value / d parameter `index`.

@@ -25,7 +25,7 @@ struct SectionBladeOptions {
   // section, `rim_depth` deep (m), clamped at its bottom. Its first element layer widens the
   // airfoil to the full pitch (a coarse fillet and platform). 0: the hub section is clamped.
   double rim_depth = 0.02;
-  int rim_elements = 4;  // element layers in the rim (times `refinement`)
+  int rim_elements = 4;   // element layers in the rim (times `refinement`)
   void validate() const;  // throws std::invalid_argument
 };
 

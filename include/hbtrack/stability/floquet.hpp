@@ -11,9 +11,9 @@ namespace hbtrack {
 
 struct FloquetResult {
   StabilityMethod method = StabilityMethod::hill;  // the one that computed it (never none)
-  Eigen::VectorXcd exponents;  // 2n, sorted by increasing |Im l| (Hill) or from log(mu) / T
+  Eigen::VectorXcd exponents;                      // 2n, sorted by increasing |Im l| (Hill) or from log(mu) / T
   Eigen::VectorXcd multipliers;
-  double max_real = 0;         // largest real part of the exponents
+  double max_real = 0;  // largest real part of the exponents
   bool stable = true;
   // Hill: the largest distance (in harmonics) of a kept eigenvector's energy centroid from the
   // centre; near 0 when each kept exponent is the well-resolved member of its family.

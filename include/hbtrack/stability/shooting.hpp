@@ -24,7 +24,6 @@ struct ShootingOutcome {
 // Throws std::invalid_argument for a history-dependent element (a pointwise law is needed).
 // When shooting does not converge, the result holds the multipliers of the last iterate and
 // `outcome.converged` is false.
-FloquetResult shooting_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int steps,
-                               ShootingOutcome* outcome = nullptr);
+FloquetResult shooting_floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int steps, ShootingOutcome* outcome = nullptr);
 
 }  // namespace hbtrack

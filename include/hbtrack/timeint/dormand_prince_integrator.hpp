@@ -21,10 +21,10 @@
 namespace hbtrack {
 
 struct DormandPrinceOptions {
-  int samples_per_period = 256;      // reported instants per period (the step adapts)
-  double relative_tolerance = 1e-9;  // per step, on each state component
-  double absolute_tolerance = 1e-12; // per step, in the model's units (displacement, velocity)
-  void validate() const;             // throws std::invalid_argument naming the field
+  int samples_per_period = 256;       // reported instants per period (the step adapts)
+  double relative_tolerance = 1e-9;   // per step, on each state component
+  double absolute_tolerance = 1e-12;  // per step, in the model's units (displacement, velocity)
+  void validate() const;              // throws std::invalid_argument naming the field
 };
 
 class DormandPrinceIntegrator final : public TimeIntegrator {
@@ -43,7 +43,7 @@ class DormandPrinceIntegrator final : public TimeIntegrator {
   const DormandPrinceOptions& options() const { return options_; }
 
  private:
-  struct Stepper;  // the odeint stepper, kept out of this header
+  struct Stepper;             // the odeint stepper, kept out of this header
   bool advance_to(double t);  // steps until the dense output covers t
   void interpolate(double t, MotionState& out);
 

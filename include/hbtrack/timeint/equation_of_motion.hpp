@@ -24,8 +24,7 @@ class EquationOfMotion {
  public:
   // Parameters are read once: element property values and `amplitude` (1 when absent) stay
   // fixed during a simulation. Throws std::invalid_argument on a bad model, element or omega.
-  EquationOfMotion(const StructuralModel& model, const ElementList& elements, const ParameterSet& parameters,
-                   double omega);
+  EquationOfMotion(const StructuralModel& model, const ElementList& elements, const ParameterSet& parameters, double omega);
 
   int dofs() const { return static_cast<int>(mass_.rows()); }
   double omega() const { return omega_; }

@@ -34,8 +34,8 @@ struct NewmarkOptions {
   double alpha = -0.05;             // HHT alpha in [-1/3, 0]; 0 is the trapezoidal rule
   double newton_tolerance = 1e-10;  // ||residual||_inf <= tolerance * the largest force term
   int max_newton_iterations = 30;
-  int max_refinements = 10;         // halvings of a step where the elements are stiff (0: fixed step)
-  void validate() const;            // throws std::invalid_argument naming the field
+  int max_refinements = 10;  // halvings of a step where the elements are stiff (0: fixed step)
+  void validate() const;     // throws std::invalid_argument naming the field
 };
 
 class NewmarkIntegrator final : public TimeIntegrator {

@@ -8,7 +8,7 @@ namespace hbtrack {
 
 struct PeriodSummary {
   double max = 0, min = 0;
-  Eigen::VectorXd harmonics;  // [a0, a1, b1, ..., aH, bH] of x(tau) = a0/2 + sum a_j cos + b_j sin
+  Eigen::VectorXd harmonics;      // [a0, a1, b1, ..., aH, bH] of x(tau) = a0/2 + sum a_j cos + b_j sin
   double first_harmonic() const;  // hypot(a1, b1)
 };
 

@@ -37,11 +37,11 @@ struct SteadyStateResult {
   // converged | max_periods | interrupted | diverged (non-finite, or 1e8 times the size of the
   // first period), or the integrator's failure reason (newton_failure, integration_failure).
   StopReason stop_reason = StopReason::running;
-  std::string message;   // one line, for failures
-  int periods = 0;       // periods integrated
-  double last_change = 0;  // change_k of the last period
-  Eigen::VectorXd time;    // instants of the recorded periods
-  Eigen::MatrixXd signals; // time.size() x outputs: displacement of each output dof
+  std::string message;                 // one line, for failures
+  int periods = 0;                     // periods integrated
+  double last_change = 0;              // change_k of the last period
+  Eigen::VectorXd time;                // instants of the recorded periods
+  Eigen::MatrixXd signals;             // time.size() x outputs: displacement of each output dof
   std::vector<PeriodSummary> outputs;  // of the last period, one per output dof
   MotionState final_state;
   IntegrationStatistics statistics;
@@ -53,8 +53,7 @@ using PeriodObserver = std::function<bool(int period, double change)>;
 
 // Starts `integrator` from `initial` and integrates until the steady state, the budget or a
 // failure. Needs integrator.samples_per_period() >= 2 harmonics + 1.
-SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const MotionState& initial,
-                                            const std::vector<OutputDof>& outputs, const SteadyStateOptions& options,
-                                            const PeriodObserver& observer = {});
+SteadyStateResult integrate_to_steady_state(TimeIntegrator& integrator, const MotionState& initial, const std::vector<OutputDof>& outputs,
+                                            const SteadyStateOptions& options, const PeriodObserver& observer = {});
 
 }  // namespace hbtrack

@@ -47,7 +47,7 @@ class TimeIntegrator {
 
   struct Failure {
     StopReason reason = StopReason::running;  // diverged, newton_failure, integration_failure
-    std::string message;  // one line
+    std::string message;                      // one line
   };
   const Failure& failure() const { return failure_; }
 

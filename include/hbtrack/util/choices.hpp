@@ -16,10 +16,10 @@ enum class Condensation { automatic, schur, modal, none };  // none: solve the f
 // Floquet exponents by Hill's method, the monodromy matrix, or shooting (a monodromy matrix on
 // the converged periodic orbit); none: no stability analysis.
 enum class StabilityMethod { hill, monodromy, shooting, none };
-enum class HillSolver { automatic, dense, arnoldi };   // see stability/hill.hpp
-enum class CrossCheck { automatic, off };              // see StabilityOptions::cross_check
-enum class TrackingMethod { bordered, extended };      // minimally augmented | the paper's system
-enum class IntegrationMethod { newmark, dopri5 };      // simulate: HHT-alpha | Dormand-Prince
+enum class HillSolver { automatic, dense, arnoldi };  // see stability/hill.hpp
+enum class CrossCheck { automatic, off };             // see StabilityOptions::cross_check
+enum class TrackingMethod { bordered, extended };     // minimally augmented | the paper's system
+enum class IntegrationMethod { newmark, dopri5 };     // simulate: HHT-alpha | Dormand-Prince
 
 template <class Choice>
 struct ChoiceName {
@@ -70,19 +70,19 @@ struct ChoiceTable<CrossCheck> {
 template <>
 struct ChoiceTable<TrackingMethod> {
   static constexpr std::string_view field = "tracking method";
-  static constexpr ChoiceName<TrackingMethod> names[] = {{TrackingMethod::bordered, "bordered"},
-                                                         {TrackingMethod::extended, "extended"}};
+  static constexpr ChoiceName<TrackingMethod> names[] = {{TrackingMethod::bordered, "bordered"}, {TrackingMethod::extended, "extended"}};
 };
 
 template <>
 struct ChoiceTable<IntegrationMethod> {
   static constexpr std::string_view field = "method";  // not in the case file: the argument's name
-  static constexpr ChoiceName<IntegrationMethod> names[] = {{IntegrationMethod::newmark, "newmark"},
-                                                            {IntegrationMethod::dopri5, "dopri5"}};
+  static constexpr ChoiceName<IntegrationMethod> names[] = {{IntegrationMethod::newmark, "newmark"}, {IntegrationMethod::dopri5, "dopri5"}};
 };
 
 template <class Choice>
-concept NamedChoice = requires { ChoiceTable<Choice>::names; };
+concept NamedChoice = requires {
+  ChoiceTable<Choice>::names;
+};
 
 // "<field>: must be a, b or c, got 'name'", the names in their table's order.
 [[noreturn]] void throw_unknown_choice(std::string_view field, std::span<const std::string_view> names, const std::string& name);

@@ -33,7 +33,7 @@ class DenseLU {
  private:
   Eigen::MatrixXd factors_;  // L below the diagonal (unit diagonal implied), U on and above
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> permutation_;  // P
-  std::vector<int> pivots_;  // dgetrf's row swaps (1-based), kept to avoid an allocation
+  std::vector<int> pivots_;                                                    // dgetrf's row swaps (1-based), kept to avoid an allocation
 };
 
 // Solves A x = e_last (the last unit vector: a bordered system's right-hand side) by iterative
@@ -41,8 +41,8 @@ class DenseLU {
 // when ||A0^-1 (A - A0)|| < 1. Stops at a backward error of a few hundred ulps (1e-13 ||A||
 // ||x||), what a fresh LU attains, within `max_steps`; false when it does not get there.
 // `residual` is a workspace.
-bool refine_last_unit_solution(const DenseLU& nearby, const Eigen::MatrixXd& a, Eigen::VectorXd& x,
-                               Eigen::VectorXd& residual, int max_steps = 8);
+bool refine_last_unit_solution(const DenseLU& nearby, const Eigen::MatrixXd& a, Eigen::VectorXd& x, Eigen::VectorXd& residual,
+                               int max_steps = 8);
 
 // ||M||_1 of an n x n operator known by its products, M v and M^T v (each in place), from a
 // few of them (Hager's method with Higham's extra test vector, as LAPACK's condition
