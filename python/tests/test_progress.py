@@ -88,7 +88,7 @@ def test_study_relays_its_steps_progress_on_a_terminal_only(tmp_path):
     with open(DUFFING) as f:
         case.write_text(f.read() + '\n[study]\ntrack = [ { parameter = "amplitude", range = [0.5, 2.0] } ]\n'
                                    'max_points = 40\nsimulate_periods = 0\n')
-    args = ["study", str(case), "--set", "continuation.step=0.0004", "--jobs", "1"]
+    args = ["study", str(case), "--set", "continuation.step=0.0004", "--set", "continuation.step_max=0.002", "--jobs", "1"]
     # No figures: they are not what is tested here, and would double the time.
     env = {**os.environ, "HBTRACK_PYTHON": "/bin/false"}
     code, updates = run_on_a_terminal(*args, "-o", str(tmp_path / "tty"), env=env)
