@@ -91,7 +91,9 @@ TEST(FrictionLoopGainCli, Rotor67WarnsAtN3AndN4InTheGeometrysSenseAndNowhereReve
   const hbtrack::test::CliRun reversed = run_cli(frc + reverse + " -o " + (dir / "reversed").string());
   ASSERT_EQ(reversed.exit_code, 0) << reversed.err;
   EXPECT_EQ(count(reversed.err, "friction loop gain"), 0) << reversed.err;
-  for (const auto& g : frc_summary(dir / "reversed")["friction_loop_gain"]) EXPECT_FALSE(g["self_energising"].get<bool>()) << g["node"];
+  // Held in a variable: a range-for over a member of a temporary reads freed memory.
+  const nlohmann::json reversed_summary = frc_summary(dir / "reversed");
+  for (const auto& g : reversed_summary["friction_loop_gain"]) EXPECT_FALSE(g["self_energising"].get<bool>()) << g["node"];
   std::filesystem::remove_all(dir);
 }
 
