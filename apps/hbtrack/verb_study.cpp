@@ -31,6 +31,7 @@
 #include "study_curves.hpp"
 #include "study_checks.hpp"
 #include "study_report.hpp"
+#include "study_plan.hpp"
 #include "study_resume.hpp"
 #include "task_runner.hpp"
 
@@ -46,32 +47,6 @@ struct StudyOptions {
   int jobs = 0;                   // steps side by side; 0: one per core
   std::string units;              // the model's length unit, for the figures' labels
   std::string resume;             // a stopped study's folder to go on in (study_resume.hpp)
-};
-
-// A limit point of a validation NFRC lies on a tracking curve when the located crossing agrees
-// to this (relative omega and output): both are Newton solutions to the case's tolerance and the
-// NFRC's limit point is located by a secant on its test function.
-constexpr double kSameLimitPoint = 1e-5;
-// Validation NFRCs sit this fraction of the parameter range away from an extremum.
-constexpr double kProbeOffset = 0.02;
-// A BP or PD lies on an earlier switched branch within these (relative omega; outputs' max,
-// relative to their largest): a PD band's branch ends within a step of the band's other PD, its
-// omega within 1.2e-4 (tests/test_period_doubling.cpp), but its outputs' max up to 0.3 % off on
-// the two-dof contact example (the omega/2 harmonic grows as the square root of the distance).
-constexpr double kSameBranchOmega = 1e-3, kSameBranchOutput = 1e-2;
-
-// The stages of a study, in order, for the lines that say where it is ("stage 3 of 8, tracking").
-// A stage with nothing to do for the case (no [study] convergence, no isola) says nothing.
-enum Stage { kNominal, kBranches, kTracking, kValidation, kIsolas, kIsolaSimulation, kConvergence, kFigures, kStages };
-constexpr const char* kStageNames[kStages] = {"nominal NFRC", "branches",         "tracking",    "validation and simulation",
-                                              "isolas",       "isola simulation", "convergence", "figures"};
-
-// One verb run into DIR/folder. A step that may fail keeps going with what it wrote (exit 1: a
-// tracking leg or a simulation that stopped early still leaves its points).
-struct Step {
-  std::string folder;
-  std::vector<std::string> args;
-  bool must_succeed = false;
 };
 
 // The same extremum reached again (a curve that passes it twice, or the other LP's curve).
