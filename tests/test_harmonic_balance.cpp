@@ -19,8 +19,6 @@ using namespace hbtrack;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-namespace {
-
 struct Variant {
   bool general_damping;
   const char* condensation;
@@ -51,8 +49,6 @@ HarmonicBalance variant_model(const Variant& v) {
   o.condensation = parse_condensation(v.condensation);
   return HarmonicBalance(f.model, f.elements, f.parameters, o);
 }
-
-}  // namespace
 
 class HarmonicBalanceDerivatives : public ::testing::TestWithParam<Variant> {};
 
@@ -95,8 +91,6 @@ TEST_P(HarmonicBalanceDerivatives, MatchFiniteDifferences) {
   }
 }
 
-namespace {
-
 // The condensed linear part Zr(omega) column by column: with the forcing off, R - f_nl = Zr x
 // exactly (to round-off), whatever x. Columns at a small x keep the contact open.
 MatrixXd condensed_linear_jacobian(HarmonicBalance& hbm, double omega) {
@@ -113,8 +107,6 @@ MatrixXd condensed_linear_jacobian(HarmonicBalance& hbm, double omega) {
   hbm.set_parameter(hbm.amplitude_parameter(), saved);
   return zr;
 }
-
-}  // namespace
 
 TEST_P(HarmonicBalanceDerivatives, NonlinearAdjointProductsMatchTheAssembledDerivatives) {
   HarmonicBalance hbm = variant_model(GetParam());

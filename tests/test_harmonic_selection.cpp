@@ -58,8 +58,6 @@ TEST(HarmonicSelection, BasisOperatorsAreThoseOfTheDenseBasisRestricted) {
   EXPECT_THROW(FourierBasis(std::vector<int>{3, 1}, 64), std::invalid_argument);
 }
 
-namespace {
-
 struct Selection {
   std::vector<int> harmonics;
   int subharmonic;
@@ -77,8 +75,6 @@ HarmonicBalance selected_model(const Selection& s) {
   o.condensation = parse_condensation(s.condensation);
   return HarmonicBalance(f.model, f.elements, f.parameters, o);
 }
-
-}  // namespace
 
 class SelectedBasisDerivatives : public ::testing::TestWithParam<Selection> {};
 
@@ -146,8 +142,6 @@ INSTANTIATE_TEST_SUITE_P(Bases, SelectedBasisDerivatives,
                            return name;
                          });
 
-namespace {
-
 CaseDefinition duffing(const std::string& harmonics) {
   return load_case(test::source_path("examples/duffing.toml"),
                    {"harmonic_balance.harmonics=" + harmonics, "continuation.tolerance=1e-11", "continuation.step=0.05"});
@@ -164,8 +158,6 @@ VectorXd polish(HarmonicBalance& hbm, VectorXd x, double omega) {
   }
   return x;
 }
-
-}  // namespace
 
 // Duffing's restoring force is odd and its forcing harmonic 1, so its periodic response has odd
 // harmonics only: balancing [1, 3, 5, 7] must give the full H = 7 solution (whose even harmonics

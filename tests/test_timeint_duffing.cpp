@@ -19,8 +19,6 @@ namespace hbtrack_tests::file_timeint_duffing {
 
 using namespace hbtrack;
 
-namespace {
-
 CaseDefinition duffing() { return load_case(test::source_path("examples/duffing.toml")); }
 
 std::unique_ptr<TimeIntegrator> make_integrator(const std::string& method, EquationOfMotion& eom) {
@@ -31,8 +29,6 @@ std::unique_ptr<TimeIntegrator> make_integrator(const std::string& method, Equat
 double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
 class DuffingTimeIntegration : public ::testing::TestWithParam<std::string> {};
-
-}  // namespace
 
 TEST_P(DuffingTimeIntegration, SteadyStateFromRestMatchesTheHbmExtremes) {
   const CaseDefinition c = duffing();

@@ -20,8 +20,6 @@ namespace hbtrack_tests::file_tracking_checkpoint {
 using namespace hbtrack;
 namespace fs = std::filesystem;
 
-namespace {
-
 // The smallest state read_tracking_state accepts: leg 2 under way after one finished leg, its
 // engine one point in (x = [u; lambda] of a single unknown).
 FoldTrackingState second_leg_state(StopReason first_leg) {
@@ -53,8 +51,6 @@ class TrackingCheckpoint : public ::testing::Test {
   std::string path() const { return (dir_ / "checkpoint.json").string(); }
   fs::path dir_;
 };
-
-}  // namespace
 
 TEST_F(TrackingCheckpoint, AFinishedLegKeepsItsStopReason) {
   for (StopReason reason : {StopReason::left_range, StopReason::max_points, StopReason::step_size_underflow}) {

@@ -3,7 +3,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <regex>
+
+#include "hbtrack/io/json_file.hpp"
 
 namespace hbtrack::cli {
 
@@ -11,27 +12,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-json read_json_file(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) return json();
-  return json::parse(in, nullptr, /*allow_exceptions=*/false);
-}
-
-// The [model] dofs file of a case that load_case read already: `dofs = { file = "..." }` or
-// `dofs.file = "..."` on one line, as reduce's cases write it ("" for another form). A text
-// search, not a second TOML reader in the tool.
-fs::path dofs_file_of(const std::string& case_path) {
-  static const std::regex kDofsFile(R"re(^\s*dofs\s*(=\s*\{\s*file|\.file)\s*=\s*"([^"]+)")re");
-  std::ifstream in(case_path);
-  bool in_model = false;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind('[', 0) == 0) in_model = line.rfind("[model]", 0) == 0;
-    std::smatch m;
-    if (in_model && std::regex_search(line, m, kDofsFile)) return fs::path(case_path).parent_path() / m[2].str();
-  }
-  return {};
-}
 
 std::vector<std::string> names_of(const json& j) {
   std::vector<std::string> names;
@@ -42,21 +22,22 @@ std::vector<std::string> names_of(const json& j) {
 
 }  // namespace
 
-FullModelModes full_model_modes(const std::string& case_path) {
+FullModelModes full_model_modes(const CaseDefinition& c) {
   FullModelModes m;
   try {
-    const fs::path dofs_file = dofs_file_of(case_path);
-    if (dofs_file.empty()) return m;
-    const json reduce = read_json_file(dofs_file);
+    const fs::path dofs_file = c.dofs_file;
+    if (dofs_file.extension() != ".json") return m;
+    const json reduce = read_json_file(dofs_file.string(), "the dof names' summary.json");
     if (!reduce.is_object() || reduce.value("verb", "") != "reduce" || !reduce.contains("full_model")) return m;
     m.reduce_summary = dofs_file.lexically_normal().string();
     for (const json& w : reduce["full_model"].value("natural_frequencies", json::array())) m.frequencies.push_back(w.get<double>());
     m.names = names_of(reduce["full_model"].value("mode_types", json()));
-    if (m.names.empty()) {
-      const json blade = read_json_file(dofs_file.parent_path() / "full_model_summary.json");
+    const fs::path blade_summary = dofs_file.parent_path() / "full_model_summary.json";
+    if (m.names.empty() && fs::exists(blade_summary)) {
+      const json blade = read_json_file(blade_summary.string(), "make-blade's summary");
       if (blade.is_object() && blade.value("verb", "") == "make-blade") m.names = names_of(blade.value("mode_types", json()));
     }
-  } catch (const std::exception&) {  // no dofs file, inline dofs, another layout: nothing to add
+  } catch (const std::exception&) {  // an unreadable or other summary: nothing to add to the modes
   }
   return m;
 }

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/io/case_file.hpp"
+
 namespace hbtrack::cli {
 
 struct FullModelModes {
@@ -17,6 +19,6 @@ struct FullModelModes {
 
 // Empty (reduce_summary "") when the case's model is not a reduced one; never throws (the case
 // was read already: what is missing here is only not shown).
-FullModelModes full_model_modes(const std::string& case_path);
+FullModelModes full_model_modes(const CaseDefinition& c);
 
 }  // namespace hbtrack::cli

@@ -7,6 +7,7 @@
 #include "folder_lock.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/input_file.hpp"
+#include "hbtrack/util/fnv1a.hpp"
 #include "hbtrack/util/stop_reason.hpp"
 #include "result_folder.hpp"
 #include "sweep_table.hpp"
@@ -18,11 +19,9 @@ using nlohmann::json;
 namespace {
 
 std::string fnv1a(const std::string& bytes) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (const unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-  return text;
+  Fnv1a h;
+  h.bytes(bytes);
+  return h.hex();
 }
 
 // A step orphaned by a killed study may still be computing: its folder's lock is held.

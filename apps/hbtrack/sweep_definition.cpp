@@ -9,6 +9,7 @@
 
 #include "cli_common.hpp"
 #include "hbtrack/io/input_file.hpp"
+#include "hbtrack/util/fnv1a.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -49,11 +50,9 @@ std::string joined(const std::vector<std::string>& words) {
 // FNV-1a of the case file: a rerun after the case changed must not reuse the old tasks.
 std::string file_fingerprint(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  std::uint64_t hash = 14695981039346656037ull;
-  for (char ch; in.get(ch);) hash = (hash ^ static_cast<unsigned char>(ch)) * 1099511628211ull;
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash));
-  return buf;
+  Fnv1a hash;
+  for (char ch; in.get(ch);) hash.bytes(&ch, 1);
+  return hash.hex();
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ int run_modes(const CommonOptions& o, int count) {
   if (!report.success()) throw RunFailed{report.failure};
   if (!o.quiet) {
     std::fprintf(stderr, "modes: %s -> %s\n", report.brief.c_str(), o.out_dir.c_str());
-    const FullModelModes full = full_model_modes(o.case_path);
+    const FullModelModes full = full_model_modes(c);
     size_t mode = 0;
     for (const auto& w : report.summary["natural_frequencies"]) {
       const double omega = w.get<double>();

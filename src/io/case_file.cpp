@@ -66,6 +66,8 @@ void read_model(const CaseReader& in, const toml::value& root, CaseDefinition& c
   const bool counted = dofs.is_integer();
   if (counted && in.integer(dofs, "model.dofs") < 1) in.fail(&dofs, "model.dofs", "must be >= 1 (the number of dofs, named x1 .. xN)");
   if (!counted) m.dof_names = read_dof_names(in, dofs, "model.dofs");
+  if (const toml::value* file = dofs.is_table() ? in.find(dofs, "file") : nullptr)
+    c.dofs_file = in.resolve(in.string(*file, "model.dofs.file")).string();
   const int n = counted ? in.integer(dofs, "model.dofs") : static_cast<int>(m.dof_names.size());
   m.mass = in.matrix(in.require(model, "M", "model.M"), "model.M", n);
   m.stiffness = in.matrix(in.require(model, "K", "model.K"), "model.K", n);

@@ -1,25 +1,19 @@
 #include "hbtrack/results/model_fingerprint.hpp"
 
-#include <cstdint>
-#include <cstdio>
-#include <cstring>
+#include "hbtrack/util/fnv1a.hpp"
 
 namespace hbtrack {
 
 namespace {
 
-class Fnv1a {
+// The model's fields fed to FNV-1a with their sizes first ("ab" + "c" and "a" + "bc" differ).
+class ModelHash {
  public:
-  void bytes(const void* data, std::size_t size) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) hash_ = (hash_ ^ p[i]) * 1099511628211ull;
-  }
-  void number(double v) { bytes(&v, sizeof v); }
-  void integer(long long v) { bytes(&v, sizeof v); }
-  // Length first: "ab" + "c" and "a" + "bc" differ.
+  void number(double v) { h_.bytes(&v, sizeof v); }
+  void integer(long long v) { h_.bytes(&v, sizeof v); }
   void text(const std::string& s) {
     integer(static_cast<long long>(s.size()));
-    bytes(s.data(), s.size());
+    h_.bytes(s);
   }
   void matrix(const Eigen::MatrixXd& m) {
     integer(m.rows());
@@ -27,16 +21,16 @@ class Fnv1a {
     for (Eigen::Index j = 0; j < m.cols(); ++j)
       for (Eigen::Index i = 0; i < m.rows(); ++i) number(m(i, j));
   }
-  std::uint64_t value() const { return hash_; }
+  std::string hex() const { return h_.hex(); }
 
  private:
-  std::uint64_t hash_ = 14695981039346656037ull;
+  Fnv1a h_;
 };
 
 }  // namespace
 
 std::string model_fingerprint(const StructuralModel& model, const ElementList& elements) {
-  Fnv1a h;
+  ModelHash h;
   h.integer(static_cast<long long>(model.dof_names.size()));
   for (const std::string& name : model.dof_names) h.text(name);
   h.matrix(model.mass);
@@ -61,9 +55,7 @@ std::string model_fingerprint(const StructuralModel& model, const ElementList& e
     }
     h.number(e->lanczos_exponent);
   }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.value()));
-  return hex;
+  return h.hex();
 }
 
 }  // namespace hbtrack

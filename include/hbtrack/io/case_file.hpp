@@ -46,6 +46,9 @@ struct StudySettings {
 
 struct CaseDefinition {
   std::string path;
+  // The file `[model] dofs = { file = ... }` names, resolved ("" for a list or a count): a
+  // reduce summary.json there leads to the full model's modes (`hbtrack modes`).
+  std::string dofs_file;
   StructuralModel model;
   ElementList elements;
   ParameterSet parameters;
