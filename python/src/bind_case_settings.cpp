@@ -20,10 +20,24 @@ struct ContinuationSection {
 };
 
 // In the case file's order (docs/case-file.md).
-const std::vector<std::string> kContinuationKeys{
-    "omega_start", "omega_end",           "step",        "step_min",  "step_max",  "max_points", "max_iterations", "target_iterations",
-    "tolerance",   "reuse_factorization", "contraction", "max_angle", "predictor", "corrector",  "length_scale",   "wall_time_limit",
-    "locate"};
+const std::vector<std::string> kContinuationKeys{"omega_start",
+                                                 "omega_end",
+                                                 "step",
+                                                 "step_min",
+                                                 "step_max",
+                                                 "max_points",
+                                                 "max_iterations",
+                                                 "target_iterations",
+                                                 "tolerance",
+                                                 "reuse_factorization",
+                                                 "contraction",
+                                                 "max_angle",
+                                                 "target_angle",
+                                                 "predictor",
+                                                 "corrector",
+                                                 "length_scale",
+                                                 "wall_time_limit",
+                                                 "locate"};
 
 template <class T>
 void range_key(py::class_<ContinuationSection>& cls, const char* name, T NfrcOptions::*member) {
@@ -66,6 +80,7 @@ void bind_case_settings(py::module_& m, py::class_<CaseDefinition>& case_class) 
   step_key(section, "reuse_factorization", &ContinuationOptions::reuse_factorization);
   step_key(section, "contraction", &ContinuationOptions::contraction);
   step_key(section, "max_angle", &ContinuationOptions::max_angle);
+  step_key(section, "target_angle", &ContinuationOptions::target_angle);
   step_key(section, "predictor", &ContinuationOptions::predictor);
   step_key(section, "corrector", &ContinuationOptions::corrector);
   step_key(section, "wall_time_limit", &ContinuationOptions::wall_time_limit);

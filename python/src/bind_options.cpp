@@ -72,8 +72,8 @@ py::class_<T> bind_options_class(py::module_& m, const char* name, const char* d
 void bind_options(py::module_& m) {
   bind_options_class<ContinuationOptions>(
       m, "ContinuationOptions", "Arc-length continuation settings (case file [continuation]).",
-      {"step", "step_min", "step_max", "max_points", "max_iterations", "target_iterations", "tolerance", "max_angle", "predictor",
-       "corrector", "wall_time_limit", "locate", "reuse_factorization", "contraction"})
+      {"step", "step_min", "step_max", "max_points", "max_iterations", "target_iterations", "tolerance", "max_angle", "target_angle",
+       "predictor", "corrector", "wall_time_limit", "locate", "reuse_factorization", "contraction"})
       .def_readwrite("step", &ContinuationOptions::step)
       .def_readwrite("step_min", &ContinuationOptions::step_min)
       .def_readwrite("step_max", &ContinuationOptions::step_max)
@@ -82,6 +82,7 @@ void bind_options(py::module_& m) {
       .def_readwrite("target_iterations", &ContinuationOptions::target_iterations)
       .def_readwrite("tolerance", &ContinuationOptions::tolerance)
       .def_readwrite("max_angle", &ContinuationOptions::max_angle)
+      .def_readwrite("target_angle", &ContinuationOptions::target_angle)
       .def_readwrite("predictor", &ContinuationOptions::predictor)
       .def_readwrite("corrector", &ContinuationOptions::corrector)
       .def_readwrite("wall_time_limit", &ContinuationOptions::wall_time_limit)

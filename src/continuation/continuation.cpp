@@ -27,6 +27,7 @@ void ContinuationOptions::validate() const {
   if (max_iterations < 1 || max_iterations > 1000) throw std::invalid_argument("continuation.max_iterations: must be in [1, 1000]");
   if (target_iterations < 1) throw std::invalid_argument("continuation.target_iterations: must be >= 1");
   if (!(max_angle > 0) || max_angle > 3.14159) throw std::invalid_argument("continuation.max_angle: must be in (0, pi]");
+  if (!(target_angle > 0) || target_angle > max_angle) throw std::invalid_argument("continuation.target_angle: must be in (0, max_angle]");
   if (!(contraction > 0 && contraction < 1)) throw std::invalid_argument("continuation.contraction: must be in (0, 1)");
   if (!(wall_time_limit >= 0)) throw std::invalid_argument("continuation.wall_time_limit: must be >= 0");
 }

@@ -7,6 +7,7 @@
 
 #include "corner_step.hpp"
 #include "fixed_parameter_newton.hpp"
+#include "step_control.hpp"
 
 namespace hbtrack::continuation_detail {
 
@@ -64,6 +65,7 @@ void ContinuationStepper::resume(const ContinuationState& state) {
   t_ = state.tangent;
   s_.su = state.unknown_scale;
   ds_ = state.step;
+  cut_ = state.step_cut;
   farthest_ = state.farthest;
   previous_.values = state.test_values;
   previous_.bp_log_det = state.bp_log_det;
@@ -96,6 +98,7 @@ ContinuationState ContinuationStepper::state() const {
                            t_,
                            s_.su,
                            ds_,
+                           cut_,
                            farthest_,
                            previous_.values,
                            previous_.bp_log_det,
@@ -139,6 +142,8 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
   // On a piecewise smooth branch a corrector fails where the branch turns by more than 90
   // degrees at a corner: step onto the corner and leave it along the next piece instead.
   const bool onto_corner = !converged && corners_ && step_to_corner(s_, x_, direction_vec, det_sign, ds_, options_, y, tan_new, iterations);
+  // Counted now: locating a special point below runs chord iterations of its own.
+  const int chords = s_.chord_iterations - chords_before;
 
   // Reject a corrector that did not converge, went back along the branch, jumped away from
   // the prediction or turned too sharply; at the smallest step a corner is real (a
@@ -146,11 +151,12 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
   const bool smallest_step = ds_ <= 2 * options_.step_min;
   bool accepted = onto_corner || (converged && (y - x_).dot(t_) > 0 && (smallest_step || (y - prediction).norm() <= ds_));
   bool through_corner = false;
+  double turn = 0;
   if (accepted && !onto_corner) {
     // Through a corner (smallest step) the branch goes on the way the step went: oriented by
     // the old tangent, a turn sharper than 90 degrees would send it back along itself.
     tan_new = s_.tangent(smallest_step ? VectorXd((y - x_).normalized()) : t_);
-    const double turn = std::acos(std::clamp(t_.dot(tan_new.t), -1.0, 1.0));
+    turn = std::acos(std::clamp(t_.dot(tan_new.t), -1.0, 1.0));
     accepted = smallest_step || turn <= options_.max_angle;
     // A smooth branch turns in proportion to the step; a corner of a sampled C0 law (or a fold
     // narrower than a time sample) turns as much at half the step. Once seen, go through it
@@ -174,6 +180,7 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
     if (!converged) ++summary_.failed_steps;
     ++summary_.step_halvings;
     ds_ *= 0.5;
+    cut_ = true;
     if (ds_ < options_.step_min)
       return {std::nullopt, converged ? StopReason::step_size_underflow_on_curvature : StopReason::step_size_underflow};
     return {};
@@ -184,6 +191,7 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
   BranchPoint point{s_.unknowns(y), s_.parameter(y), tan_new.t, iterations, arc};
   const TestValues current = test_values(point, tan_new);
   record_special_points(y, point, current);
+  const TestValues before = std::move(previous_);
   previous_ = current;
   x_before_ = x_;
   x_ = y;
@@ -208,9 +216,19 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
 
   s_.rescale(s_.unknowns(x_), {&x_, &x_before_}, t_);
   // A chord step counts half: it gains about half the digits of a Newton step near the
-  // solution (linear against quadratic convergence) at a fraction of the cost.
-  const double work = iterations - 0.5 * (s_.chord_iterations - chords_before);
-  const double factor = work == 0 ? 1.5 : std::clamp(options_.target_iterations / work, 0.5, 1.5);
+  // solution (linear against quadratic convergence) at a fraction of the cost. A corner's turn
+  // says nothing of the curvature ahead: it does not size the next step.
+  const bool at_corner = through_corner || onto_corner || smallest_step;
+  AcceptedStep taken{ds_, iterations - 0.5 * chords, at_corner ? 0.0 : turn, {}, {}};
+  for (size_t k = 0; k < types_.size(); ++k) {
+    if (k == 1) continue;  // BP: the bordered determinant's magnitude is no distance to a zero
+    taken.before.push_back(before.values[k]);
+    taken.after.push_back(current.values[k]);
+  }
+  // A step that had to be cut is where the corrector's reach ends: growing straight back
+  // would fail again (a non-smooth law's branch: a failed corrector costs max_iterations).
+  const double factor = cut_ ? std::min(step_factor(taken, options_), 1.0) : step_factor(taken, options_);
+  cut_ = false;
   // Past a corner the branch is as smooth as before it: back to the step that met it.
   ds_ = std::min(through_corner ? std::max(ds_ * factor, corner_.step) : ds_ * factor, options_.step_max);
   // A remembered turn only stands for the corner just ahead.

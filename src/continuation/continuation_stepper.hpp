@@ -62,6 +62,7 @@ class ContinuationStepper {
   int points_ = 0;
   VectorXd x_, x_before_, t_;
   double ds_ = 0;
+  bool cut_ = false;     // ds_ was halved since the last accepted point
   double farthest_ = 0;  // scaled distance from the first point, for closure
   TestValues previous_;
   BranchPoint first_point_;

@@ -207,10 +207,10 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
     }
   }
   const toml::value& cont = in.table(in.require(root, "continuation", "continuation"), "continuation");
-  in.check_keys(
-      cont, "continuation",
-      {"omega_start", "omega_end", "length_scale", "step", "step_min", "step_max", "max_points", "max_iterations", "target_iterations",
-       "tolerance", "max_angle", "predictor", "corrector", "wall_time_limit", "locate", "reuse_factorization", "contraction"});
+  in.check_keys(cont, "continuation",
+                {"omega_start", "omega_end", "length_scale", "step", "step_min", "step_max", "max_points", "max_iterations",
+                 "target_iterations", "tolerance", "max_angle", "target_angle", "predictor", "corrector", "wall_time_limit", "locate",
+                 "reuse_factorization", "contraction"});
   NfrcOptions& o = c.nfrc;
   ContinuationOptions& co = o.continuation;
   o.omega_start = in.number(in.require(cont, "omega_start", "continuation.omega_start"), "continuation.omega_start");
@@ -224,6 +224,7 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
   co.target_iterations = in.integer_or(cont, "target_iterations", "continuation.target_iterations", co.target_iterations);
   co.tolerance = in.number_or(cont, "tolerance", "continuation.tolerance", co.tolerance);
   co.max_angle = in.number_or(cont, "max_angle", "continuation.max_angle", co.max_angle);
+  co.target_angle = in.number_or(cont, "target_angle", "continuation.target_angle", std::min(co.target_angle, co.max_angle));
   co.predictor = in.choice_or(cont, "predictor", co.predictor);
   co.corrector = in.choice_or(cont, "corrector", co.corrector);
   co.wall_time_limit = in.number_or(cont, "wall_time_limit", "continuation.wall_time_limit", co.wall_time_limit);

@@ -54,6 +54,7 @@ toml::value settings_document(const CaseDefinition& c) {
                                    {"target_iterations", co.target_iterations},
                                    {"tolerance", co.tolerance},
                                    {"max_angle", co.max_angle},
+                                   {"target_angle", co.target_angle},
                                    {"predictor", to_string(co.predictor)},
                                    {"corrector", to_string(co.corrector)},
                                    {"wall_time_limit", co.wall_time_limit},
@@ -74,6 +75,7 @@ toml::value settings_document(const CaseDefinition& c) {
   toml::table& continuation = root.at("continuation").as_table();
   if (co.step_min == std::min(defaults.step_min, co.step)) continuation.erase("step_min");
   if (co.step_max == std::max(defaults.step_max, co.step)) continuation.erase("step_max");
+  if (co.target_angle == std::min(defaults.target_angle, co.max_angle)) continuation.erase("target_angle");
   return root;
 }
 

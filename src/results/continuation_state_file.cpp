@@ -56,6 +56,7 @@ json state_json(const ContinuationState& state) {
           {"tangent", vector_json(state.tangent)},
           {"unknown_scale", vector_json(state.unknown_scale)},
           {"step", state.step},
+          {"step_cut", state.step_cut},
           {"farthest", state.farthest},
           {"test_values", state.test_values},
           {"bp_log_det", state.bp_log_det},
@@ -89,6 +90,9 @@ ContinuationState state_from_json(const json& j) {
   s.tangent = json_vector(j.at("tangent"));
   s.unknown_scale = json_vector(j.at("unknown_scale"));
   s.step = j.at("step").get<double>();
+  // Absent from checkpoints written before the step controller remembered cuts: false, as
+  // the controller that wrote them behaved.
+  s.step_cut = j.value("step_cut", false);
   s.farthest = j.at("farthest").get<double>();
   s.test_values = j.at("test_values").get<std::vector<double>>();
   s.bp_log_det = j.at("bp_log_det").get<double>();

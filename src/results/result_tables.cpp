@@ -44,6 +44,7 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
             {"target_iterations", co.target_iterations},
             {"tolerance", co.tolerance},
             {"max_angle", co.max_angle},
+            {"target_angle", co.target_angle},
             {"predictor", to_string(co.predictor)},
             {"corrector", to_string(co.corrector)},
             {"wall_time_limit", co.wall_time_limit},

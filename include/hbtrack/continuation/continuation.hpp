@@ -34,10 +34,15 @@ class ContinuationProblem {
 struct ContinuationOptions {
   double step = 0.02;      // initial arc-length step (scaled units)
   double step_min = 1e-7;  // a failed step is halved until it falls below this
-  double step_max = 0.1;
+  // A safety bound only: the step is sized by the branch (target_angle, target_iterations,
+  // the special points ahead). Scaled units: 1 is the whole parameter range.
+  double step_max = 0.5;
   int max_points = 5000;
   int max_iterations = 15;    // Newton iterations per corrector
   int target_iterations = 4;  // the step grows when Newton needs fewer, shrinks when more
+  // The turn of the tangent per step (radians) the step is sized for: the step grows where the
+  // branch is straighter, shrinks where it turns more (below max_angle, which rejects a step).
+  double target_angle = 0.15;
   // Chord iterations: the corrector keeps its Newton matrix's factors while each step shrinks
   // the error at least by `contraction` (then factors anew); false: a fresh Jacobian and
   // factorization at every iteration.
@@ -148,6 +153,7 @@ struct ContinuationState {
   Eigen::VectorXd tangent;          // unit tangent at x, scaled
   Eigen::VectorXd unknown_scale;    // the scale x, x_before and tangent are expressed in
   double step = 0;                  // arc length of the next step
+  bool step_cut = false;            // the step was halved since the last point: the next one does not grow
   double farthest = 0;              // farthest scaled distance from the first point (closure test)
   std::vector<double> test_values;  // special-point test functions at x (brackets the next step)
   double bp_log_det = 0;            // the BP test function's reference
