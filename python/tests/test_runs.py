@@ -123,5 +123,5 @@ def test_the_tutorial_python_block_runs_and_prints_what_the_page_says(capsys, mo
     monkeypatch.chdir(ROOT)
     exec(compile(python_block("docs/tutorial.md", "## 8. The same from Python"), "docs/tutorial.md", "exec"), {})
     points, max_x1 = capsys.readouterr().out.split()
-    # The page's numbers: the isola's 59 points and the simulation's 1.98 (1.98003 in section 6).
-    assert int(points) == 59 and float(max_x1) == pytest.approx(1.98003, abs=5e-6)
+    # The page's numbers: the isola's 61 points and the simulation's 2.00 (2.00147 in section 6).
+    assert int(points) == 61 and float(max_x1) == pytest.approx(2.00147, abs=5e-6)
