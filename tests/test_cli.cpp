@@ -114,13 +114,14 @@ TEST(Cli, FailedContinuationKeepsItsPointsAndExitsNonZero) {
   EXPECT_EQ(hbtrack::test::count_lines(out / "branch.csv"), 1) << "a header and no point";
 
   // A failure part-way: two Newton iterations per step (plain Newton: chord steps converge
-  // more slowly) cannot reach 1e-12 once the response grows nonlinear (near omega = 1), and
-  // step_min = step leaves no room to halve. It fails after about 60 points (between 59 and 72
-  // for tolerances 1e-10 to 1e-13), so at least 10 is safe.
+  // more slowly) cannot reach 1e-13 once the response grows nonlinear (near omega = 1), and
+  // step_min = step leaves no room to halve. It fails after about 100 points (104 at 1e-13, 113
+  // at 1e-14; at 1e-12 the steps sized by the branch's turn are short enough to get through),
+  // so at least 10 is safe.
   fs::remove_all(out);
   const CliRun mid = run_cli("frc " + hbtrack::test::source_path("examples/duffing.toml") +
                              " --set continuation.reuse_factorization=false --set continuation.max_iterations=2"
-                             " --set continuation.step_min=0.02 --set continuation.tolerance=1e-12 -o " +
+                             " --set continuation.step_min=0.02 --set continuation.tolerance=1e-13 -o " +
                              out.string() + " -q");
   EXPECT_EQ(mid.exit_code, 1);
   EXPECT_NE(mid.err.find("continuation stopped: step_size_underflow"), std::string::npos) << mid.err;

@@ -73,13 +73,16 @@ TEST(Continuation, TangentsRefinedFromNewtonFactorsAgreeWithFreshOnes) {
   ContinuationOptions o;
   o.step_max = 0.05;
   // Plain Newton: the tangent then starts from the factors of the corrector's last iteration.
-  // (This branch through twelve folds returns to lambda = 1 after 3040 points with Newton;
-  // chord iterations take it along another sequence of steps, longer than max_points.)
   o.reuse_factorization = false;
   const ContinuationResult r = continue_branch(problem, VectorXd::Constant(12, -1.3), 1.0, -1.0, o);
   // The weak coupling splits the m simultaneous folds: the branch turns at the first and
-  // returns to lambda = 1 ("left_range"), a limit point on the way.
-  ASSERT_TRUE(r.summary.stop_reason == StopReason::left_range || r.summary.stop_reason == StopReason::reached_end) << r.summary.stop_reason;
+  // wanders through the 2^m solutions' folds. Which way it goes at each near-simultaneous pair
+  // depends on the step sequence: with the steps capped at 0.05 it returned to lambda = 1
+  // ("left_range") after 3040 points; with steps sized by the turn it is still wandering at
+  // max_points. Either way it is a branch through limit points, which is what this test needs.
+  ASSERT_TRUE(r.summary.stop_reason == StopReason::left_range || r.summary.stop_reason == StopReason::reached_end ||
+              r.summary.stop_reason == StopReason::max_points)
+      << r.summary.stop_reason;
   ASSERT_GE(r.special_points.size(), 1u);
   ASSERT_GE(r.points.size(), 20u);
   // Most tangents came from the last Newton step's factors: a fresh LU for every tangent would
