@@ -30,7 +30,7 @@ def small_study(tmp_path_factory):
             "-o", f"{out}/track_amplitude_lp1")
     run_cli("isolas", NLTVA, "--from", f"{out}/track_amplitude_lp1", "--at", "0.15", "-o", f"{out}/isolas")
     assert os.path.exists(f"{out}/isolas/isola_1/branch.csv")
-    run_cli("simulate", NLTVA, "--from", f"{out}/nfrc", "--point", "30", "--max-periods", "20", "-o", f"{out}/simulate")
+    run_cli("simulate", NLTVA, "--from", f"{out}/nfrc", "--point", "15", "--max-periods", "20", "-o", f"{out}/simulate")
     # 20 periods do not settle on the isola (exit 1): the folder is kept and drawn all the same
     run_cli("simulate", NLTVA, "--set", "amplitude=0.15", "--from", f"{out}/isolas/isola_1", "--point", "36",
             "--max-periods", "20", "-o", f"{out}/simulate_isola", check=False)
