@@ -149,6 +149,7 @@ TEST(Continuation, ResumingFromASavedStateRepeatsTheRunExactly) {
   std::vector<ContinuationState> states;
   ContinuationRestart saving;
   saving.on_state = [&](const ContinuationState& s) { states.push_back(s); };
+  saving.state_interval_s = 0;  // a state between every two steps
   const ContinuationResult whole = continue_within(problem, VectorXd::Constant(1, -1.3), 1.0, window, o, {}, nullptr, saving);
   ASSERT_EQ(whole.summary.stop_reason, StopReason::reached_end);
   ASSERT_EQ(whole.special_points.size(), 2u);
@@ -181,6 +182,28 @@ TEST(Continuation, ResumingFromASavedStateRepeatsTheRunExactly) {
   EXPECT_EQ(rest.summary.points, whole.summary.points);
   EXPECT_EQ(rest.summary.newton_iterations, whole.summary.newton_iterations);
   EXPECT_EQ(rest.summary.jacobian_evaluations, whole.summary.jacobian_evaluations);
+}
+
+// The state is saved after the first point, at most every state_interval_s after that, and
+// once more at the stop, so that the last one saved covers every accepted point, interrupted or not.
+TEST(Continuation, StatesAreSavedAtTheStartAtMostEveryIntervalAndAtTheStop) {
+  CubicFold problem;
+  ContinuationOptions o;
+  o.step_max = 0.05;
+  const ParameterWindow window{-1.0, 1.0, -1, false};
+  std::vector<int> saved_points;
+  ContinuationRestart saving;
+  saving.on_state = [&](const ContinuationState& s) { saved_points.push_back(s.points); };
+  saving.state_interval_s = 1e9;  // longer than the run: only the first and the last
+  const ContinuationResult whole = continue_within(problem, VectorXd::Constant(1, -1.3), 1.0, window, o, {}, nullptr, saving);
+  ASSERT_EQ(whole.summary.stop_reason, StopReason::reached_end);
+  ASSERT_GT(whole.summary.points, 10);
+  EXPECT_EQ(saved_points, (std::vector<int>{1, whole.summary.points}));
+  saved_points.clear();
+  const ContinuationResult stopped = continue_within(
+      problem, VectorXd::Constant(1, -1.3), 1.0, window, o, [](const BranchPoint&, int index) { return index < 6; }, nullptr, saving);
+  ASSERT_EQ(stopped.summary.stop_reason, StopReason::interrupted);
+  EXPECT_EQ(saved_points, (std::vector<int>{1, 7}));  // the interrupting point is accepted, and saved
 }
 
 TEST(Continuation, FailsCleanlyWhenNewtonCannotStart) {

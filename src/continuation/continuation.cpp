@@ -54,7 +54,13 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
   ContinuationResult result;
   continuation_detail::ContinuationStepper stepper(problem, u0, window, options, monitor);
+  double last_state_s = -INFINITY;
+  auto save_state = [&] {
+    last_state_s = elapsed();
+    restart.on_state(stepper.state());
+  };
   auto finish = [&](StopReason reason) {
+    if (restart.on_state && stepper.points() > 0) save_state();
     result.summary = stepper.summary();
     result.summary.stop_reason = reason;
     result.summary.wall_s = elapsed();
@@ -75,7 +81,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     if (!accept(std::move(first))) return finish(StopReason::interrupted);
   }
   while (true) {
-    if (restart.on_state) restart.on_state(stepper.state());
+    if (restart.on_state && elapsed() - last_state_s >= restart.state_interval_s) save_state();
     if (stepper.points() >= options.max_points) return finish(StopReason::max_points);
     if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return finish(StopReason::time_limit);
     continuation_detail::ContinuationStepper::Outcome step = stepper.step();
