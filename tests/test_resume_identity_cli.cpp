@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -162,6 +163,41 @@ TEST(ResumeIdentity, TrackRefusesAnEditedModel) {
   std::ofstream(case_file) << original;
   const CliRun same = run_cli(track + " --resume " + dir);
   EXPECT_EQ(same.exit_code, 0) << same.err;
+}
+
+// A `track` checkpoint whose vectors have another size reached the engine (issue 39's leftover):
+// now a one-line exit 2 naming the checkpoint and the field, the stopped run's summary unchanged.
+TEST(ResumeIdentity, ATrackingCheckpointOfAnotherSizeIsBadInput) {
+  const fs::path root = hbtrack::test::fresh_temp_dir("hbtrack_resume_identity_track_size", true);
+  const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
+  const std::string frc = (root / "frc").string(), dir = (root / "track").string();
+  ASSERT_EQ(run_cli("frc " + duffing + " -q -o " + frc).exit_code, 0);
+  const std::string track =
+      "track " + duffing + " -q --set continuation.max_points=5 --from " + frc + " --lp 1 --param amplitude --range 0.1:2";
+  ASSERT_EQ(run_cli(track + " -o " + dir).exit_code, 0);
+  const fs::path checkpoint = fs::path(dir) / "checkpoint.json";
+  const std::string saved = file_bytes(checkpoint), summary = file_bytes(fs::path(dir) / "summary.json");
+  const auto resume_with = [&](const std::function<void(nlohmann::json&)>& edit) {
+    nlohmann::json j = nlohmann::json::parse(saved);
+    edit(j);
+    std::ofstream(checkpoint) << j.dump();
+    return run_cli(track + " --resume " + dir);
+  };
+  const CliRun shorter = resume_with([](nlohmann::json& j) {
+    for (const char* key : {"x", "x_before", "tangent", "unknown_scale"}) j["state"][key].erase(0);
+  });
+  EXPECT_EQ(shorter.exit_code, 2) << shorter.err;
+  EXPECT_NE(shorter.err.find(checkpoint.string() + ": state.x holds 16 values, a bordered tracking of this case's 15 unknowns 17"),
+            std::string::npos)
+      << shorter.err;
+  EXPECT_EQ(std::count(shorter.err.begin(), shorter.err.end(), '\n'), 1) << shorter.err;
+  const CliRun border = resume_with([](nlohmann::json& j) { j["tracking"]["borders"][1].push_back(0.5); });
+  EXPECT_EQ(border.exit_code, 2) << border.err;
+  EXPECT_NE(border.err.find(checkpoint.string() + ": tracking.borders[1] holds 16 values, this case's unknowns 15"), std::string::npos)
+      << border.err;
+  EXPECT_EQ(file_bytes(fs::path(dir) / "summary.json"), summary);
+  std::ofstream(checkpoint) << saved;
+  EXPECT_EQ(run_cli(track + " --resume " + dir).exit_code, 0);
 }
 
 }  // namespace hbtrack_tests::file_resume_identity_cli
