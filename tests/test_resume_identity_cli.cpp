@@ -45,10 +45,13 @@ fs::path duffing_copy(const fs::path& path, const std::string& from = "", const 
 // An edited stiffness, damping or forcing was resumed silently: the branch mixed two systems.
 TEST(ResumeIdentity, AnEditedModelIsRefusedInOneLine) {
   const fs::path dir = fresh_dir("edited"), case_file = fs::path(dir.string() + ".toml");
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{{"K = [[1.0]]", "K = [[1.1]]"},
-                                                                                 {"C = [[0.05]]", "C = [[0.06]]"},
-                                                                                 {"cos = 0.18", "cos = 0.19"},
-                                                                                 {"cubic_stiffness = 0.1", "cubic_stiffness = 0.2"}}) {
+  for (const auto& [from, to] :
+       std::vector<std::pair<std::string, std::string>>{{"K = [[1.0]]", "K = [[1.1]]"},
+                                                        {"C = [[0.05]]", "C = [[0.06]]"},
+                                                        {"cos = 0.18", "cos = 0.19"},
+                                                        {"cubic_stiffness = 0.1", "cubic_stiffness = 0.2"},
+                                                        // Outside the base class: resumed before.
+                                                        {"cubic_stiffness = 0.1", "cubic_stiffness = 0.1\nweights = [1.5]"}}) {
     fs::remove_all(dir);
     duffing_copy(case_file);
     ASSERT_EQ(run_cli("frc " + case_file.string() + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
@@ -65,6 +68,25 @@ TEST(ResumeIdentity, AnEditedModelIsRefusedInOneLine) {
   fs::remove_all(dir);
   ASSERT_EQ(run_cli("frc " + case_file.string() + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
   duffing_copy(case_file);
+  const CliRun same = run_cli("frc " + case_file.string() + " -q --resume " + dir.string());
+  EXPECT_EQ(same.exit_code, 0) << same.err;
+}
+
+// A law's choice is the element subclass's own state, which the model's hash missed: a case whose
+// contact law was changed from polynomial to sqrt resumed the old branch.
+TEST(ResumeIdentity, AnotherContactLawIsAnotherModel) {
+  const fs::path dir = fresh_dir("law"), case_file = fs::path(dir.string() + ".toml");
+  const std::string contact =
+      "cubic_stiffness = 0.1\n\n[[elements]]\ntype = \"regularized_contact\"\ndofs = [\"x\"]\n"
+      "stiffness = 10.0\ngap = 1.0\nwidth = 0.1\nlaw = ";
+  duffing_copy(case_file, "cubic_stiffness = 0.1", contact + "\"polynomial\"");
+  fs::remove_all(dir);
+  ASSERT_EQ(run_cli("frc " + case_file.string() + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
+  duffing_copy(case_file, "cubic_stiffness = 0.1", contact + "\"sqrt\"");
+  const CliRun r = run_cli("frc " + case_file.string() + " -q --resume " + dir.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("was computed with another model"), std::string::npos) << r.err;
+  duffing_copy(case_file, "cubic_stiffness = 0.1", contact + "\"polynomial\"");
   const CliRun same = run_cli("frc " + case_file.string() + " -q --resume " + dir.string());
   EXPECT_EQ(same.exit_code, 0) << same.err;
 }
