@@ -54,15 +54,13 @@ TEST(ModelFingerprint, EachElementsOwnStateIsPartOfIt) {
          return weighted(std::make_shared<GapContact>(e ? ContactLawKind::sqrt : ContactLawKind::polynomial, "regularized_contact"), 1.0);
        }},
       {"Iwan sliders", [](bool e) { return weighted(std::make_shared<Iwan>(e ? 60 : 50), 1.0); }},
-      {"tip contact law",
-       [](bool e) { return std::make_shared<TipContact>(e ? ContactLawKind::penalty : ContactLawKind::polynomial); }, 3},
+      {"tip contact law", [](bool e) { return std::make_shared<TipContact>(e ? ContactLawKind::penalty : ContactLawKind::polynomial); }, 3},
       {"tip friction",
        [](bool e) { return std::make_shared<TipContact>(ContactLawKind::polynomial, e ? TipFriction::stick_slip : TipFriction::sliding); },
        3},
       {"frictional contact formulation",
        [](bool e) { return std::make_shared<FrictionalContact>(e ? ContactFormulation::dlft : ContactFormulation::penalty); }, 2},
-      {"polynomial exponents",
-       [](bool e) { return std::make_shared<PolynomialStiffness>(Eigen::MatrixXi::Constant(1, 1, e ? 2 : 3)); }},
+      {"polynomial exponents", [](bool e) { return std::make_shared<PolynomialStiffness>(Eigen::MatrixXi::Constant(1, 1, e ? 2 : 3)); }},
   };
   for (const Variant& v : variants) {
     const std::string original = fingerprint_with(v.make(false), v.dofs);
