@@ -512,22 +512,24 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
                     "); a TOML case file must be UTF-8");
   }
   check_toml_nesting(text, path);
+  // toml11 is quadratic in a line's length: long lines are broken first (toml_long_lines.hpp).
+  TomlLines parsed = break_long_toml_lines(text);
   toml::value root;
   try {
-    std::istringstream stream(text);
+    std::istringstream stream(std::move(parsed.text));
     root = toml::parse(stream, path);
   } catch (const toml::syntax_error& e) {
     // toml11 reports over several lines; keep the first line and the line number.
     std::string msg = e.what();
     const std::string first = msg.substr(0, msg.find('\n'));
-    const std::string line = std::to_string(e.location().line());
+    const std::string line = std::to_string(parsed.lines.original(static_cast<long>(e.location().line())));
     throw CaseError(path + ":" + line +
                     ": TOML syntax error: " + first.substr(first.find(':') == std::string::npos ? 0 : first.find(':') + 2));
   } catch (const std::exception& e) {
     std::string msg = e.what();
     throw CaseError(path + ": cannot read: " + msg.substr(0, msg.find('\n')));
   }
-  CaseReader in(path);
+  CaseReader in(path, std::move(parsed.lines));
   if (!root.is_table()) throw CaseError(path + ": expected a TOML table at the top level");
   // Before the overrides, so that `--set elements[i]...` addresses element i of the expanded list.
   expand_element_templates(in, root);
