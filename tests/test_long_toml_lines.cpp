@@ -53,8 +53,8 @@ std::string thousand_dof_case(const std::string& line11 = "amplitude = 1.0", con
   constexpr int n = 1000;
   const auto name = [](int i) { return "\"n" + std::to_string(i) + "\""; };
   const std::string mass = one_line_array(n, [&](int i) { return i == n - 1 ? last_mass : std::string("1.0"); });
-  return "[model]\ndofs = " + one_line_array(n, name) + "\nM = { diagonal = " + mass + " }\nK = { diagonal = " +
-         one_line_array(n, [](int i) { return std::to_string(2.0 + i); }) +
+  return "[model]\ndofs = " + one_line_array(n, name) + "\nM = { diagonal = " + mass +
+         " }\nK = { diagonal = " + one_line_array(n, [](int i) { return std::to_string(2.0 + i); }) +
          " }\n[damping]\nrayleigh = [0.0, 0.01]\n[[forcing]]\ndof = \"n0\"\ncos = 0.1\n[parameters]\n" + line11 + "\n[harmonic_balance]\n" +
          line13 + "\n[continuation]\nomega_start = 0.5\nomega_end = 1.5\n[[outputs]]\nname = \"n0\"\ndof = \"n0\"\n";
 }
@@ -90,7 +90,8 @@ TEST(LongTomlLines, TwentyThousandValuesOnOneLineParseInLinearTime) {
   const std::string nodes = one_line_array(kNodes, [](int i) { return "\"n" + std::to_string(i) + "\""; });
   const std::string list = one_line_array(kNodes, [](int i) { return std::to_string(0.1 + i * 1e-6); });
   std::string text =
-      "[model]\ndofs = [\"x\"]\nM = [[1.0]]\nK = [[1.0]]\n[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"d{node}\"]\nnodes = " + nodes + "\n";
+      "[model]\ndofs = [\"x\"]\nM = [[1.0]]\nK = [[1.0]]\n[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"d{node}\"]\nnodes = " + nodes +
+      "\n";
   for (const char* key : {"cubic_stiffness", "a", "b", "c", "d"}) text += std::string(key) + ".per_node = " + list + "\n";
   const fs::path path = write_case("templates_one_line.toml", text);
   const auto t0 = std::chrono::steady_clock::now();
