@@ -47,9 +47,9 @@ std::unique_ptr<FoldSystem> make_fold_system(TrackingMethod method, const Harmon
   return std::make_unique<BorderedFoldSystem>(hbm, parameter, scales);
 }
 
-std::string size_misfit(const std::string& field, Eigen::Index size, Eigen::Index expected, const std::string& of_what) {
+std::string size_misfit(const std::string& field, Eigen::Index size, Eigen::Index expected, const std::string& why) {
   if (size == expected) return "";
-  return field + " holds " + std::to_string(size) + " values, " + of_what + " " + std::to_string(expected);
+  return field + " holds " + std::to_string(size) + " values, expected " + std::to_string(expected) + " (" + why + ")";
 }
 
 // Starts `system` at (x, omega): null vectors of R_x there, at hbm's parameter values.
@@ -104,11 +104,13 @@ std::string tracking_state_misfit(const FoldTrackingState& state, TrackingMethod
   // The continuation's unknowns (FoldSystem::size: x, omega and, extended, the null vector),
   // then its parameter.
   const Eigen::Index size = (method == TrackingMethod::extended ? 2 * q + 1 : q + 1) + 1;
-  const std::string of_what = "a " + to_string(method) + " tracking of this case's " + std::to_string(q) + " unknowns";
-  std::string misfit = size_misfit("state.x", state.continuation.x.size(), size, of_what);
+  const bool extended = method == TrackingMethod::extended;
+  const std::string why = "this case's " + std::to_string(q) + " unknowns, " + (extended ? "their null vector, " : "") +
+                          "omega and the parameter of " + (extended ? "an extended" : "a bordered") + " tracking";
+  std::string misfit = size_misfit("state.x", state.continuation.x.size(), size, why);
   if (misfit.empty() && method == TrackingMethod::bordered) {
     const size_t given = state.borders.size();
-    if (given != 2) return "tracking.borders holds " + std::to_string(given) + " vectors, a bordered tracking 2";
+    if (given != 2) return "tracking.borders holds " + std::to_string(given) + " vectors, expected 2 (a bordered tracking's borders)";
     for (size_t i = 0; i < given && misfit.empty(); ++i)
       misfit = size_misfit("tracking.borders[" + std::to_string(i) + "]", state.borders[i].size(), q, "this case's unknowns");
   }
