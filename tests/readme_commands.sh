@@ -4,7 +4,7 @@
 # README's "Using it"; the tests name the others (README's Python and "Beyond the NFRC" blocks,
 # docs/tutorial.md's "The commands").
 #   bash tests/readme_commands.sh HBTRACK_BINARY SOURCE_DIR [PAGE HEADING...]
-# Each heading's first fenced block: a shell block line by line (continuation lines joined), a
+# Each heading's first fenced block (HEADING@N: its Nth): a shell block line by line (continuation lines joined), a
 # ```python block as one script under /usr/bin/python3 with the build's module
 # (HBTRACK_BINARY's folder/python). Fails (naming the command) when one exits non-zero: the
 # pages' commands stay true.
@@ -20,11 +20,18 @@ trap 'rm -rf "$scratch"' EXIT
 mkdir "$scratch/bin"
 ln -s "$binary" "$scratch/bin/hbtrack"
 for d in examples python data; do ln -s "$source_dir/$d" "$scratch/$d"; done
+# Pages that redraw their own figures write them here, not into the source tree.
+mkdir -p "$scratch/docs/figures"
 cd "$scratch"
 count=0
 for heading in "${headings[@]}"; do
-  # The first fenced block after the heading, its opening fence first.
-  block=$(awk -v heading="$heading" 'index($0, heading) == 1 {section = 1} section && /^```/ {if (inside) exit; inside = 1; print; next} inside' "$source_dir/$page")
+  nth=1
+  if [[ $heading =~ ^(.*)@([0-9]+)$ ]]; then heading=${BASH_REMATCH[1]} nth=${BASH_REMATCH[2]}; fi
+  # The nth fenced block after the heading, its opening fence first.
+  block=$(awk -v heading="$heading" -v nth="$nth" '
+    index($0, heading) == 1 {section = 1}
+    section && /^```/ {if (inside) {if (seen == nth) exit; inside = 0; next} inside = 1; ++seen; if (seen == nth) print; next}
+    inside && seen == nth' "$source_dir/$page")
   [ -n "$block" ] || { echo "$page: no command block after '$heading'" >&2; exit 1; }
   fence=$(head -1 <<< "$block")
   body=$(tail -n +2 <<< "$block")

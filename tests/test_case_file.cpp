@@ -209,6 +209,14 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
       {"huge_chain",
        variant("dofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 2.0]]\nK = [[3.0, -1.0], [-1.0, 1.0]]", "chain = { count = 100000 }"),
        "model.chain.count: must be in [1, 4000]"},
+      // Issue 39: `dofs = N` had no upper bound; a model beyond it exhausts memory (kMaxModelDofs).
+      {"huge_dof_count", variant("dofs = [\"a\", \"b\"]", "dofs = 4001"),
+       "model.dofs: must be in [1, 4000] (the number of dofs, named x1 .. xN): the model's matrices are dense"},
+      {"too_many_dof_names", variant("dofs = [\"a\", \"b\"]", "dofs = { file = \"4001_names.txt\" }"),
+       "model.dofs: 4001 names, at most 4000: the model's matrices are dense"},
+      // Sized before the dense copy: this one took 3.2 GB, then was refused.
+      {"matrix_file_far_larger_than_the_model", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"K20000.mtx\" }"),
+       "model.K: expected 2x2 (one row per dof), got 20000x20000"},
       {"matrix_file_is_directory", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \".\" }"), "model.K.file: '"},
       {"matrix_file_wrong_shape", variant("K = [[3.0, -1.0], [-1.0, 1.0]]", "K = { file = \"K3.mtx\" }"),
        "model.K: expected 2x2 (one row per dof), got 3x3"},
@@ -235,6 +243,11 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
   fs::create_directories(test_dir());
   std::ofstream(test_dir() / "K3.mtx") << "%%MatrixMarket matrix coordinate real general\n3 3 3\n1 1 1\n2 2 1\n3 3 1\n";
   std::ofstream(test_dir() / "garbage.mtx") << "not a matrix\n";
+  std::ofstream(test_dir() / "K20000.mtx") << "%%MatrixMarket matrix coordinate real general\n20000 20000 1\n1 1 1\n";
+  {
+    std::ofstream names(test_dir() / "4001_names.txt");
+    for (int i = 0; i < 4001; ++i) names << "n" << i << "\n";
+  }
   std::ofstream(test_dir() / "empty.mat") << "";
   for (const BadCase& bad : cases) {
     const fs::path p = write_case(bad.name, bad.text);

@@ -169,7 +169,7 @@ TEST(CaseTemplates, BadDofsAndTemplatesGiveOneLineErrorsNamingTheField) {
     const char* expected;
   };
   const std::vector<Bad> cases = {
-      {"zero_count", replaced(kTemplated, names, "dofs = 0"), "model.dofs: must be >= 1"},
+      {"zero_count", replaced(kTemplated, names, "dofs = 0"), "model.dofs: must be in [1, 4000]"},
       {"fractional_count", replaced(kTemplated, names, "dofs = 2.5"), "model.dofs: expected an array of dof names, a dof count N"},
       {"names_file_missing", replaced(kTemplated, names, "dofs = { file = \"nope.txt\" }"), "model.dofs.file: "},
       {"names_file_key", replaced(kTemplated, names, "dofs = { path = \"names.txt\" }"), "model.dofs.path: unknown key"},

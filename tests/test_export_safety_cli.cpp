@@ -104,4 +104,25 @@ TEST(ExportSafety, ADeeplyNestedOrMalformedSummaryIsBadInput) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// A sweep folder: export read sweep.csv's text column `status` as a number and stopped at its first
+// cell ("'max_points' is not a finite number"). Now one line says why, names the task folders
+// that export does take, and nothing is written; a task's folder exports.
+TEST(ExportSafety, ASweepFolderIsRefusedInOneLineNamingItsTaskFolders) {
+  const fs::path dir = hbtrack::test::fresh_temp_dir("hbtrack_export_safety_sweep");
+  const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
+  ASSERT_EQ(run_cli("sweep " + duffing + " -q --set continuation.max_points=4 --param amplitude --values 1,2 --jobs 1 -o " + dir.string())
+                .exit_code,
+            0);
+  for (const char* format : {"mat", "h5"}) {
+    const CliRun r = run_cli("export " + dir.string() + " -q --format " + std::string(format));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find((dir / "sweep.csv").string() + ": a sweep's table, with text columns (status)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("export a task's folder (" + dir.string() + "/tasks/NNNN)"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir / ("results." + std::string(format))));
+  }
+  EXPECT_EQ(run_cli("export " + (dir / "tasks" / "0001").string() + " -q").exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir / "tasks" / "0001" / "results.mat"));
+}
+
 }  // namespace hbtrack_tests::file_export_safety_cli

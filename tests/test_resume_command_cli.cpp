@@ -136,4 +136,54 @@ TEST(ResumeCommand, TrackStoppedBySigtermPrintsItsResumeCommand) {
   fs::remove_all(root);
 }
 
+// A sweep resumes by running the same command again (finished tasks are skipped): stopped by
+// SIGTERM to its process group (as Ctrl-C reaches it) after its first task, it prints that
+// command, and running it as printed finishes the sweep without recomputing the first task.
+TEST(ResumeCommand, SweepStoppedBySigtermPrintsTheSameCommandThatGoesOn) {
+  const fs::path root = hbtrack::test::fresh_temp_dir("hbtrack_resume_sweep", true), dir = root / "sweep";
+  const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
+  // Three NFRCs of about 400 points each, a quarter of a second each, one at a time.
+  const std::vector<std::string> args{"sweep",
+                                      duffing,
+                                      "-q",
+                                      "--set",
+                                      "continuation.step=0.02",
+                                      "--set",
+                                      "continuation.step_max=0.02",
+                                      "--param",
+                                      "amplitude",
+                                      "--values",
+                                      "0.5,1,2",
+                                      "--jobs",
+                                      "1",
+                                      "-o",
+                                      dir.string()};
+  const fs::path err = root / "stderr.txt";
+  const pid_t pid = hbtrack::test::spawn_cli(args, true, err.string());
+  ASSERT_GT(pid, 0);
+  const auto first_task_finished = [&] {
+    try {
+      return summary_of(dir / "tasks" / "0000").value("stop_reason", "running") != "running";
+    } catch (const std::exception&) {
+      return false;  // not written yet
+    }
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!first_task_finished() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  kill(-pid, SIGTERM);
+  EXPECT_EQ(hbtrack::test::wait_for_exit(pid), 1);
+  ASSERT_EQ(summary_of(dir)["stop_reason"], "interrupted") << "the sweep ended before the signal: make its tasks slower";
+  std::string typed = HBTRACK_CLI;
+  for (const std::string& a : args) typed += " " + a;
+  const std::string text = file_bytes(err);
+  EXPECT_NE(text.find("interrupted: resume with: " + typed + "\n"), std::string::npos) << text;
+  const CliRun resumed = run_in_shell(printed_resume_command(text));
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  const nlohmann::json summary = summary_of(dir);
+  EXPECT_EQ(summary["stop_reason"], "completed");
+  EXPECT_GE(summary["skipped"].get<int>(), 1) << "the finished first task was computed again";
+  EXPECT_EQ(count_lines(dir / "sweep.csv"), 4);
+  fs::remove_all(root);
+}
+
 }  // namespace hbtrack_tests::file_resume_command_cli

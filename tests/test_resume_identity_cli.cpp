@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -44,10 +45,13 @@ fs::path duffing_copy(const fs::path& path, const std::string& from = "", const 
 // An edited stiffness, damping or forcing was resumed silently: the branch mixed two systems.
 TEST(ResumeIdentity, AnEditedModelIsRefusedInOneLine) {
   const fs::path dir = fresh_dir("edited"), case_file = fs::path(dir.string() + ".toml");
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{{"K = [[1.0]]", "K = [[1.1]]"},
-                                                                                 {"C = [[0.05]]", "C = [[0.06]]"},
-                                                                                 {"cos = 0.18", "cos = 0.19"},
-                                                                                 {"cubic_stiffness = 0.1", "cubic_stiffness = 0.2"}}) {
+  for (const auto& [from, to] :
+       std::vector<std::pair<std::string, std::string>>{{"K = [[1.0]]", "K = [[1.1]]"},
+                                                        {"C = [[0.05]]", "C = [[0.06]]"},
+                                                        {"cos = 0.18", "cos = 0.19"},
+                                                        {"cubic_stiffness = 0.1", "cubic_stiffness = 0.2"},
+                                                        // Outside the base class: resumed before.
+                                                        {"cubic_stiffness = 0.1", "cubic_stiffness = 0.1\nweights = [1.5]"}}) {
     fs::remove_all(dir);
     duffing_copy(case_file);
     ASSERT_EQ(run_cli("frc " + case_file.string() + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
@@ -64,6 +68,25 @@ TEST(ResumeIdentity, AnEditedModelIsRefusedInOneLine) {
   fs::remove_all(dir);
   ASSERT_EQ(run_cli("frc " + case_file.string() + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
   duffing_copy(case_file);
+  const CliRun same = run_cli("frc " + case_file.string() + " -q --resume " + dir.string());
+  EXPECT_EQ(same.exit_code, 0) << same.err;
+}
+
+// A law's choice is the element subclass's own state, which the model's hash missed: a case whose
+// contact law was changed from polynomial to sqrt resumed the old branch.
+TEST(ResumeIdentity, AnotherContactLawIsAnotherModel) {
+  const fs::path dir = fresh_dir("law"), case_file = fs::path(dir.string() + ".toml");
+  const std::string contact =
+      "cubic_stiffness = 0.1\n\n[[elements]]\ntype = \"regularized_contact\"\ndofs = [\"x\"]\n"
+      "stiffness = 10.0\ngap = 1.0\nwidth = 0.1\nlaw = ";
+  duffing_copy(case_file, "cubic_stiffness = 0.1", contact + "\"polynomial\"");
+  fs::remove_all(dir);
+  ASSERT_EQ(run_cli("frc " + case_file.string() + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
+  duffing_copy(case_file, "cubic_stiffness = 0.1", contact + "\"sqrt\"");
+  const CliRun r = run_cli("frc " + case_file.string() + " -q --resume " + dir.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("was computed with another model"), std::string::npos) << r.err;
+  duffing_copy(case_file, "cubic_stiffness = 0.1", contact + "\"polynomial\"");
   const CliRun same = run_cli("frc " + case_file.string() + " -q --resume " + dir.string());
   EXPECT_EQ(same.exit_code, 0) << same.err;
 }
@@ -165,6 +188,44 @@ TEST(ResumeIdentity, TrackRefusesAnEditedModel) {
   std::ofstream(case_file) << original;
   const CliRun same = run_cli(track + " --resume " + dir);
   EXPECT_EQ(same.exit_code, 0) << same.err;
+}
+
+// A `track` checkpoint whose vectors have another size reached the engine (issue 39's leftover):
+// now a one-line exit 2 naming the checkpoint and the field, the stopped run's summary unchanged.
+TEST(ResumeIdentity, ATrackingCheckpointOfAnotherSizeIsBadInput) {
+  const fs::path root = hbtrack::test::fresh_temp_dir("hbtrack_resume_identity_track_size", true);
+  const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
+  const std::string frc = (root / "frc").string(), dir = (root / "track").string();
+  ASSERT_EQ(run_cli("frc " + duffing + " -q -o " + frc).exit_code, 0);
+  const std::string track =
+      "track " + duffing + " -q --set continuation.max_points=5 --from " + frc + " --lp 1 --param amplitude --range 0.1:2";
+  ASSERT_EQ(run_cli(track + " -o " + dir).exit_code, 0);
+  const fs::path checkpoint = fs::path(dir) / "checkpoint.json";
+  const std::string saved = file_bytes(checkpoint), summary = file_bytes(fs::path(dir) / "summary.json");
+  const auto resume_with = [&](const std::function<void(nlohmann::json&)>& edit) {
+    nlohmann::json j = nlohmann::json::parse(saved);
+    edit(j);
+    std::ofstream(checkpoint) << j.dump();
+    return run_cli(track + " --resume " + dir);
+  };
+  const CliRun shorter = resume_with([](nlohmann::json& j) {
+    for (const char* key : {"x", "x_before", "tangent", "unknown_scale"}) j["state"][key].erase(0);
+  });
+  EXPECT_EQ(shorter.exit_code, 2) << shorter.err;
+  EXPECT_NE(
+      shorter.err.find(checkpoint.string() +
+                       ": state.x holds 16 values, expected 17 (this case's 15 unknowns, omega and the parameter of a bordered tracking)"),
+      std::string::npos)
+      << shorter.err;
+  EXPECT_EQ(std::count(shorter.err.begin(), shorter.err.end(), '\n'), 1) << shorter.err;
+  const CliRun border = resume_with([](nlohmann::json& j) { j["tracking"]["borders"][1].push_back(0.5); });
+  EXPECT_EQ(border.exit_code, 2) << border.err;
+  EXPECT_NE(border.err.find(checkpoint.string() + ": tracking.borders[1] holds 16 values, expected 15 (this case's unknowns)"),
+            std::string::npos)
+      << border.err;
+  EXPECT_EQ(file_bytes(fs::path(dir) / "summary.json"), summary);
+  std::ofstream(checkpoint) << saved;
+  EXPECT_EQ(run_cli(track + " --resume " + dir).exit_code, 0);
 }
 
 }  // namespace hbtrack_tests::file_resume_identity_cli

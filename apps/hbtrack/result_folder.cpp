@@ -69,6 +69,13 @@ CsvTable read_csv_table(const std::string& path) {
 ResultFolderContents list_result_folder(const std::string& dir) {
   namespace fs = std::filesystem;
   if (!fs::is_directory(dir)) throw CaseError(dir + ": not a result folder (no such directory)");
+  // A sweep's table holds text (status, lpK_track_stop) and blanks, and its results are in the
+  // task folders: read as numbers it failed on its first status cell, naming no reason.
+  if (fs::exists(dir + "/sweep.json"))
+    throw CaseError(dir +
+                    "/sweep.csv: a sweep's table, with text columns (status) and blanks, which export does not write; export a "
+                    "task's folder (" +
+                    dir + "/tasks/NNNN) or read sweep.csv as CSV");
   ResultFolderContents contents{read_summary(dir), {}};
   for (const auto& entry : fs::directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().extension() == ".csv") contents.tables.push_back(entry.path().string());

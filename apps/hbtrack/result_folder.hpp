@@ -32,7 +32,7 @@ nlohmann::json read_summary(const std::string& dir);
 std::vector<size_t> limit_point_rows(const nlohmann::json& special_points);
 
 // What an export writes of a result folder: its summary and its CSV tables (sorted by name).
-// CaseError when `dir` is not a folder or has no readable summary.json.
+// CaseError when `dir` is not a folder, has no readable summary.json or is a sweep's folder.
 struct ResultFolderContents {
   nlohmann::json summary;
   std::vector<std::string> tables;

@@ -47,6 +47,11 @@ std::unique_ptr<FoldSystem> make_fold_system(TrackingMethod method, const Harmon
   return std::make_unique<BorderedFoldSystem>(hbm, parameter, scales);
 }
 
+std::string size_misfit(const std::string& field, Eigen::Index size, Eigen::Index expected, const std::string& why) {
+  if (size == expected) return "";
+  return field + " holds " + std::to_string(size) + " values, expected " + std::to_string(expected) + " (" + why + ")";
+}
+
 // Starts `system` at (x, omega): null vectors of R_x there, at hbm's parameter values.
 VectorXd start_unknowns(FoldSystem& system, const HarmonicBalance& hbm, const VectorXd& x, double omega) {
   VectorXd r;
@@ -94,6 +99,26 @@ LocatedFold locate_fold(const HarmonicBalance& hbm, int parameter, const VectorX
   return f;
 }
 
+std::string tracking_state_misfit(const FoldTrackingState& state, TrackingMethod method, int harmonic_unknowns) {
+  const int q = harmonic_unknowns;
+  // The continuation's unknowns (FoldSystem::size: x, omega and, extended, the null vector),
+  // then its parameter.
+  const Eigen::Index size = (method == TrackingMethod::extended ? 2 * q + 1 : q + 1) + 1;
+  const bool extended = method == TrackingMethod::extended;
+  const std::string why = "this case's " + std::to_string(q) + " unknowns, " + (extended ? "their null vector, " : "") +
+                          "omega and the parameter of " + (extended ? "an extended" : "a bordered") + " tracking";
+  std::string misfit = size_misfit("state.x", state.continuation.x.size(), size, why);
+  if (misfit.empty() && method == TrackingMethod::bordered) {
+    const size_t given = state.borders.size();
+    if (given != 2) return "tracking.borders holds " + std::to_string(given) + " vectors, expected 2 (a bordered tracking's borders)";
+    for (size_t i = 0; i < given && misfit.empty(); ++i)
+      misfit = size_misfit("tracking.borders[" + std::to_string(i) + "]", state.borders[i].size(), q, "this case's unknowns");
+  }
+  for (size_t i = 0; i < state.extrema.size() && misfit.empty(); ++i)
+    misfit = size_misfit("tracking.extrema[" + std::to_string(i) + "].x", state.extrema[i].x.size(), q, "this case's unknowns");
+  return misfit;
+}
+
 FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const VectorXd& x, double omega, const FoldScales& scales,
                               const FoldTrackingOptions& options, const std::vector<OutputDof>& outputs, const FoldObserver& observer,
                               const FoldTrackingRestart& restart) {
@@ -109,6 +134,8 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
   const FoldTrackingState* resumed = restart.resume_from;
   if (resumed) {
     if (resumed->leg < 1 || resumed->leg > 2) throw std::invalid_argument("tracking state: leg must be 1 or 2");
+    const std::string misfit = tracking_state_misfit(*resumed, options.method, hbm.unknowns());
+    if (!misfit.empty()) throw std::invalid_argument("tracking state: " + misfit);
     result.legs = resumed->finished_legs;
     result.extrema = resumed->extrema;
     for (FoldExtremum& e : result.extrema) {  // their outputs, as the finished legs recorded them

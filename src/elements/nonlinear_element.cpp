@@ -1,5 +1,6 @@
 #include "hbtrack/elements/nonlinear_element.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace hbtrack {
@@ -18,6 +19,16 @@ void NonlinearElement::history_step(const Eigen::MatrixXd&, const Eigen::VectorX
 void NonlinearElement::evaluate_with_residual(const Eigen::MatrixXd&, const Eigen::MatrixXd&, double, const std::vector<double>&,
                                               ElementResponse&, bool) const {
   throw std::logic_error("element " + type() + " does not read the linear residual");
+}
+
+std::string exact_text(const Eigen::Ref<const Eigen::VectorXd>& values) {
+  std::string text;
+  char number[40];
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    std::snprintf(number, sizeof number, "%s%a", i ? "," : "", values(i));
+    text += number;
+  }
+  return text;
 }
 
 Eigen::MatrixXd history_sensitivity_matrix(const ElementResponse& response, Eigen::Index samples, int dofs) {

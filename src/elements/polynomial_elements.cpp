@@ -23,6 +23,16 @@ PolynomialStiffness::PolynomialStiffness(Eigen::MatrixXi exponents) : exponents_
       names_.push_back("coefficients[" + std::to_string(m) + "][" + std::to_string(i) + "]");
 }
 
+std::string PolynomialStiffness::configuration() const {
+  std::string text = "exponents=" + std::to_string(exponents_.rows()) + "x" + std::to_string(exponents_.cols());
+  for (Eigen::Index m = 0; m < exponents_.rows(); ++m)
+    for (Eigen::Index i = 0; i < exponents_.cols(); ++i) {
+      text += i ? ',' : ';';  // a row per monomial
+      text += std::to_string(exponents_(m, i));
+    }
+  return text;
+}
+
 void PolynomialStiffness::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& /*v*/, double /*omega*/,
                                    const std::vector<double>& props, ElementResponse& out, bool want_property_derivatives) const {
   const Eigen::Index n = x.rows();

@@ -8,6 +8,13 @@
 
 namespace hbtrack {
 
+// The most dofs a case's model may have (`dofs = N`, a names list or file, `chain.count`). Its M,
+// C and K are dense, and the condensation keeps a dense complex LU factor of the linear dofs'
+// dynamic stiffness per harmonic, (H + 1) 16 n^2 bytes: at 4000 dofs and H = 10, 2.8 GB besides
+// the three 128 MB matrices; 10 000 dofs would take 17.6 GB, more than a workstation has. A
+// larger model is reduced first (`hbtrack reduce`, which reads its matrices sparse).
+inline constexpr int kMaxModelDofs = 4000;
+
 // A names file (or a summary.json) larger than this is refused: at 16 MiB it already names a
 // model whose dense matrices would not fit in memory.
 inline constexpr std::size_t kMaxDofNamesFileBytes = std::size_t{16} << 20;

@@ -29,8 +29,6 @@ namespace fs = std::filesystem;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-constexpr int kMaxChainCount = 4000;
-
 void read_model(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value& model = in.table(in.require(root, "model", "model"), "model");
   in.check_keys(model, "model", {"dofs", "M", "K", "chain"});
@@ -40,8 +38,7 @@ void read_model(const CaseReader& in, const toml::value& root, CaseDefinition& c
     in.table(*chain, "model.chain");
     in.check_keys(*chain, "model.chain", {"count", "mass", "stiffness"});
     const int n = in.integer(in.require(*chain, "count", "model.chain.count"), "model.chain.count");
-    // The model's matrices are dense: 4000 dofs already take 128 MB each.
-    if (n < 1 || n > kMaxChainCount) in.fail(chain, "model.chain.count", "must be in [1, " + std::to_string(kMaxChainCount) + "]");
+    if (n < 1 || n > kMaxModelDofs) in.fail(chain, "model.chain.count", "must be in [1, " + std::to_string(kMaxModelDofs) + "]");
     const double mass = in.number_or(*chain, "mass", "model.chain.mass", 1.0);
     const double k = in.number_or(*chain, "stiffness", "model.chain.stiffness", 1.0);
     if (mass <= 0) in.fail(chain, "model.chain.mass", "must be > 0");
@@ -64,8 +61,13 @@ void read_model(const CaseReader& in, const toml::value& root, CaseDefinition& c
   const toml::value& dofs = in.require(model, "dofs", "model.dofs");
   // `dofs = N`: names x1 .. xN, as the chain's; generated once M and K are known to be N x N.
   const bool counted = dofs.is_integer();
-  if (counted && in.integer(dofs, "model.dofs") < 1) in.fail(&dofs, "model.dofs", "must be >= 1 (the number of dofs, named x1 .. xN)");
+  // Bounded before any matrix is read: a dense model beyond it exhausts memory (kMaxModelDofs).
+  const std::string why = ": the model's matrices are dense (reduce a larger model first: hbtrack reduce)";
+  if (counted && (in.integer(dofs, "model.dofs") < 1 || in.integer(dofs, "model.dofs") > kMaxModelDofs))
+    in.fail(&dofs, "model.dofs", "must be in [1, " + std::to_string(kMaxModelDofs) + "] (the number of dofs, named x1 .. xN)" + why);
   if (!counted) m.dof_names = read_dof_names(in, dofs, "model.dofs");
+  if (m.dof_names.size() > static_cast<size_t>(kMaxModelDofs))
+    in.fail(&dofs, "model.dofs", std::to_string(m.dof_names.size()) + " names, at most " + std::to_string(kMaxModelDofs) + why);
   if (const toml::value* file = dofs.is_table() ? in.find(dofs, "file") : nullptr)
     c.dofs_file = in.resolve(in.string(*file, "model.dofs.file")).string();
   const int n = counted ? in.integer(dofs, "model.dofs") : static_cast<int>(m.dof_names.size());
@@ -511,22 +513,24 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
                     "); a TOML case file must be UTF-8");
   }
   check_toml_nesting(text, path);
+  // toml11 is quadratic in a line's length: long lines are broken first (toml_long_lines.hpp).
+  TomlLines parsed = break_long_toml_lines(text);
   toml::value root;
   try {
-    std::istringstream stream(text);
+    std::istringstream stream(std::move(parsed.text));
     root = toml::parse(stream, path);
   } catch (const toml::syntax_error& e) {
     // toml11 reports over several lines; keep the first line and the line number.
     std::string msg = e.what();
     const std::string first = msg.substr(0, msg.find('\n'));
-    const std::string line = std::to_string(e.location().line());
+    const std::string line = std::to_string(parsed.lines.original(static_cast<long>(e.location().line())));
     throw CaseError(path + ":" + line +
                     ": TOML syntax error: " + first.substr(first.find(':') == std::string::npos ? 0 : first.find(':') + 2));
   } catch (const std::exception& e) {
     std::string msg = e.what();
     throw CaseError(path + ": cannot read: " + msg.substr(0, msg.find('\n')));
   }
-  CaseReader in(path);
+  CaseReader in(path, std::move(parsed.lines));
   if (!root.is_table()) throw CaseError(path + ": expected a TOML table at the top level");
   // Before the overrides, so that `--set elements[i]...` addresses element i of the expanded list.
   expand_element_templates(in, root);

@@ -2,6 +2,7 @@
 
 #include "hbtrack/io/mat_file.hpp"
 #include "hbtrack/io/matrix_market.hpp"
+#include "matrix_file_limits.hpp"
 
 namespace hbtrack {
 
@@ -42,6 +43,12 @@ std::string join(const std::vector<std::string>& words) {
 
 MatrixXd CaseReader::matrix(const toml::value& v, const std::string& field, int n) const {
   MatrixXd m;
+  const auto require_size = [&](Eigen::Index rows, Eigen::Index cols) {
+    if (n >= 0 && (rows != n || cols != n))
+      fail(&v, field,
+           "expected " + std::to_string(n) + "x" + std::to_string(n) + " (one row per dof), got " + std::to_string(rows) + "x" +
+               std::to_string(cols));
+  };
   if (v.is_array()) {
     const auto& rows = v.as_array();
     if (rows.empty()) fail(&v, field, "empty matrix");
@@ -62,14 +69,23 @@ MatrixXd CaseReader::matrix(const toml::value& v, const std::string& field, int 
       if (!fs::exists(path)) fail(f, field + ".file", "file '" + path.string() + "' does not exist");
       // A directory, a device (/dev/zero never ends) or a pipe is not a matrix file.
       if (!fs::is_regular_file(path)) fail(f, field + ".file", "'" + path.string() + "' is not a regular file");
+      // Read sparse and sized against the dofs before the dense copy: a 30000 x 30000 file of one
+      // entry made a 7.2 GB matrix before its size was refused.
+      Eigen::SparseMatrix<double> sparse;
       try {
         if (path.extension() == ".mat") {
           const toml::value* var = find(v, "variable");
           if (!var) fail(&v, field + ".variable", "missing (required for a .mat file)");
-          m = read_mat_variable(path.string(), string(*var, field + ".variable"));
+          sparse = read_mat_variable_sparse(path.string(), string(*var, field + ".variable"));
         } else {
-          m = read_matrix_market(path.string());
+          sparse = read_matrix_market_sparse(path.string());
         }
+      } catch (const std::runtime_error& e) {
+        fail(f, field + ".file", e.what());
+      }
+      require_size(sparse.rows(), sparse.cols());
+      try {
+        m = matrix_file::to_dense(path.string(), sparse);
       } catch (const std::runtime_error& e) {
         fail(f, field + ".file", e.what());
       }
@@ -79,10 +95,7 @@ MatrixXd CaseReader::matrix(const toml::value& v, const std::string& field, int 
   } else {
     fail(&v, field, "expected an array of rows or a table {file = ...} / {diagonal = [...]}");
   }
-  if (n >= 0 && (m.rows() != n || m.cols() != n))
-    fail(&v, field,
-         "expected " + std::to_string(n) + "x" + std::to_string(n) + " (one row per dof), got " + std::to_string(m.rows()) + "x" +
-             std::to_string(m.cols()));
+  require_size(m.rows(), m.cols());
   if (!m.allFinite()) fail(&v, field, "contains NaN or Inf");
   return m;
 }

@@ -14,6 +14,7 @@
 
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/util/choices.hpp"
+#include "toml_long_lines.hpp"
 
 namespace hbtrack {
 
@@ -25,13 +26,15 @@ std::string join(const std::vector<std::string>& words);
 // Reads one case file, keeping the file name and field path for every error message.
 class CaseReader {
  public:
-  explicit CaseReader(std::string file) : file_(std::move(file)) {}
+  // `lines`: the file's line of each line the parser read (break_long_toml_lines), for messages.
+  explicit CaseReader(std::string file, LineMap lines = {}) : file_(std::move(file)), lines_(std::move(lines)) {}
 
   [[noreturn]] void fail(const toml::value* where, const std::string& field, const std::string& rule) const {
     std::string loc = file_;
     if (where) {
       const auto l = where->location();
-      if (l.line() > 0 && l.file_name() != "unknown file" && l.file_name() != "--set") loc += ":" + std::to_string(l.line());
+      if (l.line() > 0 && l.file_name() != "unknown file" && l.file_name() != "--set")
+        loc += ":" + std::to_string(lines_.original(static_cast<long>(l.line())));
       if (l.file_name() == "--set") loc = "--set";
     }
     throw CaseError(loc + ": " + (field.empty() ? "" : field + ": ") + rule);
@@ -128,6 +131,7 @@ class CaseReader {
 
  private:
   std::string file_;
+  LineMap lines_;
 };
 
 // The index of the dof named by v ("unknown dof" with a suggestion otherwise).

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "hbtrack/io/case_file.hpp"
+#include "toml_scan.hpp"
 
 namespace hbtrack {
 
@@ -37,70 +38,16 @@ std::string read_bounded_file(const std::string& path, std::size_t max_bytes, co
 }
 
 void check_toml_nesting(std::string_view text, const std::string& source) {
-  enum class State { code, comment, basic, literal, multiline_basic, multiline_literal };
-  State state = State::code;
   int depth = 0;
-  long line = 1;
-  const auto starts = [&](std::size_t i, std::string_view token) { return text.substr(i, token.size()) == token; };
-  // A multi-line string may end with up to two quotes of content before its closing three.
-  const auto closing_quotes = [&](std::size_t i, char quote) {
-    std::size_t n = 0;
-    while (n < 5 && i + n < text.size() && text[i + n] == quote) ++n;
-    return n;
-  };
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char ch = text[i];
-    if (ch == '\n') {
-      ++line;
-      // A single-line string or a comment ends at the line's end (an unterminated string is
-      // the parser's error to report).
-      if (state == State::comment || state == State::basic || state == State::literal) state = State::code;
-      continue;
+  scan_toml_code(text, [&](std::size_t, char ch, long line) {
+    if (ch == '[' || ch == '{') {
+      if (++depth > kMaxTomlNesting)
+        throw CaseError(source + ":" + std::to_string(line) + ": arrays or inline tables nested deeper than " +
+                        std::to_string(kMaxTomlNesting) + " levels");
+    } else if ((ch == ']' || ch == '}') && depth > 0) {
+      --depth;
     }
-    switch (state) {
-      case State::code:
-        if (ch == '#')
-          state = State::comment;
-        else if (starts(i, "\"\"\""))
-          state = State::multiline_basic, i += 2;
-        else if (starts(i, "'''"))
-          state = State::multiline_literal, i += 2;
-        else if (ch == '"')
-          state = State::basic;
-        else if (ch == '\'')
-          state = State::literal;
-        else if (ch == '[' || ch == '{') {
-          if (++depth > kMaxTomlNesting)
-            throw CaseError(source + ":" + std::to_string(line) + ": arrays or inline tables nested deeper than " +
-                            std::to_string(kMaxTomlNesting) + " levels");
-        } else if ((ch == ']' || ch == '}') && depth > 0) {
-          --depth;
-        }
-        break;
-      case State::comment:
-        break;
-      case State::basic:
-        if (ch == '\\')
-          ++i;  // an escaped quote or backslash
-        else if (ch == '"')
-          state = State::code;
-        break;
-      case State::literal:
-        if (ch == '\'') state = State::code;
-        break;
-      case State::multiline_basic:
-        if (ch == '\\') {
-          if (i + 1 < text.size() && text[i + 1] == '\n') ++line;
-          ++i;
-        } else if (starts(i, "\"\"\"")) {
-          state = State::code, i += closing_quotes(i, '"') - 1;
-        }
-        break;
-      case State::multiline_literal:
-        if (starts(i, "'''")) state = State::code, i += closing_quotes(i, '\'') - 1;
-        break;
-    }
-  }
+  });
 }
 
 }  // namespace hbtrack

@@ -54,6 +54,7 @@ std::string model_fingerprint(const StructuralModel& model, const ElementList& e
       h.integer(b.parameter);
     }
     h.number(e->lanczos_exponent);
+    h.text(e->configuration());  // a subclass's own state: weights, a law's choice
   }
   return h.hex();
 }

@@ -68,6 +68,10 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedTracking> resumed;
   if (sink.resuming()) resumed = checkpoint_to_resume(sink, {StopReason::completed, StopReason::closed}, settings, read_tracking_state);
+  // Checked before the folder is touched, as frc's: the engine got vectors of another size.
+  if (resumed)
+    if (const std::string misfit = tracking_state_misfit(resumed->state, o.method, hbm.unknowns()); !misfit.empty())
+      throw CaseError("--resume: " + sink.checkpoint_path() + ": " + misfit);
   sink.open();
   const int rows_kept = resumed ? resumed->state.curve_points : 0;
   const TableStart start{resumed.has_value(), rows_kept};

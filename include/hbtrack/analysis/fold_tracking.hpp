@@ -69,6 +69,11 @@ struct FoldTrackingState {
   std::vector<FoldExtremum> extrema;  // of the finished legs (recorded outputs not kept)
 };
 
+// Why `state` cannot resume a tracking of `method` on a system of `harmonic_unknowns` unknowns,
+// naming the checkpoint's field ("" when it can): a state saved for another model or method has
+// vectors of other sizes, which the engine would combine with this system's (numbers or a crash).
+std::string tracking_state_misfit(const FoldTrackingState& state, TrackingMethod method, int harmonic_unknowns);
+
 // Optional checkpoint hooks of track_fold, as ContinuationRestart for one branch.
 struct FoldTrackingRestart {
   const FoldTrackingState* resume_from = nullptr;

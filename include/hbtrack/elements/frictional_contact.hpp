@@ -50,6 +50,7 @@ class FrictionalContact final : public NonlinearElement {
   // The slider may slip either way (sense 0); DLFT's contact is rigid (stiffness 0).
   std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& property_values, double omega) const override;
   ContactFormulation law() const { return law_; }
+  std::string configuration() const override { return law_ == ContactFormulation::dlft ? "law=dlft" : "law=penalty"; }
 
  private:
   ContactFormulation law_;

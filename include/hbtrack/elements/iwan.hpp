@@ -43,6 +43,7 @@ class Iwan final : public ScalarElement {
   Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& property_values) const override;
 
   int sliders() const { return sliders_; }
+  std::string configuration() const override { return ScalarElement::configuration() + ";sliders=" + std::to_string(sliders_); }
   // The discrete array: stiffness k_i and slip force F_i of each slider (power-law sliders, then
   // the Dirac one), with their derivatives with respect to the four properties (columns).
   struct SliderArray {

@@ -139,6 +139,12 @@ class NonlinearElement {
     return std::nullopt;
   }
 
+  // What the element keeps outside the base class's fields (dofs, properties, Lanczos) that
+  // shapes its force: a scalar element's weights, a law's choice, an Iwan's slider count. The
+  // model's fingerprint (results/model_fingerprint.hpp) hashes it, so that a case edited there
+  // does not resume a checkpoint of the old one. Default: nothing beyond the base class.
+  virtual std::string configuration() const { return {}; }
+
   int local_dofs() const { return static_cast<int>(dofs.size()); }
   std::vector<double> property_values(const ParameterValues& parameters) const;
   std::vector<double> property_values(const ParameterSet& parameters) const { return property_values(parameters.values()); }
@@ -150,6 +156,9 @@ class NonlinearElement {
 };
 
 using ElementList = std::vector<std::shared_ptr<NonlinearElement>>;
+
+// Numbers as exact text ("%a": the double itself, not a rounding of it), for configuration().
+std::string exact_text(const Eigen::Ref<const Eigen::VectorXd>& values);
 
 // A history element's sensitivities d f_i(t) / d x_j(s) as a dense (N k) x (N k) matrix, from
 // whichever form it returned (for tests and small checks).

@@ -22,6 +22,7 @@ class PolynomialStiffness final : public NonlinearElement {
   void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& property_values,
                 ElementResponse& out, bool want_property_derivatives) const override;
   const Eigen::MatrixXi& exponents() const { return exponents_; }
+  std::string configuration() const override;
 
  private:
   Eigen::MatrixXi exponents_;

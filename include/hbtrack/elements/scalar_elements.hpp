@@ -13,6 +13,7 @@ class ScalarElement : public NonlinearElement {
 
   // d = weights^T x_local. Default: [1] on one dof, [1, -1] between two dofs.
   Eigen::VectorXd weights;
+  std::string configuration() const override { return "weights=" + exact_text(weights); }
 
  protected:
   struct ScalarLaw {
@@ -59,6 +60,7 @@ class GapContact final : public ScalarElement {
   void switching_values(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, const std::vector<double>& property_values,
                         double* out) const override;
   ContactLawKind law_kind() const { return kind_; }
+  std::string configuration() const override { return ScalarElement::configuration() + ";law=" + to_string(kind_); }
 
  protected:
   ScalarLaw law(double d, double, const double* p) const override;

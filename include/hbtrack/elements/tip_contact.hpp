@@ -50,6 +50,7 @@ class TipContact final : public NonlinearElement {
   std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& property_values, double omega) const override;
   ContactLawKind law_kind() const { return kind_; }
   TipFriction friction() const { return friction_; }
+  std::string configuration() const override { return "law=" + to_string(kind_) + ";friction=" + to_string(friction_); }
 
  private:
   void evaluate_sliding(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& p,

@@ -1,6 +1,7 @@
 #pragma once
 // The identity of the model a run computes: an FNV-1a hash of its dof names, mass, damping and
-// stiffness matrices, forcing, and nonlinear elements (type, dofs, property bindings). Written
+// stiffness matrices, forcing, and nonlinear elements (type, dofs, property bindings, Lanczos,
+// and what a subclass keeps of its own: NonlinearElement::configuration). Written
 // into summary.json's options, and so into every checkpoint's settings: a --resume whose model
 // was edited since (a stiffness in K.mtx, a forcing, a damping ratio) is refused instead of
 // continuing one branch on two systems.

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Rotor 67's NFRC as the contact stiffness goes towards the rigid limit (issue 35, item 1): k = 1e8
+# (the case's), 1e9 and 1e10 N/m, in both friction senses and without friction (mu = 0), with the
+# law's width in force units scaled with k (width = 4e-6 m * k: the law rounded over the same
+# +-1 % of the clearance), then k = 1e10 at H = 15 (2048 samples) for the truncation. From
+# omega = 1000 rad/s, not the case's 1600: at k >= 1e9 the geometry sense's branch bends below
+# 1600. Writes OUT/<sense>-k<k>[-h15]/ and OUT/table.md (python/contact_stiffness_table.py).
+# About 15 minutes on one core. Usage: scripts/rotor67-contact-stiffness.sh [OUT]
+set -uo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-results/rotor67_contact_stiffness}
+hbtrack=${HBTRACK:-build/hbtrack}
+mkdir -p "$out"
+reversed=()
+for k in 0 1 2 3 4 5 6 7 8; do reversed+=(--set "elements[$k].engine_order=1"); done
+run() {  # sense stiffness folder [extra --set ...]
+  local sense=$1 k=$2 folder=$3
+  shift 3
+  local width
+  width=$(/usr/bin/python3 -c "print(4e-6 * $k)")
+  local sense_sets=()
+  [ "$sense" = reversed ] && sense_sets=("${reversed[@]}")
+  [ "$sense" = frictionless ] && sense_sets=(--set mu=0)
+  "$hbtrack" frc examples/rotor67/nominal.toml --set "contact_stiffness=$k" --set "contact_width=$width" "${sense_sets[@]}" \
+    --set continuation.omega_start=1000 "$@" \
+    -o "$out/$folder" -q || echo "rotor67-contact-stiffness: $folder: exit $?" >&2
+}
+for sense in geometry reversed frictionless; do
+  for k in 1e8 1e9 1e10; do run "$sense" "$k" "$sense-k$k"; done
+  run "$sense" 1e10 "$sense-k1e10-h15" --set harmonic_balance.harmonics=15 --set harmonic_balance.samples=2048
+done
+/usr/bin/python3 python/contact_stiffness_table.py "$out" > "$out/table.md"
+cat "$out/table.md"
