@@ -60,8 +60,8 @@ fs::path write_case(const std::string& name, std::string text, const std::string
 TEST(BaseMotion, SameSolutionAsTheEquivalentForcedProblem) {
   // Base displacement U = 0.05 cos + 0.02 sin at harmonic 1: the forcing M r (omega^2) U built by
   // hand at each omega (r = [1, 1], M r = [1, 0.5]), a fixed [[forcing]] of the same size.
-  const CaseDefinition base =
-      load_case(write_case("base", kChain, "[base_motion]\nkind = \"displacement\"\ndofs = [\"x1\", \"x2\"]\ncos = 0.05\nsin = 0.02\n").string());
+  const CaseDefinition base = load_case(
+      write_case("base", kChain, "[base_motion]\nkind = \"displacement\"\ndofs = [\"x1\", \"x2\"]\ncos = 0.05\nsin = 0.02\n").string());
   ASSERT_TRUE(base.base_motion.has_value());
   HarmonicBalance base_hbm(base.model, base.elements, base.parameters, base.harmonic_balance);
   for (double omega : {0.5, 0.9, 1.6}) {

@@ -90,8 +90,7 @@ TEST(ForcingGrowth, LinearResponseIsTheClosedFormFrfTimesTheGrowth) {
   p.set("amplitude", 1.5);
   HarmonicBalance hbm(m, {}, p, HarmonicBalanceOptions{3, 16, Condensation::none, {}, 1});
   for (double omega : {0.5, 1.2, 1.3, 2.5}) {
-    const std::complex<double> x1 =
-        1.5 * std::pow(omega / 1.2, 2) * 0.4 / std::complex<double>(3.0 - 2.0 * omega * omega, 0.1 * omega);
+    const std::complex<double> x1 = 1.5 * std::pow(omega / 1.2, 2) * 0.4 / std::complex<double>(3.0 - 2.0 * omega * omega, 0.1 * omega);
     const VectorXd x = hbm.linear_solution(omega);
     // Unknowns [a0, a1, b1, ...] with a1 - i b1 = x1: exact to round-off.
     EXPECT_NEAR(x(1), x1.real(), 1e-13 * std::abs(x1)) << omega;

@@ -47,7 +47,8 @@ void read_base_motion(const CaseReader& in, const toml::value& root, CaseDefinit
   }
   b.harmonic = in.integer_or(*base, "harmonic", "base_motion.harmonic", 1);
   if (b.harmonic < 1)
-    in.fail(in.find(*base, "harmonic"), "base_motion.harmonic", "must be >= 1 (a constant base motion exerts no force on the relative motion)");
+    in.fail(in.find(*base, "harmonic"), "base_motion.harmonic",
+            "must be >= 1 (a constant base motion exerts no force on the relative motion)");
   if (!in.find(*base, "cos") && !in.find(*base, "sin")) in.fail(base, "base_motion", "needs cos and/or sin (the motion's amplitudes)");
   b.cos_part = in.number_or(*base, "cos", "base_motion.cos", 0.0);
   b.sin_part = in.number_or(*base, "sin", "base_motion.sin", 0.0);
