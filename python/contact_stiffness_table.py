@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The rotor 67 NFRC against the contact stiffness (scripts/rotor67-contact-stiffness.sh): one
 Markdown table row per run folder <sense>-k<k>[-h15] of OUT, from its summary.json and
-branch.csv. Usage: contact_stiffness_table.py OUT"""
+branch.csv; with --figure, the leading edge's radial peak (max over a period) against omega,
+one panel per sense, one line per stiffness (H = 10), stable solid, unstable dashed.
+Usage: contact_stiffness_table.py OUT [--figure PNG]"""
 import csv
 import json
 import sys
@@ -26,6 +28,37 @@ def row(folder):
         above=", ".join(above) or "none")
 
 
+def figure(folders, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    senses = [s for s in ("geometry", "reversed", "frictionless") if any(d.name.startswith(s + "-") for d in folders)]
+    fig, axes = plt.subplots(1, len(senses), figsize=(5 * len(senses), 4), sharey=True, squeeze=False)
+    colours = {"1e8": "C0", "1e9": "C1", "1e10": "C3"}
+    for ax, sense in zip(axes[0], senses):
+        for k, colour in colours.items():
+            folder = next((d for d in folders if d.name == f"{sense}-k{k}"), None)
+            if folder is None:
+                continue
+            with open(folder / "branch.csv", newline="") as f:
+                rows = list(csv.DictReader(f))
+            omega = [float(r["omega"]) for r in rows]
+            peak = [1e3 * float(r["max_le"]) for r in rows]
+            stable = [r["stable"] == "1" for r in rows]
+            label = f"k = {k} N/m"
+            for i in range(1, len(rows)):  # segment by segment: solid where both ends are stable
+                ax.plot(omega[i - 1:i + 1], peak[i - 1:i + 1], color=colour, lw=1.2,
+                        ls="-" if stable[i - 1] and stable[i] else "--", label=label if i == 1 else None)
+        ax.set_title({"geometry": "sense of the geometry", "reversed": "friction sense reversed",
+                      "frictionless": "without friction (mu = 0)"}[sense])
+        ax.set_xlabel("omega (rad/s)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axes[0][0].set_ylabel("leading-edge radial peak, max over a period (mm)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
 def main():
     out = Path(sys.argv[1])
     print("| sense | k (N/m) | H | points | stop | LP omega (rad/s) | NS omega (rad/s) | peak le (mm) at omega | loop gain > 1 |")
@@ -37,6 +70,8 @@ def main():
         return order.get(sense, 3), float(rest.split("-")[0]), rest
     for d in sorted(folders, key=key):
         print(row(d))
+    if len(sys.argv) > 3 and sys.argv[2] == "--figure":
+        figure(folders, sys.argv[3])
 
 
 if __name__ == "__main__":

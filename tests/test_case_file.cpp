@@ -77,6 +77,22 @@ struct BadCase {
   const char* expected;  // substring of the error message
 };
 
+// Each case fails to load with one line that starts with its file and holds `expected`.
+void expect_one_line_errors(const std::vector<BadCase>& cases) {
+  for (const BadCase& bad : cases) {
+    const fs::path p = write_case(bad.name, bad.text);
+    try {
+      load_case(p.string());
+      ADD_FAILURE() << bad.name << ": no error";
+    } catch (const CaseError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(bad.expected), std::string::npos) << bad.name << ": got '" << msg << "'";
+      EXPECT_EQ(msg.find('\n'), std::string::npos) << bad.name << ": not one line: " << msg;
+      EXPECT_EQ(msg.rfind(p.string(), 0), 0u) << bad.name << ": does not start with the file name: " << msg;
+    }
+  }
+}
+
 }  // namespace
 
 TEST(CaseFile, ValidCaseLoadsAsWritten) {
@@ -249,18 +265,54 @@ TEST(CaseFile, MalformedCasesGiveOneLineErrorsNamingTheField) {
     for (int i = 0; i < 4001; ++i) names << "n" << i << "\n";
   }
   std::ofstream(test_dir() / "empty.mat") << "";
-  for (const BadCase& bad : cases) {
-    const fs::path p = write_case(bad.name, bad.text);
-    try {
-      load_case(p.string());
-      ADD_FAILURE() << bad.name << ": no error";
-    } catch (const CaseError& e) {
-      const std::string msg = e.what();
-      EXPECT_NE(msg.find(bad.expected), std::string::npos) << bad.name << ": got '" << msg << "'";
-      EXPECT_EQ(msg.find('\n'), std::string::npos) << bad.name << ": not one line: " << msg;
-      EXPECT_EQ(msg.rfind(p.string(), 0), 0u) << bad.name << ": does not start with the file name: " << msg;
-    }
-  }
+  expect_one_line_errors(cases);
+}
+
+TEST(CaseFile, ForcingGrowthAndBaseMotionLoadAsWritten) {
+  const CaseDefinition grown =
+      load_case(write_case("growth", variant("", "[forcing_growth]\nexponent = 2\nreference_frequency = 1.5")).string());
+  EXPECT_EQ(grown.model.forcing_growth.exponent, 2.0);
+  EXPECT_EQ(grown.model.forcing_growth.reference_frequency, 1.5);
+  const CaseDefinition based =
+      load_case(write_case("base", variant("[[forcing]]\ndof = \"a\"\ncos = 0.5\n",
+                                           "[base_motion]\nkind = \"velocity\"\ndofs = [\"a\", \"b\"]\ncos = 0.1\n"))
+                    .string());
+  ASSERT_TRUE(based.base_motion.has_value());
+  EXPECT_EQ(based.base_motion->kind, BaseMotionKind::velocity);
+  EXPECT_EQ(based.base_motion->dofs, (std::vector<int>{0, 1}));
+  // Its equivalent forcing -M r u_b'': a velocity's grows as omega^1.
+  ASSERT_EQ(based.model.forcing.size(), 1u);
+  EXPECT_EQ(based.model.forcing_growth.exponent, 1.0);
+}
+
+TEST(CaseFile, BadForcingGrowthOrBaseMotionGivesOneLineErrorsNamingTheField) {
+  const std::string no_forcing = variant("[[forcing]]\ndof = \"a\"\ncos = 0.5\n", "");
+  auto with_base = [&](const std::string& body) { return no_forcing + "[base_motion]\n" + body + "\n"; };
+  const std::vector<BadCase> cases = {
+      {"growth_negative", variant("", "[forcing_growth]\nexponent = -1\nreference_frequency = 1.0"),
+       "forcing_growth.exponent: must be >= 0"},
+      {"growth_no_reference", variant("", "[forcing_growth]\nexponent = 2"), "forcing_growth.reference_frequency: missing"},
+      {"growth_zero_reference", variant("", "[forcing_growth]\nexponent = 2\nreference_frequency = 0"),
+       "forcing_growth.reference_frequency: must be > 0"},
+      {"growth_unknown_key", variant("", "[forcing_growth]\nexponnent = 2"), "did you mean 'exponent'"},
+      {"growth_without_forcing", no_forcing + "[forcing_growth]\nexponent = 2\nreference_frequency = 1.0\n",
+       "forcing_growth: there is no [[forcing]]"},
+      {"base_with_forcing", variant("", "[base_motion]\nkind = \"displacement\"\ndofs = [\"a\"]\ncos = 0.1"),
+       "base_motion: cannot be combined with [[forcing]]"},
+      {"base_with_growth", with_base("kind = \"displacement\"\ndofs = [\"a\"]\ncos = 0.1\n[forcing_growth]\nexponent = 2"),
+       "forcing_growth: cannot be combined with [base_motion]"},
+      {"base_unknown_dof", with_base("kind = \"displacement\"\ndofs = [\"c\"]\ncos = 0.1"), "base_motion.dofs[0]: unknown dof 'c'"},
+      {"base_dof_twice", with_base("kind = \"displacement\"\ndofs = [\"a\", \"a\"]\ncos = 0.1"), "base_motion.dofs[1]: dof listed twice"},
+      {"base_no_dofs", with_base("kind = \"displacement\"\ndofs = []\ncos = 0.1"), "base_motion.dofs: expected a non-empty array"},
+      {"base_bad_kind", with_base("kind = \"position\"\ndofs = [\"a\"]\ncos = 0.1"),
+       "base_motion.kind: must be displacement, velocity or acceleration, got 'position'"},
+      {"base_no_kind", with_base("dofs = [\"a\"]\ncos = 0.1"), "base_motion.kind: missing"},
+      {"base_static", with_base("kind = \"displacement\"\ndofs = [\"a\"]\nharmonic = 0\ncos = 0.1"), "base_motion.harmonic: must be >= 1"},
+      {"base_above_truncation", with_base("kind = \"displacement\"\ndofs = [\"a\"]\nharmonic = 5\ncos = 0.1"),
+       "base_motion.harmonic: harmonic 5 is not among the harmonics balanced"},
+      {"base_no_amplitude", with_base("kind = \"displacement\"\ndofs = [\"a\"]"), "base_motion: needs cos and/or sin"},
+  };
+  expect_one_line_errors(cases);
 }
 
 }  // namespace hbtrack_tests::file_case_file

@@ -80,11 +80,12 @@ TEST(CaseFileDocs, EveryKeyTableListsExactlyTheKeysTheReaderAccepts) {
   const std::map<std::string, KeySet> documented = documented_keys();
   // The sections documented by a key table; [[forcing]], [[elements]] and [[outputs]] are
   // documented in prose (their keys depend on the shape or element type).
-  for (const char* section : {"model", "damping", "harmonic_balance", "continuation", "stability", "study"}) {
+  for (const char* section :
+       {"model", "damping", "forcing_growth", "base_motion", "harmonic_balance", "continuation", "stability", "study"}) {
     ASSERT_TRUE(documented.count(section)) << "docs/case-file.md has no key table for [" << section << "]";
     EXPECT_EQ(documented.at(section), accepted_keys(section)) << "[" << section << "]";
   }
-  EXPECT_EQ(documented.size(), 6u) << "a new key table: add its section above";
+  EXPECT_EQ(documented.size(), 8u) << "a new key table: add its section above";
 }
 
 }  // namespace hbtrack_tests::file_case_file_docs

@@ -58,6 +58,7 @@ TEST(Choices, EveryValueRoundTripsThroughItsName) {
   EXPECT_EQ(round_trip_names<CrossCheck>(), (std::vector<std::string>{"auto", "off"}));
   EXPECT_EQ(round_trip_names<TrackingMethod>(), (std::vector<std::string>{"bordered", "extended"}));
   EXPECT_EQ(round_trip_names<IntegrationMethod>(), (std::vector<std::string>{"newmark", "dopri5"}));
+  EXPECT_EQ(round_trip_names<BaseMotionKind>(), (std::vector<std::string>{"displacement", "velocity", "acceleration"}));
   // Not a setting, but named the same way: summary.json's and the checkpoints' stop_reason.
   EXPECT_EQ(round_trip_names<StopReason>(), (std::vector<std::string>{"running",
                                                                       "reached_end",

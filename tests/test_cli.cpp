@@ -100,6 +100,31 @@ TEST(Cli, BadInputFailsWithOneLineReason) {
   EXPECT_NE(no_output.err.find("--output is required"), std::string::npos) << no_output.err;
 }
 
+TEST(Cli, BadExcitationExitsWithTwoAndOneLineNamingTheFileAndField) {
+  // The two examples with one line broken each: exit 2, "hbtrack: FILE:LINE: FIELD: RULE".
+  struct Broken {
+    const char *example, *from, *to, *expected;
+  };
+  const Broken cases[] = {
+      {"unbalanced_disc_jenkins", "exponent = 2", "exponent = -2", "forcing_growth.exponent: must be >= 0"},
+      {"unbalanced_disc_jenkins", "reference_frequency = 1.0", "", "forcing_growth.reference_frequency: missing"},
+      {"shaker_base_motion", "dofs = [\"x1\", \"x2\"]      # the dofs the table", "dofs = [\"x1\", \"x3\"]      # the dofs the table",
+       "base_motion.dofs[1]: unknown dof 'x3'"},
+  };
+  for (const Broken& b : cases) {
+    std::ifstream in(hbtrack::test::source_path(std::string("examples/") + b.example + ".toml"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find(b.from), std::string(b.from).size(), b.to);
+    const fs::path bad = fs::temp_directory_path() / ("hbtrack_cli_bad_" + std::to_string(getpid()) + "_" + b.example + ".toml");
+    std::ofstream(bad) << text;
+    const CliRun r = run_cli("frc " + bad.string() + " -o " + (fs::temp_directory_path() / "hbtrack_cli_bad_excitation_out").string());
+    EXPECT_EQ(r.exit_code, 2) << b.expected;
+    EXPECT_EQ(r.err.rfind("hbtrack: " + bad.string() + ":", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(b.expected), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
 TEST(Cli, FailedContinuationKeepsItsPointsAndExitsNonZero) {
   const fs::path out = fs::temp_directory_path() / "hbtrack_cli_fail";
   fs::remove_all(out);

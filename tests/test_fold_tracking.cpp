@@ -136,6 +136,16 @@ TEST(FoldSystems, JacobiansMatchFiniteDifferencesWithFrictionAndLanczosFiltering
   expect_fold_jacobians_match_finite_differences(hbm, x, omega, {"amplitude", "mu"});
 }
 
+TEST(FoldSystems, JacobiansMatchFiniteDifferencesWithAForcingGrowingWithOmega) {
+  // An unbalance-like forcing, (omega / 1.2)^2 f: R_omega carries its derivative, which both
+  // fold systems' omega column must see (and the amplitude's derivative its factor).
+  CaseDefinition c = two_dof_contact_case();
+  c.model.forcing_growth = {2.0, 1.2};
+  HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+  const double omega = 1.1;
+  expect_fold_jacobians_match_finite_differences(hbm, hbm.linear_solution(omega) * 1.3, omega, {"amplitude", "clearance"});
+}
+
 TEST(FoldSystems, BorderedResidualFromKeptFactorsEqualsAFreshFactorization) {
   // A residual without the Jacobian (a chord iteration) refines the bordered null vector from the
   // factors of the last full evaluation; a fresh system factors the same matrix anew.

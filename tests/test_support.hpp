@@ -48,6 +48,30 @@ inline Eigen::MatrixXd fd_jacobian(const std::function<Eigen::VectorXd(const Eig
   return j;
 }
 
+// Central differences of R(x, omega) in omega, and in parameter p (restored afterwards).
+inline Eigen::VectorXd omega_difference(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, double h) {
+  return central_difference(
+      [&](double w) {
+        Eigen::VectorXd r;
+        hbm.evaluate(x, w, r);
+        return r;
+      },
+      omega, h);
+}
+inline Eigen::VectorXd parameter_difference(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int p, double h) {
+  const double p0 = hbm.parameters().value(p);
+  const Eigen::VectorXd out = central_difference(
+      [&](double value) {
+        hbm.set_parameter(p, value);
+        Eigen::VectorXd r;
+        hbm.evaluate(x, omega, r);
+        return r;
+      },
+      p0, h);
+  hbm.set_parameter(p, p0);
+  return out;
+}
+
 // max |a - b| relative to max |b| (or 1 when b is tiny).
 inline double relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).cwiseAbs().maxCoeff() / std::max(b.cwiseAbs().maxCoeff(), 1e-300);

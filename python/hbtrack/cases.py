@@ -142,8 +142,8 @@ def load_case(path, set=None):  # noqa: A002 - `set` is the CLI's flag name
     return require_core().load_case(os.fspath(path), override_strings(set))
 
 
-def case_from_arrays(M, K, dofs, *, C=None, damping=None, forcing=(), elements=(), parameters=None,
-                     harmonic_balance=None, continuation, stability=None, outputs=None):
+def case_from_arrays(M, K, dofs, *, C=None, damping=None, forcing=(), forcing_growth=None, base_motion=None,
+                     elements=(), parameters=None, harmonic_balance=None, continuation, stability=None, outputs=None):
     """A case from matrices and plain dicts whose keys are the case file's.
 
     Parameters
@@ -158,6 +158,13 @@ def case_from_arrays(M, K, dofs, *, C=None, damping=None, forcing=(), elements=(
         {"rayleigh": [alpha, beta]} or {"modal_ratios": [...]}.
     forcing : sequence of dict, optional
         [{"dof": "x", "cos": 0.18}, ...], or "cos"/"sin" arrays of n entries.
+    forcing_growth : dict, optional
+        {"exponent": k, "reference_frequency": w_ref}: the forcing times (omega / w_ref)^k
+        (an unbalance: k = 2).
+    base_motion : dict, optional
+        {"kind": "displacement" | "velocity" | "acceleration", "dofs": [...], "cos": ...,
+        "sin": ..., "harmonic": 1}: an imposed support motion instead of `forcing`; the results
+        are the motion relative to the base.
     elements : sequence of dict, optional
         [{"type": "cubic_spring", "dofs": ["x"], "cubic_stiffness": 0.1}, ...].
     parameters, harmonic_balance, stability : dict, optional
@@ -194,8 +201,9 @@ def case_from_arrays(M, K, dofs, *, C=None, damping=None, forcing=(), elements=(
         sections.append(("damping", {"C": as_matrix(C, "C")}))
     elif damping is not None:
         sections.append(("damping", dict(damping)))
-    for name, table in (("parameters", parameters), ("harmonic_balance", harmonic_balance),
-                        ("continuation", continuation), ("stability", stability)):
+    for name, table in (("forcing_growth", forcing_growth), ("base_motion", base_motion), ("parameters", parameters),
+                        ("harmonic_balance", harmonic_balance), ("continuation", continuation),
+                        ("stability", stability)):
         if table:
             sections.append((name, dict(table)))
     if outputs is None:

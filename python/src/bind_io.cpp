@@ -21,6 +21,33 @@ void bind_case(py::module_& m) {
       .def_property_readonly("mass", [](const CaseDefinition& c) { return c.model.mass; })
       .def_property_readonly("stiffness", [](const CaseDefinition& c) { return c.model.stiffness; })
       .def_property_readonly("damping", [](const CaseDefinition& c) { return c.model.damping; })
+      // The excitations beside [[forcing]], as the case file wrote them (None when absent).
+      .def_property_readonly(
+          "forcing_growth",
+          [](const CaseDefinition& c) -> py::object {
+            if (!c.model.forcing_growth.active() || c.base_motion) return py::none();
+            py::dict out;
+            out["exponent"] = c.model.forcing_growth.exponent;
+            out["reference_frequency"] = c.model.forcing_growth.reference_frequency;
+            return out;
+          },
+          "[forcing_growth] as {exponent, reference_frequency}: the forcing times (omega/reference_frequency)^exponent; None when fixed")
+      .def_property_readonly(
+          "base_motion",
+          [](const CaseDefinition& c) -> py::object {
+            if (!c.base_motion) return py::none();
+            const BaseMotion& b = *c.base_motion;
+            std::vector<std::string> dofs;
+            for (int d : b.dofs) dofs.push_back(c.model.dof_names[static_cast<size_t>(d)]);
+            py::dict out;
+            out["kind"] = to_string(b.kind);
+            out["dofs"] = dofs;
+            out["harmonic"] = b.harmonic;
+            out["cos"] = b.cos_part;
+            out["sin"] = b.sin_part;
+            return out;
+          },
+          "[base_motion] as {kind, dofs, harmonic, cos, sin} (results are the motion relative to the base); None when absent")
       .def_property_readonly("outputs",
                              [](const CaseDefinition& c) {
                                std::vector<std::string> names;

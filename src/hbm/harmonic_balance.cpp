@@ -64,14 +64,23 @@ void HarmonicBalanceSystem::omega_derivative_samples(const HarmonicBalanceWorksp
   }
 }
 
-void HarmonicBalanceSystem::add_condensed_linear_part(double amplitude, const CondensedOperators& at, const VectorXd& x, VectorXd& r,
-                                                      MatrixXd* jacobian, VectorXd* r_omega) const {
+double HarmonicBalanceSystem::forcing_scale(const ParameterValues& p, double omega) const {
+  return p[static_cast<size_t>(amplitude_index_)] * model_.forcing_growth.factor(omega);
+}
+
+void HarmonicBalanceSystem::add_condensed_linear_part(double amplitude, double omega, const CondensedOperators& at, const VectorXd& x,
+                                                      VectorXd& r, MatrixXd* jacobian, VectorXd* r_omega) const {
   const int q = retained_dofs();
+  // A growing forcing: its scale amplitude g(omega) in the residual, and -amplitude g'(omega) Fr
+  // in R_omega beside the condenser's derivative at a fixed scale.
+  const ForcingGrowth& growth = model_.forcing_growth;
+  const double scale = amplitude * growth.factor(omega);
+  const double scale_derivative = amplitude * growth.derivative(omega);
   for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
     const int j = basis_.harmonic_numbers()[static_cast<size_t>(slot)];
     const VectorXcd z = harmonic(x, slot, q);
     const Eigen::MatrixXcd& zr = at.reduced_stiffness[static_cast<size_t>(j)];
-    const VectorXcd rc = zr * z - amplitude * at.reduced_force[static_cast<size_t>(j)];
+    const VectorXcd rc = zr * z - scale * at.reduced_force[static_cast<size_t>(j)];
     // z = a - i b and R_a - i R_b = rc, so R_a = Re(rc), R_b = -Im(rc).
     const int ia = slot_offset(slot) * q;
     r.segment(ia, q) += rc.real();
@@ -86,7 +95,8 @@ void HarmonicBalanceSystem::add_condensed_linear_part(double amplitude, const Co
       }
     }
     if (r_omega) {  // the condenser's derivative is in the fundamental, omega / nu
-      const VectorXcd dc = condenser_->omega_derivative(j, z, amplitude, at) / static_cast<double>(options_.subharmonic);
+      VectorXcd dc = condenser_->omega_derivative(j, z, scale, at) / static_cast<double>(options_.subharmonic);
+      if (growth.active()) dc -= scale_derivative * at.reduced_force[static_cast<size_t>(j)];
       r_omega->segment(ia, q) += dc.real();
       if (j > 0) r_omega->segment(ia + q, q) -= dc.imag();
     }
@@ -192,7 +202,7 @@ void HarmonicBalanceSystem::evaluate(const ParameterValues& p, HarmonicBalanceWo
   if (residual_elements_) {
     const ScopedPhase timing(Phase::jacobian);
     condenser_->update(omega, ws.condensed_);
-    add_condensed_linear_part(amplitude, ws.condensed_, x, r, jacobian, r_omega);
+    add_condensed_linear_part(amplitude, omega, ws.condensed_, x, r, jacobian, r_omega);
     r_linear = r;
     if (r_omega) r_omega_linear = *r_omega;
     if (jacobian) jacobian_linear = *jacobian;
@@ -227,7 +237,7 @@ void HarmonicBalanceSystem::evaluate(const ParameterValues& p, HarmonicBalanceWo
   // The condensed linear part (Schur complements per harmonic when omega changed).
   const ScopedPhase timing(Phase::jacobian);
   condenser_->update(fundamental(omega), ws.condensed_);
-  add_condensed_linear_part(amplitude, ws.condensed_, x, r, jacobian, r_omega);
+  add_condensed_linear_part(amplitude, omega, ws.condensed_, x, r, jacobian, r_omega);
 }
 
 VectorXd HarmonicBalanceSystem::parameter_derivative(const ParameterValues& p, HarmonicBalanceWorkspace& ws, const VectorXd& x,
@@ -241,7 +251,8 @@ VectorXd HarmonicBalanceSystem::parameter_derivative(const ParameterValues& p, H
     condenser_->update(fundamental(omega), ws.condensed_);
     for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
       const int j = basis_.harmonic_numbers()[static_cast<size_t>(slot)];
-      const VectorXcd& f = ws.condensed_.reduced_force[static_cast<size_t>(j)];
+      // d/d(amplitude) of -amplitude g(omega) Fr
+      const VectorXcd f = model_.forcing_growth.factor(omega) * ws.condensed_.reduced_force[static_cast<size_t>(j)];
       const int ia = slot_offset(slot) * q;
       out.segment(ia, q) -= f.real();
       if (j > 0) out.segment(ia + q, q) += f.imag();
@@ -289,7 +300,7 @@ VectorXd HarmonicBalanceSystem::expand(const ParameterValues& p, HarmonicBalance
   check(p, ws);
   const int q = retained_dofs();
   const int n = model_.dofs();
-  const double amplitude = p[static_cast<size_t>(amplitude_index_)];
+  const double amplitude = forcing_scale(p, omega);
   condenser_->update(fundamental(omega), ws.condensed_);
   VectorXd full = VectorXd::Zero(n * (2 * options_.harmonics + 1));
   for (int slot = 0; slot < static_cast<int>(slot_offset_.size()); ++slot) {
@@ -308,7 +319,7 @@ VectorXd HarmonicBalanceSystem::expand(const ParameterValues& p, HarmonicBalance
 VectorXd HarmonicBalanceSystem::linear_solution(const ParameterValues& p, HarmonicBalanceWorkspace& ws, double omega) const {
   check(p, ws);
   const int q = retained_dofs();
-  const double amplitude = p[static_cast<size_t>(amplitude_index_)];
+  const double amplitude = forcing_scale(p, omega);
   const CondensedOperators& at = ws.condensed_;
   condenser_->update(fundamental(omega), ws.condensed_);
   VectorXd x(unknowns());

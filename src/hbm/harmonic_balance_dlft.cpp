@@ -24,7 +24,7 @@ VectorXd HarmonicBalanceSystem::linear_residual(const ParameterValues& p, Harmon
                                                 double omega) const {
   VectorXd r = VectorXd::Zero(unknowns());
   condenser_->update(omega, ws.condensed_);
-  add_condensed_linear_part(p[static_cast<size_t>(amplitude_index_)], ws.condensed_, x, r, nullptr, nullptr);
+  add_condensed_linear_part(p[static_cast<size_t>(amplitude_index_)], omega, ws.condensed_, x, r, nullptr, nullptr);
   return r;
 }
 

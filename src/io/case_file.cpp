@@ -15,6 +15,7 @@
 
 #include "case_dof_names.hpp"
 #include "case_elements.hpp"
+#include "case_excitation.hpp"
 #include "case_reader.hpp"
 #include "case_templates.hpp"
 #include "hbtrack/io/input_file.hpp"
@@ -535,14 +536,16 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   // Before the overrides, so that `--set elements[i]...` addresses element i of the expanded list.
   expand_element_templates(in, root);
   apply_overrides(in, root, overrides);
-  in.check_keys(
-      root, "",
-      {"model", "damping", "forcing", "parameters", "elements", "harmonic_balance", "continuation", "stability", "outputs", "study"});
+  in.check_keys(root, "",
+                {"model", "damping", "forcing", "forcing_growth", "base_motion", "parameters", "elements", "harmonic_balance",
+                 "continuation", "stability", "outputs", "study"});
   CaseDefinition c;
   c.path = path;
   read_model(in, root, c);
   read_damping(in, root, c);
   read_forcing(in, root, c);
+  read_forcing_growth(in, root, c);
+  read_base_motion(in, root, c);
   try {
     c.model.validate();
   } catch (const std::invalid_argument& e) {
@@ -553,6 +556,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   read_settings(in, root, c);
   check_stability_supported(in, root, c);
   check_forcing_within_harmonics(in, root, c);
+  check_base_motion_within_harmonics(in, root, c);
   read_outputs(in, root, c);
   read_study(in, root, c);
   return c;

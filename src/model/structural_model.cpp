@@ -1,11 +1,18 @@
 #include "hbtrack/model/structural_model.hpp"
 
 #include <Eigen/Cholesky>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 #include <string>
 
 namespace hbtrack {
+
+double ForcingGrowth::factor(double omega) const { return active() ? std::pow(omega / reference_frequency, exponent) : 1.0; }
+
+double ForcingGrowth::derivative(double omega) const {
+  return active() ? exponent / reference_frequency * std::pow(omega / reference_frequency, exponent - 1.0) : 0.0;
+}
 
 int StructuralModel::find_dof(const std::string& name) const {
   for (size_t i = 0; i < dof_names.size(); ++i)
@@ -43,6 +50,12 @@ void StructuralModel::validate() const {
     if (f.cos_part.size() != n || f.sin_part.size() != n)
       throw std::invalid_argument("forcing: force vectors must have one entry per dof (" + std::to_string(n) + ")");
   }
+  if (!(forcing_growth.exponent >= 0.0) || !std::isfinite(forcing_growth.exponent))
+    throw std::invalid_argument("forcing_growth.exponent: must be >= 0 and finite (the forcing grows as (omega/omega_ref)^k), got " +
+                                std::to_string(forcing_growth.exponent));
+  if (!(forcing_growth.reference_frequency > 0.0) || !std::isfinite(forcing_growth.reference_frequency))
+    throw std::invalid_argument("forcing_growth.reference_frequency: must be > 0 and finite [rad/s], got " +
+                                std::to_string(forcing_growth.reference_frequency));
 }
 
 }  // namespace hbtrack

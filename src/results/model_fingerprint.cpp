@@ -42,6 +42,10 @@ std::string model_fingerprint(const StructuralModel& model, const ElementList& e
     h.matrix(f.cos_part);
     h.matrix(f.sin_part);
   }
+  if (model.forcing_growth.active()) {  // only then: the fingerprints of fixed forcings stay as they were
+    h.number(model.forcing_growth.exponent);
+    h.number(model.forcing_growth.reference_frequency);
+  }
   h.integer(static_cast<long long>(elements.size()));
   for (const auto& e : elements) {
     h.text(e->type());

@@ -13,7 +13,8 @@ EquationOfMotion::EquationOfMotion(const StructuralModel& model, const ElementLi
   if (!(omega > 0) || !std::isfinite(omega)) throw std::invalid_argument("omega: must be > 0 and finite, got " + std::to_string(omega));
   int history_size_so_far = 0;
   const int amplitude_index = parameters.find("amplitude");
-  const double amplitude = amplitude_index < 0 ? 1.0 : parameters.value(amplitude_index);
+  // A forcing that grows with the frequency is fixed at this simulation's omega.
+  const double amplitude = (amplitude_index < 0 ? 1.0 : parameters.value(amplitude_index)) * model.forcing_growth.factor(omega);
   for (const HarmonicForce& h : model.forcing) forcing_.push_back({h.order, amplitude * h.cos_part, amplitude * h.sin_part});
 
   for (const auto& element : elements) {

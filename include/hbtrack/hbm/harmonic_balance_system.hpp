@@ -1,7 +1,8 @@
 #pragma once
 // The harmonic balance residual of a structural model with local nonlinear elements, condensed
 // onto the retained dofs (paper eqs 9-11, 17-23):
-//   R(x, omega) = Zr(omega) x + f_nl(x, omega) - amplitude * Fr(omega),
+//   R(x, omega) = Zr(omega) x + f_nl(x, omega) - amplitude * g(omega) * Fr(omega),
+// g(omega) = (omega / omega_ref)^k the model's forcing growth (1 for a fixed forcing),
 // with the nonlinear forces from the alternating frequency/time method and an analytic Jacobian.
 // Unknowns: harmonic-major real coefficients of the retained dofs, size q(2H+1).
 // HarmonicBalanceSystem is that system built once from a case and constant afterwards: it can be
@@ -175,8 +176,11 @@ class HarmonicBalanceSystem {
   // `stride` rows (retained-dof columns for the condensed system, model dofs for the full one).
   void add_element_blocks(HarmonicBalanceWorkspace& ws, size_t e, double omega, int stride, const std::vector<int>& positions,
                           Eigen::MatrixXd* jacobian, Eigen::MatrixXd* velocity_jacobian) const;
-  void add_condensed_linear_part(double amplitude, const CondensedOperators& at, const Eigen::VectorXd& x, Eigen::VectorXd& r,
+  // Adds Zr x - amplitude g(omega) Fr (and its derivatives), omega the forcing frequency.
+  void add_condensed_linear_part(double amplitude, double omega, const CondensedOperators& at, const Eigen::VectorXd& x, Eigen::VectorXd& r,
                                  Eigen::MatrixXd* jacobian, Eigen::VectorXd* r_omega) const;
+  // What multiplies the unit forcing Fr at omega: amplitude g(omega).
+  double forcing_scale(const ParameterValues& p, double omega) const;
   // Complex amplitude a - i b of the basis' harmonic number `slot` (its position in the list).
   Eigen::VectorXcd harmonic(const Eigen::VectorXd& x, int slot, int dofs) const;
   int slot_offset(int slot) const { return slot_offset_[static_cast<size_t>(slot)]; }

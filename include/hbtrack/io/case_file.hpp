@@ -2,6 +2,7 @@
 // A study described in a TOML case file (format documented in docs/case-file.md): the model,
 // damping, forcing, nonlinear elements, named parameters, harmonic and continuation settings,
 // and the output dofs to record.
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "hbtrack/elements/nonlinear_element.hpp"
 #include "hbtrack/hbm/harmonic_balance.hpp"
 #include "hbtrack/hbm/recorded_outputs.hpp"
+#include "hbtrack/model/base_motion.hpp"
 #include "hbtrack/model/parameters.hpp"
 #include "hbtrack/model/structural_model.hpp"
 
@@ -50,6 +52,9 @@ struct CaseDefinition {
   // reduce summary.json there leads to the full model's modes (`hbtrack modes`).
   std::string dofs_file;
   StructuralModel model;
+  // [base_motion] as the case gave it; model.forcing and model.forcing_growth then hold its
+  // equivalent forcing (model/base_motion.hpp).
+  std::optional<BaseMotion> base_motion;
   ElementList elements;
   ParameterSet parameters;
   HarmonicBalanceOptions harmonic_balance;

@@ -15,12 +15,26 @@ struct HarmonicForce {
   Eigen::VectorXd sin_part;  // size n
 };
 
+// A forcing that grows with the frequency (unbalance: exponent 2; engine-order forcing at varying
+// speed): every HarmonicForce is multiplied by (omega / reference_frequency)^exponent, omega the
+// forcing frequency. Exponent 0 (the default) is a fixed forcing and leaves it untouched.
+struct ForcingGrowth {
+  double exponent = 0.0;             // k >= 0
+  double reference_frequency = 1.0;  // omega_ref > 0 [rad/s]: where the forcing is as given
+  bool active() const { return exponent != 0.0; }
+  // (omega / omega_ref)^k, exactly 1 when inactive.
+  double factor(double omega) const;
+  // d/d(omega) of factor: k / omega_ref (omega / omega_ref)^(k - 1), 0 when inactive.
+  double derivative(double omega) const;
+};
+
 struct StructuralModel {
   std::vector<std::string> dof_names;  // size n, unique
   Eigen::MatrixXd mass;                // n x n, symmetric positive definite
   Eigen::MatrixXd damping;             // n x n
   Eigen::MatrixXd stiffness;           // n x n, symmetric
   std::vector<HarmonicForce> forcing;  // scaled by the named parameter `amplitude`
+  ForcingGrowth forcing_growth;        // and by (omega / omega_ref)^k
 
   int dofs() const { return static_cast<int>(dof_names.size()); }
   // Index of a dof by name, or -1.

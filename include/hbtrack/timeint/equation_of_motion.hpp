@@ -1,7 +1,8 @@
 #pragma once
 // The full (uncondensed) equation of motion in the time domain, for time integration:
 //   M x'' + C x' + K x + f_nl(x, x', omega) = f_ext(t),
-//   f_ext(t) = amplitude * sum over the model's forcing of (cos_part cos(h w t) + sin_part sin(h w t))
+//   f_ext(t) = amplitude * g(w) * sum over the model's forcing of (cos_part cos(h w t) + sin_part sin(h w t))
+// with g(w) = (w / w_ref)^k the model's forcing growth (1 for a fixed forcing)
 // (order 0: cos_part is the constant load). f_nl is the sum of the case's elements evaluated one
 // instant at a time (N = 1 sample of their local dofs); Lanczos filtering acts on harmonics and
 // has no meaning here. Elements see omega only through tip_contact's rotation speed

@@ -16,10 +16,11 @@ enum class Condensation { automatic, schur, modal, none };  // none: solve the f
 // Floquet exponents by Hill's method, the monodromy matrix, or shooting (a monodromy matrix on
 // the converged periodic orbit); none: no stability analysis.
 enum class StabilityMethod { hill, monodromy, shooting, none };
-enum class HillSolver { automatic, dense, arnoldi };  // see stability/hill.hpp
-enum class CrossCheck { automatic, off };             // see StabilityOptions::cross_check
-enum class TrackingMethod { bordered, extended };     // minimally augmented | the paper's system
-enum class IntegrationMethod { newmark, dopri5 };     // simulate: HHT-alpha | Dormand-Prince
+enum class HillSolver { automatic, dense, arnoldi };                 // see stability/hill.hpp
+enum class CrossCheck { automatic, off };                            // see StabilityOptions::cross_check
+enum class TrackingMethod { bordered, extended };                    // minimally augmented | the paper's system
+enum class IntegrationMethod { newmark, dopri5 };                    // simulate: HHT-alpha | Dormand-Prince
+enum class BaseMotionKind { displacement, velocity, acceleration };  // what [base_motion] imposes
 
 template <class Choice>
 struct ChoiceName {
@@ -79,6 +80,14 @@ struct ChoiceTable<IntegrationMethod> {
   static constexpr ChoiceName<IntegrationMethod> names[] = {{IntegrationMethod::newmark, "newmark"}, {IntegrationMethod::dopri5, "dopri5"}};
 };
 
+template <>
+struct ChoiceTable<BaseMotionKind> {
+  static constexpr std::string_view field = "base_motion.kind";
+  static constexpr ChoiceName<BaseMotionKind> names[] = {{BaseMotionKind::displacement, "displacement"},
+                                                         {BaseMotionKind::velocity, "velocity"},
+                                                         {BaseMotionKind::acceleration, "acceleration"}};
+};
+
 template <class Choice>
 concept NamedChoice = requires {
   ChoiceTable<Choice>::names;
@@ -112,5 +121,6 @@ inline HillSolver parse_hill_solver(const std::string& name) { return parse_choi
 inline CrossCheck parse_cross_check(const std::string& name) { return parse_choice<CrossCheck>(name); }
 inline TrackingMethod parse_tracking_method(const std::string& name) { return parse_choice<TrackingMethod>(name); }
 inline IntegrationMethod parse_integration_method(const std::string& name) { return parse_choice<IntegrationMethod>(name); }
+inline BaseMotionKind parse_base_motion_kind(const std::string& name) { return parse_choice<BaseMotionKind>(name); }
 
 }  // namespace hbtrack
