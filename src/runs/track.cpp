@@ -52,18 +52,21 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   const int parameter = parameter_index(hbm.parameters(), o.parameter, o.parameter_name);
   const double start_value = hbm.parameters().value(parameter);
   if (!(o.parameter_min <= start_value && start_value <= o.parameter_max))
-    throw CaseError(o.range_name + ": must contain " + o.parameter + " = " + std::to_string(start_value) + " of the limit point");
+    throw CaseError(o.range_name + ": must contain " + o.parameter + " = " + std::to_string(start_value) + " of the " +
+                    (o.tracked == TrackedPoint::limit_point ? std::string("limit point") : tracked_type(o.tracked) + " point"));
   o.start.require_unknowns(hbm.unknowns());
   FoldTrackingOptions tracking;
   tracking.parameter_min = o.parameter_min;
   tracking.parameter_max = o.parameter_max;
   tracking.method = o.method;
+  tracking.tracked = o.tracked;
   tracking.continuation = c.nfrc.continuation;
 
   json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   json& options = summary["options"]["tracking"] = o.origin;
   options["parameter"] = o.parameter;
   options["method"] = to_string(o.method);
+  options["point"] = tracked_type(o.tracked);
   options["range"] = {o.parameter_min, o.parameter_max};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedTracking> resumed;
@@ -76,7 +79,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   for (const std::string& column : dof_state_columns(hbm)) state_columns.push_back(column);
   for (const std::string& column : state_header(hbm.unknowns()))
     if (column != "omega") unknown_columns.push_back(column);
-  const auto branch = sink.table("branch", tracking_header(c, o.parameter), start);
+  const auto branch = sink.table("branch", tracking_header(c, o.parameter, o.tracked), start);
   const auto states = sink.table("states", state_columns, start);
   std::unique_ptr<TableSink> unknowns;
   if (sink.keeps_unknowns()) unknowns = sink.table("unknowns", unknown_columns, start);
@@ -93,7 +96,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   const FoldTrackingResult r = track_fold(
       hbm, parameter, o.start.x, o.start.omega, scales, tracking, c.outputs,
       [&](const FoldCurvePoint& p, int index) {
-        branch->append(tracking_row(p));
+        branch->append(tracking_row(p, o.tracked));
         std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
         const std::vector<double> dofs = dof_state_values(hbm, p.x, p.omega, parameter, p.parameter);
         row.insert(row.end(), dofs.begin(), dofs.end());
