@@ -50,8 +50,8 @@ struct Absorber {
 // The NS (PD) point of the curve at amplitude `value`, between curve points a and b:
 // interpolated linearly in the amplitude (x, omega and the exponent's frequency), then Newton on
 // the system at that amplitude.
-double omega_on_curve(const HarmonicBalance& hbm, const FoldScales& scales, double tolerance, CriticalExponent kind, const FoldCurvePoint& a,
-                      const FoldCurvePoint& b, double value, bool& converged) {
+double omega_on_curve(const HarmonicBalance& hbm, const FoldScales& scales, double tolerance, CriticalExponent kind,
+                      const FoldCurvePoint& a, const FoldCurvePoint& b, double value, bool& converged) {
   const double f = (value - a.parameter) / (b.parameter - a.parameter);
   const int amplitude = hbm.amplitude_parameter();
   const HarmonicBalance at = hbm.with_parameter(amplitude, value);
@@ -169,6 +169,49 @@ TEST(NeimarkSackerTracking, AbsorberCurvePassesThroughTheNsPointsOfSeparateNfrcs
     // its own to the continuation's tolerance: both far below the 1e-5.
     for (double distance : distances) EXPECT_LT(distance, 1e-5) << "A = " << value;
     record_distances(value, distances);
+  }
+}
+
+TEST(NeimarkSackerTracking, ARunResumedFromACheckpointRepeatsTheCurve) {
+  // The checkpoint holds the complex borders as four real vectors; resumed in leg 1 and in leg 2
+  // (after leg 1 ended on its resonance), the run gives the uninterrupted run's points bit for
+  // bit, and the same extrema.
+  Absorber d(0.12);
+  const std::vector<SpecialPoint> start = d.ns_points();
+  ASSERT_FALSE(start.empty());
+  FoldTrackingOptions o;
+  o.tracked = TrackedPoint::neimark_sacker;
+  o.parameter_min = 0.05;
+  o.parameter_max = 0.35;
+  o.continuation = d.c.nfrc.continuation;
+  FoldScales s = d.scales;
+  s.parameter = o.parameter_max - o.parameter_min;
+  std::vector<FoldTrackingState> saved;
+  FoldTrackingRestart keep;
+  keep.on_state = [&](const FoldTrackingState& state) {
+    const bool first_in_leg = saved.empty() || saved.back().leg != state.leg;
+    if ((state.curve_points == 10 || first_in_leg) && state.curve_points > 0) saved.push_back(state);
+  };
+  const FoldTrackingResult full = track_fold(d.hbm, d.amplitude, start[0].u, start[0].lambda, s, o, {}, {}, keep);
+  ASSERT_TRUE(full.success());
+  ASSERT_GE(saved.size(), 2u);
+  ASSERT_EQ(saved.front().leg, 1);
+  ASSERT_EQ(saved.back().leg, 2);
+  for (const FoldTrackingState& state : {saved.front(), saved.back()}) {
+    FoldTrackingRestart resume;
+    resume.resume_from = &state;
+    const FoldTrackingResult r = track_fold(d.hbm, d.amplitude, start[0].u, start[0].lambda, s, o, {}, {}, resume);
+    ASSERT_TRUE(r.success()) << "leg " << state.leg;
+    ASSERT_EQ(r.curve_points(), full.curve_points()) << "leg " << state.leg;
+    for (size_t i = 0; i < r.points.size(); ++i) {
+      const FoldCurvePoint& a = r.points[i];
+      const FoldCurvePoint& b = full.points[static_cast<size_t>(r.points_before) + i];
+      EXPECT_EQ(a.omega, b.omega);
+      EXPECT_EQ(a.parameter, b.parameter);
+      EXPECT_EQ(a.critical_frequency, b.critical_frequency);
+    }
+    ASSERT_EQ(r.extrema.size(), full.extrema.size()) << "leg " << state.leg;
+    for (size_t i = 0; i < r.extrema.size(); ++i) EXPECT_EQ(r.extrema[i].type, full.extrema[i].type);
   }
 }
 

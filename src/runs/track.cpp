@@ -19,7 +19,7 @@ namespace {
 
 // After a failed tracking run: the elements whose law the fold systems cannot differentiate, the
 // likely cause ("" when every law is smooth).
-std::string smoothness_hint(const HarmonicBalance& hbm) {
+std::string smoothness_hint(const HarmonicBalance& hbm, TrackedPoint tracked) {
   std::string hint;
   for (size_t i = 0; i < hbm.elements().size(); ++i) {
     const std::string limit = hbm.elements()[i]->smoothness_limit();
@@ -27,7 +27,9 @@ std::string smoothness_hint(const HarmonicBalance& hbm) {
     hint += hint.empty() ? "; " : ", ";
     hint += "elements[" + std::to_string(i) + "] (" + hbm.elements()[i]->type() + "): " + limit;
   }
-  if (!hint.empty()) hint += ": limit-point tracking needs a law with a smooth Jacobian (law = \"sqrt\")";
+  if (!hint.empty())
+    hint += tracked == TrackedPoint::limit_point ? ": limit-point tracking needs a law with a smooth Jacobian (law = \"sqrt\")"
+                                                 : ": NS and PD tracking need a law whose Jacobian is C1 (law = \"sqrt\")";
   return hint;
 }
 
@@ -119,7 +121,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   RunReport report{summary};
   if (!r.success())
     report.failure = "tracking stopped: " + failure + " after " + std::to_string(r.curve_points()) + " points (kept in " + sink.location() +
-                     ")" + smoothness_hint(hbm);
+                     ")" + smoothness_hint(hbm, o.tracked);
   else
     report.brief = std::to_string(r.curve_points()) + " points, " + std::to_string(r.extrema.size()) + " extrema of " + o.parameter + ", " +
                    (r.closed ? "closed" : "both ways to the range");
