@@ -37,6 +37,20 @@ struct Absorber {
         hbm(c.model, c.elements, c.parameters, c.harmonic_balance),
         amplitude(hbm.amplitude_parameter()),
         scales(tracking_scales(hbm, c.nfrc, 1.0)) {}  // the units `hbtrack track` uses
+  // The NS curve from NS point `start` within A in [0.05, 0.35], in the units `hbtrack track` uses.
+  FoldTrackingResult track_ns(const SpecialPoint& start, const FoldTrackingRestart& restart = {}) const {
+    FoldTrackingOptions o;
+    o.tracked = TrackedPoint::neimark_sacker;
+    o.parameter_min = 0.05;
+    o.parameter_max = 0.35;
+    o.continuation = c.nfrc.continuation;
+    return track_fold(hbm, amplitude, start.u, start.lambda, ns_scales(), o, {}, {}, restart);
+  }
+  FoldScales ns_scales() const {
+    FoldScales s = scales;
+    s.parameter = 0.35 - 0.05;
+    return s;
+  }
   // Located NS points of the NFRC (with Hill's stability, the case's default), in increasing omega.
   std::vector<SpecialPoint> ns_points() {
     std::vector<SpecialPoint> ns;
@@ -125,14 +139,8 @@ TEST(NeimarkSackerTracking, AbsorberCurvePassesThroughTheNsPointsOfSeparateNfrcs
   Absorber d(0.12);
   const std::vector<SpecialPoint> start = d.ns_points();
   ASSERT_EQ(start.size(), 2u);  // 1.1096 and 1.2247 rad/s
-  FoldTrackingOptions o;
-  o.tracked = TrackedPoint::neimark_sacker;
-  o.parameter_min = 0.05;
-  o.parameter_max = 0.35;
-  o.continuation = d.c.nfrc.continuation;
-  FoldScales s = d.scales;
-  s.parameter = o.parameter_max - o.parameter_min;
-  const FoldTrackingResult r = track_fold(d.hbm, d.amplitude, start[0].u, start[0].lambda, s, o, {});
+  const FoldTrackingResult r = d.track_ns(start[0]);
+  const FoldScales s = d.ns_scales();
   ASSERT_TRUE(r.success()) << to_string(r.stop_reason());
   // Both legs end where the NS frequency vanishes (the NS curve meets the fold curve), one on
   // each side of the curve's minimum in amplitude, where the unstable band is born.
@@ -179,20 +187,13 @@ TEST(NeimarkSackerTracking, ARunResumedFromACheckpointRepeatsTheCurve) {
   Absorber d(0.12);
   const std::vector<SpecialPoint> start = d.ns_points();
   ASSERT_FALSE(start.empty());
-  FoldTrackingOptions o;
-  o.tracked = TrackedPoint::neimark_sacker;
-  o.parameter_min = 0.05;
-  o.parameter_max = 0.35;
-  o.continuation = d.c.nfrc.continuation;
-  FoldScales s = d.scales;
-  s.parameter = o.parameter_max - o.parameter_min;
   std::vector<FoldTrackingState> saved;
   FoldTrackingRestart keep;
   keep.on_state = [&](const FoldTrackingState& state) {
     const bool first_in_leg = saved.empty() || saved.back().leg != state.leg;
     if ((state.curve_points == 10 || first_in_leg) && state.curve_points > 0) saved.push_back(state);
   };
-  const FoldTrackingResult full = track_fold(d.hbm, d.amplitude, start[0].u, start[0].lambda, s, o, {}, {}, keep);
+  const FoldTrackingResult full = d.track_ns(start[0], keep);
   ASSERT_TRUE(full.success());
   ASSERT_GE(saved.size(), 2u);
   ASSERT_EQ(saved.front().leg, 1);
@@ -200,7 +201,7 @@ TEST(NeimarkSackerTracking, ARunResumedFromACheckpointRepeatsTheCurve) {
   for (const FoldTrackingState& state : {saved.front(), saved.back()}) {
     FoldTrackingRestart resume;
     resume.resume_from = &state;
-    const FoldTrackingResult r = track_fold(d.hbm, d.amplitude, start[0].u, start[0].lambda, s, o, {}, {}, resume);
+    const FoldTrackingResult r = d.track_ns(start[0], resume);
     ASSERT_TRUE(r.success()) << "leg " << state.leg;
     ASSERT_EQ(r.curve_points(), full.curve_points()) << "leg " << state.leg;
     for (size_t i = 0; i < r.points.size(); ++i) {

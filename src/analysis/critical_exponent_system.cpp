@@ -194,7 +194,8 @@ void CriticalExponentSystem::restore_borders(const std::vector<VectorXd>& border
   if (borders.size() != 4)
     throw std::invalid_argument("Hill-pencil system: the saved borders must be 4 vectors (b and c, real and imaginary parts)");
   for (const VectorXd& part : borders)
-    if (part.size() != n) throw std::invalid_argument("Hill-pencil system: the saved borders do not fit its pencil of " + std::to_string(n));
+    if (part.size() != n)
+      throw std::invalid_argument("Hill-pencil system: the saved borders do not fit its pencil of " + std::to_string(n));
   b_ = borders[0].cast<Complex>() + Complex(0, 1) * borders[1].cast<Complex>();
   c_ = borders[2].cast<Complex>() + Complex(0, 1) * borders[3].cast<Complex>();
   last_u_.resize(0);
