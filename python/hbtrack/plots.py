@@ -326,9 +326,9 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
     # (an isola merges).
     from matplotlib.lines import Line2D
     meaning = {"min": ("v", f"min of {param}: a pair of limit points born"), "max": ("^", f"max of {param}: a pair merges")}
-    if tracked != ["LP"]:  # on an NS (PD) curve an extremum bounds the unstable band instead
-        meaning = {"min": ("v", f"min of {param}: extremum of a curve (NS: unstable band born or fold pair)"),
-                   "max": ("^", f"max of {param}: extremum of a curve")}
+    if tracked != ["LP"]:  # on an NS (PD) curve a pair of NS (PD) points, the edges of an unstable band
+        points = "limit (NS, PD) points" if "LP" in tracked else f"{'/'.join(tracked)} points: an unstable band"
+        meaning = {"min": ("v", f"min of {param}: a pair of {points} born"), "max": ("^", f"max of {param}: a pair merges")}
     meaning["resonance"] = ("s", "NS curve ends on a fold (NS frequency 0)")
     extra = [Line2D([], [], marker=meaning[k][0], color="k", ls="none", mfc="none" if k == "resonance" else "k", ms=7, label=meaning[k][1])
              for k in ("min", "max", "resonance") if k in kinds]
