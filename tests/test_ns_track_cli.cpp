@@ -86,4 +86,18 @@ TEST(NsTrackCli, BadPointsFailWithOneLineNamingTheFlag) {
   }
 }
 
+TEST(NsTrackCli, IsolasRefusesAnNsCurveInOneLine) {
+  // isolas follows the branch through a limit point at each crossing: an NS curve has none.
+  const fs::path ns = fs::temp_directory_path() / ("hbtrack_ns_track_for_isolas_" + std::to_string(getpid()));
+  fs::remove_all(ns);
+  ASSERT_EQ(run_cli("track " + kAbsorberCase + " --from " + absorber_frc().string() + " --ns 1 --param amplitude --range 0.05:0.35 -q -o " +
+                    ns.string())
+                .exit_code,
+            0);
+  const CliRun r = run_cli("isolas " + kAbsorberCase + " --from " + ns.string() + " --at 0.13 -o " + (ns.string() + "_isolas"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("is a curve of NS points; isolas takes limit-point curves"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
 }  // namespace hbtrack_tests::file_ns_track_cli

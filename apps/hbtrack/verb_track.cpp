@@ -188,6 +188,9 @@ int run_isolas(const IsolaOptions& o) {
     const std::string name =
         s.contains("options") && s["options"].contains("tracking") ? s["options"]["tracking"].value("parameter", "") : "";
     if (name.empty()) throw CaseError(dir + "/summary.json: options.tracking.parameter missing (is --from a track result?)");
+    // An NS (PD) curve's points are not limit points: no branch goes through them as a fold.
+    if (const std::string point = s["options"]["tracking"].value("point", "LP"); point != "LP")
+      throw CaseError("--from: " + dir + " is a curve of " + point + " points; isolas takes limit-point curves (track --lp K)");
     if (!parameter_name.empty() && name != parameter_name)
       throw CaseError("--from: " + dir + " tracks '" + name + "', " + o.from.front() + " tracks '" + parameter_name + "'");
     parameter_name = name;

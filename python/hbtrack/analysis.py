@@ -486,6 +486,10 @@ def isolas(case, tracks, *, at, progress=None, **settings):
     for t in tracks:
         if not isinstance(t, dict) or "states" not in t or "tracking" not in t.get("summary", {}).get("options", {}):
             raise ValueError("tracks: expected track results (from hbtrack.track, or read_result of a track folder)")
+    for t in tracks:  # an NS (PD) curve's points are not limit points: no branch through them
+        point = t["summary"]["options"]["tracking"].get("point", "LP")
+        if point != "LP":
+            raise ValueError(f"tracks: a curve of {point} points; isolas takes limit-point curves (track with lp=K)")
     names = {t["summary"]["options"]["tracking"]["parameter"] for t in tracks}
     if len(names) != 1:
         raise ValueError(f"tracks: the curves track different parameters: {', '.join(sorted(names))}")

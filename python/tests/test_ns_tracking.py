@@ -45,7 +45,7 @@ def test_the_tracking_figure_names_the_ns_curve_and_marks_its_ends(nltva_frc_cli
     assert axes.get_title() == "NS tracking (o: start)"
 
 
-def test_bad_points_name_the_keyword(nltva_frc_cli):
+def test_bad_points_name_the_keyword(nltva_frc_cli, nltva_ns_api):
     case = hbtrack.load_case(NLTVA)
     with pytest.raises(ValueError, match="ns: 3 is beyond the 2 NS points"):
         hbtrack.track(case, nltva_frc_cli, ns=3, param="amplitude", range=(0.05, 0.35))
@@ -55,6 +55,8 @@ def test_bad_points_name_the_keyword(nltva_frc_cli):
         hbtrack.track(case, nltva_frc_cli, lp=1, ns=1, param="amplitude", range=(0.05, 0.35))
     with pytest.raises(ValueError, match="method: ns tracks on the bordered Hill pencil only"):
         hbtrack.track(case, nltva_frc_cli, ns=1, param="amplitude", range=(0.05, 0.35), method="extended")
+    with pytest.raises(ValueError, match="tracks: a curve of NS points; isolas takes limit-point curves"):
+        hbtrack.isolas(case, nltva_ns_api, at=0.13)
     duffing = hbtrack.load_case(DUFFING)
     with pytest.raises(ValueError, match="ns: the frc result has no NS points"):
         hbtrack.track(duffing, hbtrack.frc(duffing), ns=1, param="amplitude", range=(0.1, 2))
