@@ -1,6 +1,7 @@
 #include "hbtrack/analysis/critical_exponent_system.hpp"
 
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +46,9 @@ Eigen::Index crossing_exponent(const FloquetResult& f, CriticalExponent kind) {
 CriticalExponentSystem::CriticalExponentSystem(const HarmonicBalance& hbm, int parameter, const FoldScales& scales, CriticalExponent kind)
     : FoldSystem(hbm, parameter, scales), kind_(kind), dofs_(hbm.model().dofs()) {
   hbm.refuse_residual_elements(std::string(exponent_name(kind)) + " tracking");
+  std::set<int> coupled;
+  for (const auto& e : hbm.elements()) coupled.insert(e->dofs.begin(), e->dofs.end());
+  coupled_.assign(coupled.begin(), coupled.end());
 }
 
 VectorXd CriticalExponentSystem::start(const VectorXd&, double, const VectorXd&, const VectorXd&) {
@@ -101,6 +105,12 @@ Complex CriticalExponentSystem::pencil_product(const VectorXd& x, double omega, 
   return w_.dot(av);  // dot conjugates its first argument: w^H A v
 }
 
+Complex CriticalExponentSystem::element_product(const VectorXd& x, double omega, double nu) {
+  hbm_.hill_element_blocks(x, omega, coupled_, element_j_, element_d1_);
+  const VectorXcd ev = element_j_ * coupled_v_ + Complex(0, nu) * (element_d1_ * coupled_v_);
+  return coupled_w_.dot(ev);
+}
+
 void CriticalExponentSystem::solve_bordered(bool left) {
   const Eigen::Index n = a_.rows();
   fill_bordered_matrix(a_, b_, c_, bordered_);
@@ -141,11 +151,21 @@ void CriticalExponentSystem::evaluate(const VectorXd& u, double gamma, VectorXd&
   jacobian->setZero(size(), size());
   jacobian->topLeftCorner(q_, q_) = e.j;
   jacobian->block(0, q_ + 1, q_, 1) = e.r_omega;
+  // v and w on the elements' dofs (row b c + i of their blocks: coefficient b of coupled dof i).
+  const Eigen::Index c = static_cast<Eigen::Index>(coupled_.size());
+  coupled_v_.resize(c * hbm_.basis().coefficients());
+  coupled_w_.resize(coupled_v_.size());
+  for (Eigen::Index b = 0; b < hbm_.basis().coefficients(); ++b)
+    for (Eigen::Index i = 0; i < c; ++i) {
+      coupled_v_(b * c + i) = v_(b * dofs_ + coupled_[static_cast<size_t>(i)]);
+      coupled_w_(b * c + i) = w_(b * dofs_ + coupled_[static_cast<size_t>(i)]);
+    }
+  const Complex element_base = element_product(x, omega, nu);
   const double x_step = pencil_step(x.norm());
   VectorXd shifted = x;
   for (int k = 0; k < q_; ++k) {
     shifted(k) += x_step;
-    const Complex g_k = -(pencil_product(shifted, omega, nu) - base) / x_step;
+    const Complex g_k = -(element_product(shifted, omega, nu) - element_base) / x_step;
     shifted(k) = x(k);
     (*jacobian)(q_, k) = length * g_k.real();
     (*jacobian)(q_ + 1, k) = length * g_k.imag();

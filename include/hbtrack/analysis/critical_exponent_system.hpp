@@ -18,8 +18,9 @@
 //
 // Derivatives: g_z = -w^H A_z v. A_nu = i D1 - 2 nu D2 is exact; A_x, A_omega and A_gamma come
 // from forward differences of the scalar w^H A v (step eta (|z| + eta), eta = 1e-6, as the fold
-// systems), one Hill-matrix evaluation per unknown: they only shape Newton's Jacobian, the
-// residual (the singularity itself) is exact.
+// systems), A_x from the elements' blocks alone (the linear part does not depend on x), one
+// evaluation of them per unknown: they only shape Newton's Jacobian, the residual (the
+// singularity itself) is exact.
 #include <Eigen/Dense>
 #include <complex>
 #include <string>
@@ -69,6 +70,10 @@ class CriticalExponentSystem final : public FoldSystem {
   void form_pencil(const Eigen::VectorXd& x, double omega, double nu);
   // w^H P(i nu) v from the Hill matrices at (x, omega): the scalar whose differences give g_z.
   std::complex<double> pencil_product(const Eigen::VectorXd& x, double omega, double nu);
+  // Its elements' part alone, on the dofs they touch: all of it that depends on x, so its
+  // differences in x are those of pencil_product without the linear part's cancellation, and
+  // without forming the full Hill matrices once per unknown.
+  std::complex<double> element_product(const Eigen::VectorXd& x, double omega, double nu);
   // v, w and g of the bordered system at the current a_.
   void solve_bordered(bool left);
   // D2 y = (I x M) y.
@@ -77,6 +82,9 @@ class CriticalExponentSystem final : public FoldSystem {
   CriticalExponent kind_;
   int dofs_;  // n: Hill's matrices are over every model dof
   Eigen::MatrixXd hill_j_, hill_d1_;
+  std::vector<int> coupled_;                // the model dofs the elements touch, ascending
+  Eigen::MatrixXd element_j_, element_d1_;  // their blocks of J and D1 (hill_element_blocks)
+  Eigen::VectorXcd coupled_v_, coupled_w_;  // v and w on those dofs, harmonic-major
   MatrixXcd a_, bordered_;
   Eigen::PartialPivLU<MatrixXcd> lu_;
   VectorXcd b_, c_, v_, w_;
