@@ -71,6 +71,7 @@ TEST(Choices, EveryValueRoundTripsThroughItsName) {
                                                                       "time_limit",
                                                                       "no_convergence_at_start",
                                                                       "rejoined",
+                                                                      "strong_resonance",
                                                                       "not_started",
                                                                       "completed",
                                                                       "converged",

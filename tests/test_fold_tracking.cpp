@@ -122,18 +122,8 @@ TEST(FoldSystems, JacobiansMatchFiniteDifferencesForEveryParameterKind) {
 TEST(FoldSystems, JacobiansMatchFiniteDifferencesWithFrictionAndLanczosFiltering) {
   // Velocity-dependent forces (friction on the tip contact and a tanh friction element) and
   // Lanczos factors: the bordered system's products with w go through all of them.
-  test::ContactFixture f = test::contact_fixture(false, 1.0);
-  HarmonicBalanceOptions o;
-  o.harmonics = 3;
-  o.samples = 64;
-  HarmonicBalance hbm(f.model, f.elements, f.parameters, o);
-  const double omega = 1.3;
-  std::srand(5);
-  VectorXd x = 0.01 * VectorXd::Random(hbm.unknowns());
-  const int q = hbm.retained_dofs();
-  x(1 * q + 0) = 0.08;  // the tip's radial dof enters contact over part of the period
-  x(2 * q + 1) = 0.05;
-  expect_fold_jacobians_match_finite_differences(hbm, x, omega, {"amplitude", "mu"});
+  test::ContactPoint p = test::contact_point_in_contact();
+  expect_fold_jacobians_match_finite_differences(p.hbm, p.x, p.omega, {"amplitude", "mu"});
 }
 
 TEST(FoldSystems, JacobiansMatchFiniteDifferencesWithAForcingGrowingWithOmega) {

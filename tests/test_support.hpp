@@ -2,6 +2,7 @@
 // Shared fixtures for the numerical tests: small models with every element type, and
 // finite-difference derivatives.
 #include <Eigen/Dense>
+#include <cstdlib>
 #include <functional>
 #include <string>
 
@@ -178,6 +179,29 @@ inline ContactFixture contact_fixture(bool general_damping, double lanczos) {
   friction->properties = {ParameterBinding::linked(f.mu, 2.0), ParameterBinding::constant(0.5), ParameterBinding::constant(0.05)};
   f.elements = {tip, cubic, friction};
   return f;
+}
+
+// The contact fixture (no general damping, Lanczos 1) at H = 3, 64 samples, and a state at
+// omega = 1.3 where the tip's radial dof enters contact over part of the period: a point where
+// the tracking systems' Jacobians see friction, Lanczos factors and a parameter inside a law.
+struct ContactPoint {
+  HarmonicBalance hbm;
+  Eigen::VectorXd x;
+  double omega = 1.3;
+};
+
+inline ContactPoint contact_point_in_contact() {
+  ContactFixture f = contact_fixture(false, 1.0);
+  HarmonicBalanceOptions o;
+  o.harmonics = 3;
+  o.samples = 64;
+  ContactPoint p{HarmonicBalance(f.model, f.elements, f.parameters, o), {}, 1.3};
+  std::srand(5);
+  p.x = 0.01 * Eigen::VectorXd::Random(p.hbm.unknowns());
+  const int q = p.hbm.retained_dofs();
+  p.x(1 * q + 0) = 0.08;  // the tip's radial dof enters contact over part of the period
+  p.x(2 * q + 1) = 0.05;
+  return p;
 }
 
 }  // namespace hbtrack::test

@@ -30,6 +30,8 @@ nlohmann::json read_summary(const std::string& dir);
 // rows[K - 1], the numbering of the figures, the paper and `track --lp K`, whatever order the
 // continuation met them in (a downward sweep meets them from the highest omega).
 std::vector<size_t> limit_point_rows(const nlohmann::json& special_points);
+// The same for the special points of `type` ("LP", "NS", "PD"): `track --ns K` and `--pd K`.
+std::vector<size_t> special_point_rows(const nlohmann::json& special_points, const std::string& type);
 
 // What an export writes of a result folder: its summary and its CSV tables (sorted by name).
 // CaseError when `dir` is not a folder, has no readable summary.json or is a sweep's folder.

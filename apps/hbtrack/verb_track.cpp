@@ -1,4 +1,4 @@
-// `hbtrack track`: a limit point of a frc result followed in a second parameter;
+// `hbtrack track`: a limit point (or NS or PD point) of a frc result followed in a second parameter;
 // `hbtrack isolas`: the isolated branches a tracking curve reveals at one parameter value.
 #include <chrono>
 #include <cstdio>
@@ -23,9 +23,9 @@ using nlohmann::json;
 
 struct TrackOptions {
   CommonOptions common;
-  std::string from, lp, param, range, method;  // method: bordered unless given (or resumed)
-  std::string resume;                          // a stopped track result folder to continue
-  double time_limit = 0;                       // seconds, 0 for none
+  std::string from, lp, ns, pd, param, range, method;  // method: bordered unless given (or resumed)
+  std::string resume;                                  // a stopped track result folder to continue
+  double time_limit = 0;                               // seconds, 0 for none
 };
 
 // --resume DIR: the stopped run's --from, --lp, --param, --range and --method, where not given
@@ -36,13 +36,16 @@ void take_options_of_stopped_run(TrackOptions& o) {
     throw CaseError("--resume: " + o.resume + "/summary.json: options.tracking missing (is it a track result?)");
   const json& t = summary["options"]["tracking"];
   // Before lp_order, --lp counted in summary.json's order: the same number may name another LP.
-  if (!t.contains("lp_order"))
+  if (t.contains("lp") && !t.contains("lp_order"))
     throw CaseError("--resume: " + o.resume +
                     "/summary.json: options.tracking.lp_order missing: written when --lp counted limit points "
                     "in the NFRC's order, not in increasing omega; run the tracking again");
   try {
     if (o.from.empty()) o.from = t.at("from").get<std::string>();
-    if (o.lp.empty()) o.lp = std::to_string(t.at("lp").get<long>());
+    const bool given = !o.lp.empty() || !o.ns.empty() || !o.pd.empty();
+    if (!given && t.contains("ns")) o.ns = std::to_string(t.at("ns").get<long>());
+    if (!given && t.contains("pd")) o.pd = std::to_string(t.at("pd").get<long>());
+    if (!given && o.ns.empty() && o.pd.empty()) o.lp = std::to_string(t.at("lp").get<long>());
     if (o.param.empty()) o.param = t.at("parameter").get<std::string>();
     if (o.method.empty()) o.method = t.at("method").get<std::string>();
     if (o.range.empty())
@@ -67,17 +70,36 @@ CaseDefinition case_as_in(const CommonOptions& o, const std::string& dir) {
   return load_case(o.case_path, overrides);
 }
 
-// The starting limit point: LP `lp` (from 1, in increasing omega as the figures number them) of
-// DIR/summary.json and its state.
-HbmState starting_fold(const std::string& dir, long lp, const HarmonicBalance& hbm) {
+// The special point the tracking starts from: the K-th point of `type` ("LP", "NS", "PD"; from 1,
+// in increasing omega as the figures number them) of DIR/summary.json, and its state. `flag`
+// names the option in errors.
+HbmState starting_point(const std::string& dir, const std::string& type, const std::string& flag, long k, const HarmonicBalance& hbm) {
   const json summary = read_summary(dir);
   const std::string path = dir + "/summary.json";
   if (!summary.contains("special_points") || !summary["special_points"].is_array())
     throw CaseError(path + ": special_points missing (is --from a frc result?)");
-  const std::vector<size_t> rows = limit_point_rows(summary["special_points"]);
-  if (static_cast<size_t>(lp) > rows.size())
-    throw CaseError("--lp: " + std::to_string(lp) + " is beyond the " + std::to_string(rows.size()) + " limit points of " + path);
-  return read_hbm_state(dir + "/special_states.csv", static_cast<long>(rows[lp - 1]), hbm);
+  const std::vector<size_t> rows = special_point_rows(summary["special_points"], type);
+  const std::string name = type == "LP" ? "limit points" : type + " points";
+  if (rows.empty() && type != "LP")
+    throw CaseError(flag + ": " + path + " has no " + name + " (an NFRC computed with stability finds them)");
+  if (static_cast<size_t>(k) > rows.size())
+    throw CaseError(flag + ": " + std::to_string(k) + " is beyond the " + std::to_string(rows.size()) + " " + name + " of " + path);
+  return read_hbm_state(dir + "/special_states.csv", static_cast<long>(rows[static_cast<size_t>(k - 1)]), hbm);
+}
+
+// Which of --lp, --ns, --pd was given (exactly one): its flag, special-point type and value.
+struct StartFlag {
+  std::string flag, type, value;
+  TrackedPoint tracked;
+};
+StartFlag start_flag(const TrackOptions& o) {
+  std::vector<StartFlag> given;
+  if (!o.lp.empty()) given.push_back({"--lp", "LP", o.lp, TrackedPoint::limit_point});
+  if (!o.ns.empty()) given.push_back({"--ns", "NS", o.ns, TrackedPoint::neimark_sacker});
+  if (!o.pd.empty()) given.push_back({"--pd", "PD", o.pd, TrackedPoint::period_doubling});
+  if (given.empty()) throw CaseError("--lp, --ns or --pd is required (or --resume DIR)");
+  if (given.size() > 1) throw CaseError(given[0].flag + " and " + given[1].flag + ": give one point to track");
+  return given.front();
 }
 
 int run_track(TrackOptions o) {
@@ -89,10 +111,13 @@ int run_track(TrackOptions o) {
     take_options_of_stopped_run(o);
   }
   if (o.common.out_dir.empty()) throw CaseError("--output is required (or --resume DIR)");
-  for (const auto& [flag, value] : {std::pair{"--from", &o.from}, {"--lp", &o.lp}, {"--param", &o.param}, {"--range", &o.range}})
+  for (const auto& [flag, value] : {std::pair{"--from", &o.from}, {"--param", &o.param}, {"--range", &o.range}})
     if (value->empty()) throw CaseError(std::string(flag) + " is required (or --resume DIR)");
+  const StartFlag point = start_flag(o);
+  if (point.tracked != TrackedPoint::limit_point && !o.method.empty() && o.method != "bordered")
+    throw CaseError("--method: " + point.flag + " tracks on the bordered Hill pencil only, got '" + o.method + "'");
   if (o.method.empty()) o.method = "bordered";
-  const long lp = parse_integer("--lp", o.lp, 1);
+  const long k = parse_integer(point.flag, point.value, 1);
   const size_t colon = o.range.find(':');
   if (colon == std::string::npos) throw CaseError("--range: expected LO:HI, got '" + o.range + "'");
   const double tracking_min = parse_number("--range", o.range.substr(0, colon));
@@ -106,9 +131,11 @@ int run_track(TrackOptions o) {
   run.parameter_min = tracking_min;
   run.parameter_max = tracking_max;
   run.method = method;
-  const HbmState start = starting_fold(o.from, lp, make_system(c));
+  run.tracked = point.tracked;
+  const HbmState start = starting_point(o.from, point.type, point.flag, k, make_system(c));
   run.start = runs::StartPoint{start.omega, start.x, o.from + "/special_states.csv"};
-  run.origin = {{"from", o.from}, {"lp", lp}, {"lp_order", "omega"}};
+  const std::string key = point.flag.substr(2);  // lp, ns, pd
+  run.origin = {{"from", o.from}, {key, k}, {key + "_order", "omega"}};
   ResultFolderSink sink(o.common.out_dir, !o.resume.empty());
   const double start_value = c.parameters.find(o.param) >= 0 ? c.parameters.value(c.parameters.find(o.param)) : 0.0;
   Progress progress(o.common.quiet, o.param, tracking_min, tracking_max, start_value);
@@ -161,6 +188,9 @@ int run_isolas(const IsolaOptions& o) {
     const std::string name =
         s.contains("options") && s["options"].contains("tracking") ? s["options"]["tracking"].value("parameter", "") : "";
     if (name.empty()) throw CaseError(dir + "/summary.json: options.tracking.parameter missing (is --from a track result?)");
+    // An NS (PD) curve's points are not limit points: no branch goes through them as a fold.
+    if (const std::string point = s["options"]["tracking"].value("point", "LP"); point != "LP")
+      throw CaseError("--from: " + dir + " is a curve of " + point + " points; isolas takes limit-point curves (track --lp K)");
     if (!parameter_name.empty() && name != parameter_name)
       throw CaseError("--from: " + dir + " tracks '" + name + "', " + o.from.front() + " tracks '" + parameter_name + "'");
     parameter_name = name;
@@ -190,12 +220,14 @@ int run_isolas(const IsolaOptions& o) {
 void add_track_verbs(CLI::App& app, VerbList& verbs) {
   static TrackOptions track;
   static IsolaOptions isolas;
-  CLI::App* t = app.add_subcommand("track", "follow a limit point of a frc result in a second parameter");
+  CLI::App* t = app.add_subcommand("track", "follow a limit point (NS, PD point) of a frc result in a second parameter");
   add_common_options(t, track.common);
   t->get_option("--output")->required(false);  // --resume DIR names the folder instead
   // Required unless --resume DIR, which takes them from the stopped run (checked in run_track).
   t->add_option("--from", track.from, "frc result folder holding the limit point");
   t->add_option("--lp", track.lp, "which limit point of --from: LP K counts from 1 in increasing omega, as the figures number them");
+  t->add_option("--ns", track.ns, "or which Neimark-Sacker point of --from (from 1, in increasing omega): the NS curve");
+  t->add_option("--pd", track.pd, "or which period-doubling point of --from (from 1, in increasing omega): the PD curve");
   t->add_option("--param", track.param, "the parameter to vary (a name of the case's [parameters], or amplitude)");
   t->add_option("--range", track.range, "LO:HI, the parameter's interval");
   t->add_option("--method", track.method, "bordered (minimally augmented, default) or extended (the paper's system)");

@@ -349,19 +349,32 @@ def limit_point(result, lp):
     >>> state = hbtrack.limit_point(nfrc, 1)
     >>> omega, x = state[0], state[1:]
     """
+    return _special_point_state(result, "LP", lp)
+
+
+# What each of track's keywords starts from, and how its errors name those points.
+_TRACKED = {"lp": ("LP", "limit points"), "ns": ("NS", "NS points"), "pd": ("PD", "PD points")}
+
+
+def _special_point_state(result, kind, k):
+    """The row [omega, x0, ...] of the k-th special point of type `kind` ("LP", "NS", "PD") of an
+    frc result, counted from 1 in increasing omega; ValueError naming the keyword otherwise."""
+    keyword = {v[0]: name for name, v in _TRACKED.items()}[kind]
     if not isinstance(result, dict) or "special_points" not in result or "special_states" not in result:
         raise ValueError("start: expected an frc result (from hbtrack.frc, or read_result of an frc folder)")
-    if isinstance(lp, bool) or not isinstance(lp, (int, np.integer)) or lp < 1:
-        raise ValueError(f"lp: must be an integer >= 1, got {lp!r}")
-    rows = [i for i, sp in enumerate(result["special_points"]) if sp["type"] == "LP"]
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
+        raise ValueError(f"{keyword}: must be an integer >= 1, got {k!r}")
+    rows = [i for i, sp in enumerate(result["special_points"]) if sp["type"] == kind]
     rows.sort(key=lambda i: result["special_points"][i]["omega"])  # stable: ties keep their order
-    if lp > len(rows):
-        raise ValueError(f"lp: {lp} is beyond the {len(rows)} limit points of the frc result")
-    return result["special_states"][rows[lp - 1]]
+    if not rows and kind != "LP":
+        raise ValueError(f"{keyword}: the frc result has no {_TRACKED[keyword][1]} (an NFRC computed with stability finds them)")
+    if k > len(rows):
+        raise ValueError(f"{keyword}: {k} is beyond the {len(rows)} {_TRACKED[keyword][1]} of the frc result")
+    return result["special_states"][rows[k - 1]]
 
 
-def track(case, start, *, lp, param, range, method="bordered", progress=None, **settings):  # noqa: A002 - the CLI's --range
-    """A limit point followed in a second parameter (``hbtrack track``).
+def track(case, start, *, lp=None, ns=None, pd=None, param, range, method="bordered", progress=None, **settings):  # noqa: A002 - the CLI's --range
+    """A limit point (or a Neimark-Sacker or period-doubling point) followed in a second parameter (``hbtrack track``).
 
     Parameters
     ----------
@@ -371,15 +384,20 @@ def track(case, start, *, lp, param, range, method="bordered", progress=None, **
         An frc result of `case` (computed or :func:`hbtrack.read_result`); its parameters and
         harmonic balance (harmonics, subharmonic, samples, condensation) are used, as ``track
         --from``, before the keywords' settings: the tracked parameter starts at the result's value.
-    lp : int
+    lp : int, optional
         Which of its limit points: LP `lp`, from 1 in increasing omega (as the figures number
-        them).
+        them). One of `lp`, `ns`, `pd` is given.
+    ns : int, optional
+        Or which of its Neimark-Sacker points (from 1 in increasing omega): the NS curve, with the
+        NS frequency as the branch's ``ns_frequency`` (docs/tracking.md).
+    pd : int, optional
+        Or which of its period-doubling points: the PD curve.
     param : str
         The named parameter to vary ("amplitude", "mu", "clearance", ...).
     range : tuple of float
         (LO, HI): leg 1 goes from the start towards LO, leg 2 towards HI.
     method : {"bordered", "extended"}, optional
-        The defining system (docs/tracking.md).
+        The defining system of a limit point (docs/tracking.md); NS and PD: bordered only.
     progress : callable, optional
         ``progress(fraction, point, value)`` after every accepted point: the part of (LO, HI)
         covered, each leg for its share as the CLI's progress line, `point` the row and `value` the
@@ -391,18 +409,25 @@ def track(case, start, *, lp, param, range, method="bordered", progress=None, **
     Returns
     -------
     dict
-        ``branch`` ({column: array}: leg, omega, PARAM, max_NAME, min_NAME, h1_NAME, then the
-        harmonics' columns), ``states`` (rows [leg, omega, PARAM, x0, ...]), ``special_points``
-        (the located extrema of PARAM: type "min" or "max"), ``summary`` (stop_reason, closed,
-        legs, ...) and ``kind`` = "track".
+        ``branch`` ({column: array}: leg, omega, PARAM, (NS, PD) ns_frequency, max_NAME,
+        min_NAME, h1_NAME, then the harmonics' columns), ``states`` (rows [leg, omega, PARAM, x0,
+        ...]), ``special_points`` (the located extrema of PARAM: type "min" or "max"; an NS
+        curve's ends on a fold, "resonance_1_1"), ``summary`` (stop_reason, closed, legs, ...) and
+        ``kind`` = "track".
 
     Examples
     --------
     >>> curve = hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.1, 2.0))
     >>> curve["branch"]["amplitude"].min()                  # where the fold is born
     >>> coarse = hbtrack.track(case, nfrc, lp=1, param="amplitude", range=(0.1, 2.0), continuation={"step": 0.05})
+    >>> band = hbtrack.track(case, nfrc, ns=1, param="amplitude", range=(0.05, 0.35))   # an NS curve
     """
-    state = limit_point(start, lp)
+    given = [(name, k) for name, k in (("lp", lp), ("ns", ns), ("pd", pd)) if k is not None]
+    if len(given) != 1:
+        raise ValueError("lp, ns or pd: give exactly one point to track" + (f", got {', '.join(n for n, _ in given)}" if given else ""))
+    keyword, k = given[0]
+    point = _TRACKED[keyword][0]
+    state = _special_point_state(start, point, k)
     try:
         low, high = (float(v) for v in range)
     except (TypeError, ValueError):
@@ -410,8 +435,10 @@ def track(case, start, *, lp, param, range, method="bordered", progress=None, **
     progress = checked_progress(progress)
     # As track --from: the frc result's parameters and harmonic balance, then the caller's.
     run_case = case_with(case, result_overrides(start) + settings_overrides(**settings), "track")
-    result = require_core().track(run_case, state[1:], state[0], param, low, high, method, progress)
-    result["summary"]["options"]["tracking"].update(lp=lp, lp_order="omega")
+    if point != "LP" and method != "bordered":
+        raise ValueError(f"method: {keyword} tracks on the bordered Hill pencil only, got {method!r}")
+    result = require_core().track(run_case, state[1:], state[0], param, low, high, method, progress, point)
+    result["summary"]["options"]["tracking"].update({keyword: k, f"{keyword}_order": "omega"})
     result["kind"] = "track"
     return result
 
@@ -459,6 +486,10 @@ def isolas(case, tracks, *, at, progress=None, **settings):
     for t in tracks:
         if not isinstance(t, dict) or "states" not in t or "tracking" not in t.get("summary", {}).get("options", {}):
             raise ValueError("tracks: expected track results (from hbtrack.track, or read_result of a track folder)")
+    for t in tracks:  # an NS (PD) curve's points are not limit points: no branch through them
+        point = t["summary"]["options"]["tracking"].get("point", "LP")
+        if point != "LP":
+            raise ValueError(f"tracks: a curve of {point} points; isolas takes limit-point curves (track with lp=K)")
     names = {t["summary"]["options"]["tracking"]["parameter"] for t in tracks}
     if len(names) != 1:
         raise ValueError(f"tracks: the curves track different parameters: {', '.join(sorted(names))}")

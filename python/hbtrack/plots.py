@@ -176,10 +176,24 @@ def _extrema(track):
     return [sp for sp in track.get("special_points", []) if sp["type"] in ("min", "max")]
 
 
+def _tracked_type(track):
+    """"LP", "NS" or "PD": what a track result follows (written since NS/PD tracking; LP before)."""
+    return track["summary"]["options"]["tracking"].get("point", "LP")
+
+
+def _resonance_ends(track):
+    """The ends of an NS curve where its frequency reaches 0 (1:1) or w/2 (1:2)."""
+    return [sp for sp in track.get("special_points", []) if sp["type"].startswith("resonance_")]
+
+
 def _curve_name(track, i, nfrc_special_points):
     """"LP2 tracked" as the NFRC figure numbers its limit points (omega order) when the NFRC's
-    special points are given; else by track's --lp, "limit point 1 tracked"."""
+    special points are given; else by track's --lp, "limit point 1 tracked"; "NS point 1
+    tracked" for an NS (PD) curve."""
     options = track["summary"]["options"]["tracking"]
+    if _tracked_type(track) != "LP":
+        key = _tracked_type(track).lower()
+        return f"{_tracked_type(track)} point {options.get(key, i + 1)} tracked"
     lp = options.get("lp", i + 1)
     if nfrc_special_points:
         return f"{tracked_limit_point_label(nfrc_special_points, options)} tracked"
@@ -251,10 +265,11 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
 
 
 def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfrc_special_points=None):
-    """Limit-point curves projected on (omega, parameter).
+    """Limit-point (and NS, PD) curves projected on (omega, parameter).
 
-    Start (o) and extrema (v min, ^ max) annotated; the limit points of the `validations` NFRCs
-    (x) at their parameter value, which the curves must pass through.
+    Start (o) and extrema (v min, ^ max) annotated, an NS curve's ends on a fold (s: NS
+    frequency 0) marked; the special points of the tracked types (LP, NS, PD) of the
+    `validations` NFRCs (x) at their parameter value, which the curves must pass through.
 
     Parameters
     ----------
@@ -282,6 +297,7 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     coordinates = []  # texts at the extrema, placed once the layout is final
     kinds = set()
+    tracked = sorted({_tracked_type(t) for t in tracks})
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
         ax.plot(curve["omega"], curve[param], color=f"C{i}", lw=1.3, label=_curve_name(track, i, nfrc_special_points))
@@ -292,22 +308,30 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
             ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == "min" else "^", color="k", ms=7, zorder=5)
             coordinates.append((sp["omega"], sp[param], f"({sp['omega']:.6g}, {sp[param]:.4g})"))
             kinds.add(sp["type"])
+        for sp in _resonance_ends(track):
+            ax.plot([sp["omega"]], [sp[param]], "s", color="k", mfc="none", ms=7, zorder=5)
+            kinds.add("resonance")
     for j, nfrc in enumerate(validations):
         value = nfrc["summary"]["options"]["parameters"][param]
-        lps = [sp["omega"] for sp in nfrc.get("special_points", []) if sp["type"] == "LP"]
-        ax.plot(lps, [value] * len(lps), "x", color="k", ms=8, label="LPs of NFRCs" if j == 0 else None)
+        points = [sp["omega"] for sp in nfrc.get("special_points", []) if sp["type"] in tracked]
+        ax.plot(points, [value] * len(points), "x", color="k", ms=8, label=f"{'/'.join(tracked)}s of NFRCs" if j == 0 else None)
     if at is not None:
         ax.axhline(at, color="0.5", lw=0.8, ls=":", label=f"{param} = {at:g}")
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
-    ax.set_title("limit-point tracking (o: start)", fontsize=10)
+    ax.set_title("limit-point tracking (o: start)" if tracked == ["LP"] else f"{', '.join(tracked)} tracking (o: start)", fontsize=10)
     ax.grid(alpha=0.3)
     # The paper's Fig. 7: a minimum of the parameter along a curve is where a pair of limit points
     # is born (an isola appears, or a fold on the main branch), a maximum where a pair vanishes
     # (an isola merges).
     from matplotlib.lines import Line2D
     meaning = {"min": ("v", f"min of {param}: a pair of limit points born"), "max": ("^", f"max of {param}: a pair merges")}
-    extra = [Line2D([], [], marker=meaning[k][0], color="k", ls="none", ms=7, label=meaning[k][1]) for k in ("min", "max") if k in kinds]
+    if tracked != ["LP"]:  # on an NS (PD) curve a pair of NS (PD) points, the edges of an unstable band
+        points = "limit (NS, PD) points" if "LP" in tracked else f"{'/'.join(tracked)} points: an unstable band"
+        meaning = {"min": ("v", f"min of {param}: a pair of {points} born"), "max": ("^", f"max of {param}: a pair merges")}
+    meaning["resonance"] = ("s", "NS curve ends on a fold (NS frequency 0)")
+    extra = [Line2D([], [], marker=meaning[k][0], color="k", ls="none", mfc="none" if k == "resonance" else "k", ms=7, label=meaning[k][1])
+             for k in ("min", "max", "resonance") if k in kinds]
     handles, labels = ax.get_legend_handles_labels()
     ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=8)
     fig.tight_layout()

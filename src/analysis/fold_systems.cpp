@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "hbtrack/analysis/bordering.hpp"
 #include "hbtrack/util/phase_timer.hpp"
 
 namespace hbtrack {
@@ -19,15 +20,22 @@ double difference_step(const VectorXd& x, const VectorXd& d) { return kEta * (x.
 
 void approximate_null_vectors(const MatrixXd& j, VectorXd& right, VectorXd& left) {
   const DenseLU lu(j);
-  // A start with every component present; inverse iteration converges by the ratio of the two
-  // smallest singular values per step, and at a fold the smallest is near zero.
-  right = VectorXd::LinSpaced(j.rows(), 1.0, 2.0).normalized();
-  left = right;
-  for (int it = 0; it < 4; ++it) {
-    right = lu.solve(right).normalized();
-    left = lu.solve_transposed(left).normalized();
+  try {
+    inverse_iteration_null_vectors(
+        j.rows(), [&](const VectorXd& y) { return lu.solve(y); }, [&](const VectorXd& y) { return lu.solve_transposed(y); }, right, left);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("fold: ") + e.what());
   }
-  if (!right.allFinite() || !left.allFinite()) throw std::runtime_error("fold: the Jacobian at the start has no usable null vector");
+}
+
+VectorXd FoldSystem::start_at(const VectorXd& x, double omega, double gamma) {
+  hbm_.set_parameter(parameter_, gamma);
+  VectorXd r;
+  MatrixXd j;
+  hbm_.evaluate(x, omega, r, &j, nullptr);
+  VectorXd right, left;
+  approximate_null_vectors(j, right, left);
+  return start(x, omega, right, left);
 }
 
 FoldSystem::FoldSystem(const HarmonicBalance& hbm, int parameter, const FoldScales& scales)
@@ -141,11 +149,7 @@ VectorXd BorderedFoldSystem::start(const VectorXd& x, double omega, const Vector
 
 void BorderedFoldSystem::null_vectors(const MatrixXd& j, bool left, bool refine) {
   MatrixXd& a = border_matrix_;
-  a.resize(q_ + 1, q_ + 1);
-  a.topLeftCorner(q_, q_) = j;
-  a.topRightCorner(q_, 1) = b_;
-  a.bottomLeftCorner(1, q_) = c_.transpose();
-  a(q_, q_) = 0.0;
+  fill_bordered_matrix(j, b_, c_, a);
   const ScopedPhase timing(Phase::factorization);
   has_left_ = left;
   if (refine && !left && border_lu_.size() == q_ + 1 && refine_right_null_vector()) return;

@@ -1,5 +1,7 @@
 #include "hbtrack/analysis/fold_tracking.hpp"
 
+#include "hbtrack/analysis/critical_exponent_system.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -24,6 +26,7 @@ StopReason FoldTrackingResult::stop_reason() const {
       case StopReason::reached_end:
       case StopReason::left_range:
       case StopReason::closed:
+      case StopReason::strong_resonance:
         break;
       case StopReason::max_points:
         capped = true;
@@ -42,8 +45,13 @@ bool FoldTrackingResult::success() const {
 
 namespace {
 
-std::unique_ptr<FoldSystem> make_fold_system(TrackingMethod method, const HarmonicBalance& hbm, int parameter, const FoldScales& scales) {
-  if (method == TrackingMethod::extended) return std::make_unique<ExtendedFoldSystem>(hbm, parameter, scales);
+std::unique_ptr<FoldSystem> make_fold_system(const FoldTrackingOptions& o, const HarmonicBalance& hbm, int parameter,
+                                             const FoldScales& scales) {
+  if (o.tracked == TrackedPoint::neimark_sacker)
+    return std::make_unique<CriticalExponentSystem>(hbm, parameter, scales, CriticalExponent::neimark_sacker);
+  if (o.tracked == TrackedPoint::period_doubling)
+    return std::make_unique<CriticalExponentSystem>(hbm, parameter, scales, CriticalExponent::period_doubling);
+  if (o.method == TrackingMethod::extended) return std::make_unique<ExtendedFoldSystem>(hbm, parameter, scales);
   return std::make_unique<BorderedFoldSystem>(hbm, parameter, scales);
 }
 
@@ -52,15 +60,25 @@ std::string size_misfit(const std::string& field, Eigen::Index size, Eigen::Inde
   return field + " holds " + std::to_string(size) + " values, expected " + std::to_string(expected) + " (" + why + ")";
 }
 
-// Starts `system` at (x, omega): null vectors of R_x there, at hbm's parameter values.
-VectorXd start_unknowns(FoldSystem& system, const HarmonicBalance& hbm, const VectorXd& x, double omega) {
-  VectorXd r;
-  MatrixXd j;
-  HarmonicBalance(hbm).evaluate(x, omega, r, &j, nullptr);
-  VectorXd right, left;
-  approximate_null_vectors(j, right, left);
-  return system.start(x, omega, right, left);
-}
+// Ends an NS curve where its frequency reaches 0 (R1, 1:1 resonance: the pair of multipliers meets
+// at +1, where the NS curve ends on a fold curve) or w/2 (R2, 1:2: at -1, on a PD curve): beyond,
+// nu changes sign and the system retraces the same points (P(-i nu) is P(i nu) conjugated). The
+// engine locates the zero of the test function; the observer then ends the leg there.
+class ResonanceMonitor final : public BranchMonitor {
+ public:
+  explicit ResonanceMonitor(const CriticalExponentSystem& system) : system_(system) {}
+  std::vector<std::string> types() const override { return {"R1", "R2"}; }
+  std::vector<double> test_functions(const BranchPoint& p) override { return system_.resonance_tests(p.u); }
+  std::string classify(const std::string& type, const BranchPoint&, bool, std::string& decided_by) override {
+    decided_by = "hill";
+    ended = true;
+    return type;
+  }
+  bool ended = false;
+
+ private:
+  const CriticalExponentSystem& system_;
+};
 
 // A located extremum of lambda near point `index` of a leg: a minimum when lambda was falling
 // along the leg just before it. The bracket is the pair of neighbours whose tangents' lambda
@@ -83,14 +101,14 @@ LocatedFold locate_fold(const HarmonicBalance& hbm, int parameter, const VectorX
   // to the case tolerance stands.
   const double value = hbm.parameters().value(parameter);
   BorderedFoldSystem plain(hbm, parameter, fallback);
-  VectorXd u = start_unknowns(plain, hbm, x, omega);
+  VectorXd u = plain.start_at(x, omega, value);
   LocatedFold f;
   f.converged = newton_at_fixed_parameter(plain, u, value, options.tolerance, 3 * options.max_iterations) >= 0;
   f.x = plain.harmonics(u);
   f.omega = plain.omega(u);
   if (f.converged && scales.force < fallback.force) {
     BorderedFoldSystem system(hbm, parameter, scales);
-    VectorXd strict = start_unknowns(system, hbm, f.x, f.omega);
+    VectorXd strict = system.start_at(f.x, f.omega, value);
     if (newton_at_fixed_parameter(system, strict, value, options.tolerance, 4) >= 0) {
       f.x = system.harmonics(strict);
       f.omega = system.omega(strict);
@@ -99,16 +117,20 @@ LocatedFold locate_fold(const HarmonicBalance& hbm, int parameter, const VectorX
   return f;
 }
 
-std::string tracking_state_misfit(const FoldTrackingState& state, TrackingMethod method, int harmonic_unknowns) {
+std::string tracking_state_misfit(const FoldTrackingState& state, const FoldTrackingOptions& options, int harmonic_unknowns) {
   const int q = harmonic_unknowns;
-  // The continuation's unknowns (FoldSystem::size: x, omega and, extended, the null vector),
-  // then its parameter.
-  const Eigen::Index size = (method == TrackingMethod::extended ? 2 * q + 1 : q + 1) + 1;
-  const bool extended = method == TrackingMethod::extended;
-  const std::string why = "this case's " + std::to_string(q) + " unknowns, " + (extended ? "their null vector, " : "") +
-                          "omega and the parameter of " + (extended ? "an extended" : "a bordered") + " tracking";
+  const TrackingMethod method = options.method;
+  // The continuation's unknowns (FoldSystem::size: x, omega and, extended, the null vector; an
+  // NS or PD curve: x, nu and omega), then its parameter.
+  const bool extended = method == TrackingMethod::extended, exponent = options.tracked != TrackedPoint::limit_point;
+  const Eigen::Index size = (exponent ? q + 2 : extended ? 2 * q + 1 : q + 1) + 1;
+  const std::string why = "this case's " + std::to_string(q) + " unknowns, " +
+                          (exponent ? "the critical exponent's frequency, omega and the parameter of an NS or PD tracking"
+                                    : std::string(extended ? "their null vector, " : "") + "omega and the parameter of " +
+                                          (extended ? "an extended" : "a bordered") + " tracking");
   std::string misfit = size_misfit("state.x", state.continuation.x.size(), size, why);
-  if (misfit.empty() && method == TrackingMethod::bordered) {
+  // An NS or PD system's borders (on Hill's pencil) are checked as it restores them.
+  if (misfit.empty() && method == TrackingMethod::bordered && !exponent) {
     const size_t given = state.borders.size();
     if (given != 2) return "tracking.borders holds " + std::to_string(given) + " vectors, expected 2 (a bordered tracking's borders)";
     for (size_t i = 0; i < given && misfit.empty(); ++i)
@@ -126,7 +148,7 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
   const double gamma0 = hbm.parameters().value(parameter);
   if (!(options.parameter_min <= gamma0 && gamma0 <= options.parameter_max))
     throw std::invalid_argument("range: must contain the parameter's value at the limit point, " + std::to_string(gamma0));
-  std::unique_ptr<FoldSystem> system = make_fold_system(options.method, hbm, parameter, scales);
+  std::unique_ptr<FoldSystem> system = make_fold_system(options, hbm, parameter, scales);
   // The outputs of each point, at its own parameter value (the recovery of condensed dofs
   // depends on it): an evaluator of our own, the caller's stays as it is.
   HarmonicBalance at_point(hbm);
@@ -134,7 +156,7 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
   const FoldTrackingState* resumed = restart.resume_from;
   if (resumed) {
     if (resumed->leg < 1 || resumed->leg > 2) throw std::invalid_argument("tracking state: leg must be 1 or 2");
-    const std::string misfit = tracking_state_misfit(*resumed, options.method, hbm.unknowns());
+    const std::string misfit = tracking_state_misfit(*resumed, options, hbm.unknowns());
     if (!misfit.empty()) throw std::invalid_argument("tracking state: " + misfit);
     result.legs = resumed->finished_legs;
     result.extrema = resumed->extrema;
@@ -150,7 +172,7 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
     if (resuming)
       system->restore_borders(resumed->borders);
     else
-      u0 = start_unknowns(*system, hbm, x, omega);
+      u0 = system->start_at(x, omega, gamma0);
     const ParameterWindow window{options.parameter_min, options.parameter_max, leg == 1 ? -1 : 1, leg == 1};
     const int offset = resuming ? resumed->leg_offset : result.curve_points() - (leg == 2 ? 1 : 0);
     std::vector<double> slopes = resuming ? resumed->lambda_slopes : std::vector<double>{};
@@ -162,34 +184,59 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
             FoldTrackingState{leg, offset, result.curve_points(), state, system->borders(), slopes, result.legs, result.extrema});
       };
     bool stopped = false;
-    const ContinuationResult c = continue_within(
+    const auto* critical = dynamic_cast<const CriticalExponentSystem*>(system.get());
+    std::unique_ptr<ResonanceMonitor> resonance;
+    if (critical && critical->kind() == CriticalExponent::neimark_sacker) resonance = std::make_unique<ResonanceMonitor>(*critical);
+    const auto add_point = [&](const VectorXd& u, double lambda) {
+      FoldCurvePoint point{system->harmonics(u), system->omega(u), lambda, leg, {}, system->critical_frequency(u)};
+      at_point.set_parameter(parameter, lambda);
+      point.recorded = record_point(at_point, point.x, point.omega, outputs);
+      result.points.push_back(std::move(point));
+      stopped = observer && !observer(result.points.back(), result.curve_points() - 1);
+      return !stopped;
+    };
+    ContinuationResult c = continue_within(
         *system, u0, gamma0, window, options.continuation,
         [&](const BranchPoint& p, int index) {
           system->accepted(p.u, p.lambda);
           slopes.push_back(p.tangent(p.tangent.size() - 1));
-          if (leg == 2 && index == 0) return true;  // the start, already the first point of leg 1
-          FoldCurvePoint point{system->harmonics(p.u), system->omega(p.u), p.lambda, leg, {}};
-          at_point.set_parameter(parameter, p.lambda);
-          point.recorded = record_point(at_point, point.x, point.omega, outputs);
-          result.points.push_back(std::move(point));
-          stopped = observer && !observer(result.points.back(), result.curve_points() - 1);
-          return !stopped;
+          if (leg == 2 && index == 0) return true;          // the start, already the first point of leg 1
+          if (resonance && resonance->ended) return false;  // past the resonance: the leg ends on it
+          return add_point(p.u, p.lambda);
         },
-        nullptr, leg_restart);
-    result.legs.push_back(c.summary);
-    for (const SpecialPoint& sp : c.special_points) {
-      if (sp.type != "LP") continue;  // the extrema of gamma; the engine's BP is not a fold event
+        resonance.get(), leg_restart);
+    const auto extremum_at = [&](const SpecialPoint& sp, std::string type, int index) {
       FoldExtremum e;
-      e.type = extremum_type(slopes, sp.index);
+      e.type = std::move(type);
       e.located = sp.located;
       e.x = system->harmonics(sp.u);
       e.omega = system->omega(sp.u);
       e.parameter = sp.lambda;
-      e.index = leg == 2 && sp.index == 0 ? 0 : std::max(0, offset + sp.index);  // leg 2 starts at point 0
+      e.critical_frequency = system->critical_frequency(sp.u);
+      e.index = index;
       at_point.set_parameter(parameter, sp.lambda);
       e.recorded = record_point(at_point, e.x, e.omega, outputs);
-      result.extrema.push_back(std::move(e));
+      return e;
+    };
+    // The located resonance is the leg's last point (its bracket's far end is not kept).
+    const SpecialPoint* end = nullptr;
+    for (const SpecialPoint& sp : c.special_points)
+      if (!end && resonance && resonance->ended && (sp.type == "R1" || sp.type == "R2")) end = &sp;
+    if (end) {
+      c.summary.stop_reason = StopReason::strong_resonance;
+      if (!stopped) add_point(end->u, end->lambda);
     }
+    // gamma is extreme at a resonance too (beyond it the curve retraces itself), and the engine
+    // locates that extremum within the step that brackets the resonance: not an extremum of the
+    // curve, the resonance stands for it.
+    const auto at_end = [&](const SpecialPoint& sp) { return end && sp.index >= end->index - 1; };
+    result.legs.push_back(c.summary);
+    for (const SpecialPoint& sp : c.special_points) {
+      if (sp.type != "LP" || at_end(sp)) continue;  // the extrema of gamma; the engine's BP is not a fold event
+      result.extrema.push_back(extremum_at(sp, extremum_type(slopes, sp.index),
+                                           leg == 2 && sp.index == 0 ? 0 : std::max(0, offset + sp.index)));  // leg 2 starts at point 0
+    }
+    if (end) result.extrema.push_back(extremum_at(*end, end->type == "R1" ? "resonance_1_1" : "resonance_1_2", result.curve_points() - 1));
     if (c.summary.stop_reason == StopReason::closed) {
       result.closed = true;
       break;

@@ -220,16 +220,30 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   }
 }
 
-std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter) {
+std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter, TrackedPoint tracked) {
   std::vector<std::string> h{"leg", "omega", parameter};
+  if (tracked != TrackedPoint::limit_point) h.push_back("ns_frequency");
   add_output_columns(h, c);
   return h;
 }
 
-std::vector<double> tracking_row(const FoldCurvePoint& p) {
+std::vector<double> tracking_row(const FoldCurvePoint& p, TrackedPoint tracked) {
   std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
+  if (tracked != TrackedPoint::limit_point) row.push_back(p.critical_frequency);
   add_output_values(row, p.recorded);
   return row;
+}
+
+std::string tracked_type(TrackedPoint tracked) {
+  switch (tracked) {
+    case TrackedPoint::neimark_sacker:
+      return "NS";
+    case TrackedPoint::period_doubling:
+      return "PD";
+    case TrackedPoint::limit_point:
+      break;
+  }
+  return "LP";
 }
 
 void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter) {
@@ -257,6 +271,7 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   json special = json::array();
   for (const FoldExtremum& e : r.extrema) {
     json j = {{"type", e.type}, {"index", e.index}, {"omega", e.omega}, {parameter, e.parameter}, {"located", e.located}};
+    if (std::isfinite(e.critical_frequency)) j["ns_frequency"] = e.critical_frequency;
     add_outputs(j, c, e.recorded);
     special.push_back(j);
   }

@@ -49,7 +49,8 @@ std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>&
 std::vector<std::string> extremum_pairs_below_resolution(const std::vector<FoldExtremum>& extrema, const std::string& parameter,
                                                          double parameter_range, double omega_span) {
   std::vector<const FoldExtremum*> along;
-  for (const FoldExtremum& e : extrema) along.push_back(&e);
+  for (const FoldExtremum& e : extrema)
+    if (e.type == "min" || e.type == "max") along.push_back(&e);  // not an NS curve's resonance ends
   std::sort(along.begin(), along.end(), [](const FoldExtremum* a, const FoldExtremum* b) { return a->index < b->index; });
   int pairs = 0;
   std::string listed;

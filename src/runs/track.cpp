@@ -19,7 +19,7 @@ namespace {
 
 // After a failed tracking run: the elements whose law the fold systems cannot differentiate, the
 // likely cause ("" when every law is smooth).
-std::string smoothness_hint(const HarmonicBalance& hbm) {
+std::string smoothness_hint(const HarmonicBalance& hbm, TrackedPoint tracked) {
   std::string hint;
   for (size_t i = 0; i < hbm.elements().size(); ++i) {
     const std::string limit = hbm.elements()[i]->smoothness_limit();
@@ -27,7 +27,9 @@ std::string smoothness_hint(const HarmonicBalance& hbm) {
     hint += hint.empty() ? "; " : ", ";
     hint += "elements[" + std::to_string(i) + "] (" + hbm.elements()[i]->type() + "): " + limit;
   }
-  if (!hint.empty()) hint += ": limit-point tracking needs a law with a smooth Jacobian (law = \"sqrt\")";
+  if (!hint.empty())
+    hint += tracked == TrackedPoint::limit_point ? ": limit-point tracking needs a law with a smooth Jacobian (law = \"sqrt\")"
+                                                 : ": NS and PD tracking need a law whose Jacobian is C1 (law = \"sqrt\")";
   return hint;
 }
 
@@ -52,25 +54,28 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   const int parameter = parameter_index(hbm.parameters(), o.parameter, o.parameter_name);
   const double start_value = hbm.parameters().value(parameter);
   if (!(o.parameter_min <= start_value && start_value <= o.parameter_max))
-    throw CaseError(o.range_name + ": must contain " + o.parameter + " = " + std::to_string(start_value) + " of the limit point");
+    throw CaseError(o.range_name + ": must contain " + o.parameter + " = " + std::to_string(start_value) + " of the " +
+                    (o.tracked == TrackedPoint::limit_point ? std::string("limit point") : tracked_type(o.tracked) + " point"));
   o.start.require_unknowns(hbm.unknowns());
   FoldTrackingOptions tracking;
   tracking.parameter_min = o.parameter_min;
   tracking.parameter_max = o.parameter_max;
   tracking.method = o.method;
+  tracking.tracked = o.tracked;
   tracking.continuation = c.nfrc.continuation;
 
   json summary = {{"verb", "track"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   json& options = summary["options"]["tracking"] = o.origin;
   options["parameter"] = o.parameter;
   options["method"] = to_string(o.method);
+  options["point"] = tracked_type(o.tracked);
   options["range"] = {o.parameter_min, o.parameter_max};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedTracking> resumed;
   if (sink.resuming()) resumed = checkpoint_to_resume(sink, {StopReason::completed, StopReason::closed}, settings, read_tracking_state);
   // Checked before the folder is touched, as frc's: the engine got vectors of another size.
   if (resumed)
-    if (const std::string misfit = tracking_state_misfit(resumed->state, o.method, hbm.unknowns()); !misfit.empty())
+    if (const std::string misfit = tracking_state_misfit(resumed->state, tracking, hbm.unknowns()); !misfit.empty())
       throw CaseError("--resume: " + sink.checkpoint_path() + ": " + misfit);
   sink.open();
   const int rows_kept = resumed ? resumed->state.curve_points : 0;
@@ -80,7 +85,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   for (const std::string& column : dof_state_columns(hbm)) state_columns.push_back(column);
   for (const std::string& column : state_header(hbm.unknowns()))
     if (column != "omega") unknown_columns.push_back(column);
-  const auto branch = sink.table("branch", tracking_header(c, o.parameter), start);
+  const auto branch = sink.table("branch", tracking_header(c, o.parameter, o.tracked), start);
   const auto states = sink.table("states", state_columns, start);
   std::unique_ptr<TableSink> unknowns;
   if (sink.keeps_unknowns()) unknowns = sink.table("unknowns", unknown_columns, start);
@@ -97,7 +102,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   const FoldTrackingResult r = track_fold(
       hbm, parameter, o.start.x, o.start.omega, scales, tracking, c.outputs,
       [&](const FoldCurvePoint& p, int index) {
-        branch->append(tracking_row(p));
+        branch->append(tracking_row(p, o.tracked));
         std::vector<double> row{static_cast<double>(p.leg), p.omega, p.parameter};
         const std::vector<double> dofs = dof_state_values(hbm, p.x, p.omega, parameter, p.parameter);
         row.insert(row.end(), dofs.begin(), dofs.end());
@@ -120,7 +125,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   RunReport report{summary};
   if (!r.success())
     report.failure = "tracking stopped: " + failure + " after " + std::to_string(r.curve_points()) + " points (kept in " + sink.location() +
-                     ")" + smoothness_hint(hbm);
+                     ")" + smoothness_hint(hbm, o.tracked);
   else
     report.brief = std::to_string(r.curve_points()) + " points, " + std::to_string(r.extrema.size()) + " extrema of " + o.parameter + ", " +
                    (r.closed ? "closed" : "both ways to the range");

@@ -16,6 +16,8 @@
 // Jacobian; the residual (the fold condition itself) is exact. The amplitude enters R
 // linearly and independently of x, so its mixed derivative is exactly zero and skipped.
 #include <Eigen/Dense>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "hbtrack/continuation/continuation.hpp"
@@ -43,6 +45,11 @@ class FoldSystem : public ContinuationProblem {
   // Unknowns at an approximate fold (x, omega) whose R_x has right and left null vectors
   // `right` and `left` (unit).
   virtual Eigen::VectorXd start(const Eigen::VectorXd& x, double omega, const Eigen::VectorXd& right, const Eigen::VectorXd& left) = 0;
+  // Unknowns at an approximate singular point (x, omega) of the parameter value gamma: start()
+  // with the null vectors of R_x there (the Hill-pencil systems find their own).
+  virtual Eigen::VectorXd start_at(const Eigen::VectorXd& x, double omega, double gamma);
+  // The frequency |Im lambda| of the exponent crossing the imaginary axis (NS, PD); NaN for a fold.
+  virtual double critical_frequency(const Eigen::VectorXd& /*u*/) const { return std::numeric_limits<double>::quiet_NaN(); }
   // After each accepted point (the bordered system renews its borders there).
   virtual void accepted(const Eigen::VectorXd& /*u*/, double /*gamma*/) {}
   // What the system carries from point to point besides the unknowns (the bordered system's

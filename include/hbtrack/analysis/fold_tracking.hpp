@@ -3,6 +3,7 @@
 // changes, followed both ways from a limit point, and the isolated branches it reveals
 // (paper sections 3 and 5.2; method notes sections 6 and 7).
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,13 @@
 
 namespace hbtrack {
 
+// What a tracking run follows: a limit point (fold), or a Floquet exponent on the imaginary
+// axis (critical_exponent_system.hpp): a Neimark-Sacker or a period-doubling point.
+enum class TrackedPoint { limit_point, neimark_sacker, period_doubling };
+
 struct FoldTrackingOptions {
-  TrackingMethod method = TrackingMethod::bordered;
+  TrackedPoint tracked = TrackedPoint::limit_point;
+  TrackingMethod method = TrackingMethod::bordered;  // of a limit point (NS and PD: bordered on Hill's pencil)
   double parameter_min = 0, parameter_max = 0;
   ContinuationOptions continuation;
   void validate() const;  // throws std::invalid_argument naming the field and the rule
@@ -25,6 +31,8 @@ struct FoldCurvePoint {
   double parameter = 0;
   int leg = 1;  // 1: from the start towards parameter_min; 2: from the start towards parameter_max
   RecordedPoint recorded;
+  // NS, PD: the crossing exponent's frequency |Im lambda| (the NS frequency); NaN for a fold.
+  double critical_frequency = std::numeric_limits<double>::quiet_NaN();
 };
 
 // A local extremum of gamma along the curve, located: a minimum is where a pair of limit points
@@ -37,6 +45,7 @@ struct FoldExtremum {
   double omega = 0, parameter = 0;
   int index = 0;  // the curve point (FoldTrackingResult::points) nearest to it
   RecordedPoint recorded;
+  double critical_frequency = std::numeric_limits<double>::quiet_NaN();  // as FoldCurvePoint's
 };
 
 struct FoldTrackingResult {
@@ -69,10 +78,10 @@ struct FoldTrackingState {
   std::vector<FoldExtremum> extrema;  // of the finished legs (recorded outputs not kept)
 };
 
-// Why `state` cannot resume a tracking of `method` on a system of `harmonic_unknowns` unknowns,
+// Why `state` cannot resume a tracking of `options` (method, point tracked) on a system of `harmonic_unknowns` unknowns,
 // naming the checkpoint's field ("" when it can): a state saved for another model or method has
 // vectors of other sizes, which the engine would combine with this system's (numbers or a crash).
-std::string tracking_state_misfit(const FoldTrackingState& state, TrackingMethod method, int harmonic_unknowns);
+std::string tracking_state_misfit(const FoldTrackingState& state, const FoldTrackingOptions& options, int harmonic_unknowns);
 
 // Optional checkpoint hooks of track_fold, as ContinuationRestart for one branch.
 struct FoldTrackingRestart {

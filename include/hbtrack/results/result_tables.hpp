@@ -42,10 +42,13 @@ std::vector<double> state_row(double omega, const Eigen::VectorXd& x);
 // used, outputs and special_points (each with its own outputs and the options' parameters).
 void add_nfrc_summary(nlohmann::json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r);
 
-// branch.csv of a tracking curve: leg, omega, the parameter, max_/min_/h1_NAME per output, then
-// the harmonics' columns as branch_header.
-std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter);
-std::vector<double> tracking_row(const FoldCurvePoint& p);
+// branch.csv of a tracking curve: leg, omega, the parameter, (NS and PD curves) ns_frequency,
+// max_/min_/h1_NAME per output, then the harmonics' columns as branch_header.
+std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter,
+                                         TrackedPoint tracked = TrackedPoint::limit_point);
+std::vector<double> tracking_row(const FoldCurvePoint& p, TrackedPoint tracked = TrackedPoint::limit_point);
+// "LP", "NS" or "PD": the special-point type a tracking run follows, as summary.json names it.
+std::string tracked_type(TrackedPoint tracked);
 // What `track` adds to summary.json: stop_reason, closed, legs, counts, special_points (extrema).
 void add_tracking_summary(nlohmann::json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter);
 

@@ -31,7 +31,10 @@ enum class StopReason {
   interrupted,  // also a steady-state integration, a sweep, a study (SIGINT/SIGTERM)
   time_limit,
   no_convergence_at_start,
-  rejoined,     // period doubling: a leg back on the period-T branch
+  rejoined,  // period doubling: a leg back on the period-T branch
+  // NS tracking: a leg ended where the NS frequency reached 0 or w/2 (a 1:1 or 1:2 resonance:
+  // the curve meets a fold or a period-doubling curve and ends there).
+  strong_resonance,
   not_started,  // limit-point tracking with no leg computed
   completed,    // a run of several parts (track, switch, isolas, sweep, study) that all ended as asked
   // Time integration to a steady state (integrate_to_steady_state and the integrators' failures).
@@ -62,6 +65,7 @@ struct ChoiceTable<StopReason> {
       {StopReason::time_limit, "time_limit"},
       {StopReason::no_convergence_at_start, "no_convergence_at_start"},
       {StopReason::rejoined, "rejoined"},
+      {StopReason::strong_resonance, "strong_resonance"},
       {StopReason::not_started, "not_started"},
       {StopReason::completed, "completed"},
       {StopReason::converged, "converged"},
