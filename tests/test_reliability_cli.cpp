@@ -32,7 +32,10 @@ std::string duffing() { return hbtrack::test::source_path("examples/duffing.toml
 
 // Duffing with a step at most a tenth of the example's: about 800 points, long enough (half a
 // second) to be stopped part-way.
-const std::vector<std::string> kSlowDuffing{"--set", "continuation.step=0.01", "--set", "continuation.step_max=0.01"};
+// About 4000 points, 0.8 s on the 2-core machine: long enough to be stopped part-way by a signal
+// or a 0.2 s time limit (a run of 800 points took 0.17 s once checkpoints stopped being fsynced
+// at every step).
+const std::vector<std::string> kSlowDuffing{"--set", "continuation.step=0.002", "--set", "continuation.step_max=0.002"};
 
 nlohmann::json summary_of(const fs::path& dir) { return nlohmann::json::parse(std::ifstream(dir / "summary.json")); }
 
