@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The rotor 67 NFRC against the contact stiffness (scripts/rotor67-contact-stiffness.sh): one
 Markdown table row per run folder <sense>-k<k>[-h15] of OUT, from its summary.json and
-branch.csv; with --figure, the leading edge's radial peak (max over a period) against omega,
+branch.csv; with --figure, the leading edge's radial ||r(t)||_inf against omega,
 one panel per sense, one line per stiffness (H = 10), stable solid, unstable dashed.
 Usage: contact_stiffness_table.py OUT [--figure PNG]"""
 import csv
@@ -10,21 +10,35 @@ import sys
 from pathlib import Path
 
 
+def peak_le(r):
+    """||le(t)||_inf over a period, m: the outward swing is capped by the casing, the inward one is not."""
+    return max(abs(float(r["max_le"])), abs(float(r["min_le"])))
+
+
 def row(folder):
     summary = json.loads((folder / "summary.json").read_text())
     with open(folder / "branch.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     params = summary["options"]["parameters"]
-    peak = max(rows, key=lambda r: float(r["max_le"]))
+    peak = max(rows, key=peak_le)
     specials = sorted(summary["special_points"], key=lambda p: p["omega"])
     def omegas(kind):
-        return ", ".join(f"{p['omega']:.1f}" for p in specials if p["type"] == kind) or "-"
+        # Points within 1 % of the previous one as one cluster, "first-last (count)": a law
+        # sharper than the time samples leaves dozens of micro folds 1e-3 apart.
+        values = [p["omega"] for p in specials if p["type"] == kind]
+        clusters = []
+        for w in values:
+            if clusters and w <= 1.01 * clusters[-1][-1]:
+                clusters[-1].append(w)
+            else:
+                clusters.append([w])
+        return ", ".join(f"{c[0]:.1f}" if len(c) == 1 else f"{c[0]:.1f}-{c[-1]:.1f} ({len(c)})" for c in clusters) or "-"
     gains = summary.get("friction_loop_gain", [])
     above = [g.get("node", str(g["element"])) for g in gains if g.get("self_energising")]
     return "| {sense} | {k:.0e} | {h} | {points} | {stop} | {lp} | {ns} | {peak:.3f} at {at:.1f} | {above} |".format(
         sense=folder.name.split("-k")[0], k=float(params["contact_stiffness"]),
         h=summary["options"]["harmonic_balance"]["harmonics"], points=summary["points"], stop=summary["stop_reason"],
-        lp=omegas("LP"), ns=omegas("NS"), peak=1e3 * float(peak["max_le"]), at=float(peak["omega"]),
+        lp=omegas("LP"), ns=omegas("NS"), peak=1e3 * peak_le(peak), at=float(peak["omega"]),
         above=", ".join(above) or "none")
 
 
@@ -34,7 +48,7 @@ def figure(folders, path):
     import matplotlib.pyplot as plt
     senses = [s for s in ("geometry", "reversed", "frictionless") if any(d.name.startswith(s + "-") for d in folders)]
     fig, axes = plt.subplots(1, len(senses), figsize=(5 * len(senses), 4), sharey=True, squeeze=False)
-    colours = {"1e8": "C0", "1e9": "C1", "1e10": "C3"}
+    colours = {"1e8": "C0", "1e9": "C1", "1e10": "C3", "1e11": "C4"}
     for ax, sense in zip(axes[0], senses):
         for k, colour in colours.items():
             folder = next((d for d in folders if d.name == f"{sense}-k{k}"), None)
@@ -43,25 +57,25 @@ def figure(folders, path):
             with open(folder / "branch.csv", newline="") as f:
                 rows = list(csv.DictReader(f))
             omega = [float(r["omega"]) for r in rows]
-            peak = [1e3 * float(r["max_le"]) for r in rows]
+            peak = [1e3 * peak_le(r) for r in rows]
             stable = [r["stable"] == "1" for r in rows]
             label = f"k = {k} N/m"
             for i in range(1, len(rows)):  # segment by segment: solid where both ends are stable
                 ax.plot(omega[i - 1:i + 1], peak[i - 1:i + 1], color=colour, lw=1.2,
                         ls="-" if stable[i - 1] and stable[i] else "--", label=label if i == 1 else None)
         ax.set_title({"geometry": "sense of the geometry", "reversed": "friction sense reversed",
-                      "frictionless": "without friction (mu = 0)"}[sense])
+                      "frictionless": "nearly frictionless (mu = 1e-4)"}[sense])
         ax.set_xlabel("omega (rad/s)")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-    axes[0][0].set_ylabel("leading-edge radial peak, max over a period (mm)")
+    axes[0][0].set_ylabel("leading edge, radial: max |r(t)| over a period (mm)")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
 
 
 def main():
     out = Path(sys.argv[1])
-    print("| sense | k (N/m) | H | points | stop | LP omega (rad/s) | NS omega (rad/s) | peak le (mm) at omega | loop gain > 1 |")
+    print("| sense | k (N/m) | H | points | stop | LP omega (rad/s) | NS omega (rad/s) | max abs le (mm) at omega | loop gain > 1 |")
     print("|---|---|---|---|---|---|---|---|---|")
     order = {"geometry": 0, "reversed": 1, "frictionless": 2}
     folders = [d for d in out.iterdir() if (d / "summary.json").is_file()]
