@@ -68,8 +68,10 @@ TEST(ResumeIdentity, AnEditedModelIsRefusedInOneLine) {
   fs::remove_all(dir);
   ASSERT_EQ(run_cli("frc " + case_file.string() + " -q --set continuation.max_points=5 -o " + dir.string()).exit_code, 0);
   duffing_copy(case_file);
-  const CliRun same = run_cli("frc " + case_file.string() + " -q --resume " + dir.string());
+  // A few more points: what is tested is that it resumes, not the rest of the NFRC.
+  const CliRun same = run_cli("frc " + case_file.string() + " -q --set continuation.max_points=8 --resume " + dir.string());
   EXPECT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_EQ(summary_of(dir)["points"], 8);
 }
 
 // A law's choice is the element subclass's own state, which the model's hash missed: a case whose
@@ -87,8 +89,11 @@ TEST(ResumeIdentity, AnotherContactLawIsAnotherModel) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("was computed with another model"), std::string::npos) << r.err;
   duffing_copy(case_file, "cubic_stiffness = 0.1", contact + "\"polynomial\"");
-  const CliRun same = run_cli("frc " + case_file.string() + " -q --resume " + dir.string());
+  // A few more points only: the whole NFRC, shooting-checked on this C0 law, took 3 minutes under
+  // the sanitizers.
+  const CliRun same = run_cli("frc " + case_file.string() + " -q --set continuation.max_points=8 --resume " + dir.string());
   EXPECT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_EQ(summary_of(dir)["points"], 8);
 }
 
 // A checkpoint whose settings nest 200 000 deep segfaulted --resume.
