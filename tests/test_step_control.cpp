@@ -9,6 +9,7 @@
 
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
+#include "special_point_reference.hpp"
 #include "test_support.hpp"
 
 using namespace hbtrack;
@@ -16,10 +17,7 @@ using namespace hbtrack;
 namespace hbtrack_tests::file_step_control {
 namespace {
 
-struct Reference {
-  std::string type;
-  double omega;
-};
+using Reference = SpecialPointReference;
 
 // The special points of the example's NFRC with its own settings, in the order found.
 void expect_same_special_points(const std::string& example, const std::vector<Reference>& reference, int points_before) {
@@ -27,18 +25,8 @@ void expect_same_special_points(const std::string& example, const std::vector<Re
   HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
   const NfrcResult r = compute_nfrc(hbm, c.nfrc, c.outputs);
   ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
-  const std::vector<SpecialPoint>& found = r.continuation.special_points;
-  ASSERT_EQ(found.size(), reference.size()) << example;
-  for (size_t i = 0; i < found.size(); ++i) {
-    EXPECT_EQ(found[i].type, reference[i].type) << example << " #" << i;
-    EXPECT_TRUE(found[i].located) << example << " #" << i;
-    // Both runs locate the zero of the same test function on the same branch, to the
-    // corrector's tolerance (1e-9 on the residual): they agreed within 5e-10 relative when the
-    // references were taken. 1e-7 is the bound the controller must keep (issue 34); PD and NS
-    // points come from Floquet multipliers whose own accuracy allows 1e-5.
-    const double bound = found[i].type == "LP" || found[i].type == "BP" ? 1e-7 : 1e-5;
-    EXPECT_NEAR(found[i].lambda, reference[i].omega, bound * reference[i].omega) << example << " " << found[i].type;
-  }
+  // They agreed within 5e-10 relative when the references were taken.
+  expect_special_points_near(r.continuation.special_points, reference, example);
   // Not a result, the point of the controller: the cap no longer sets the spacing.
   EXPECT_LT(r.continuation.summary.points, points_before) << example;
 }

@@ -90,11 +90,12 @@ void bind_options(py::module_& m) {
       .def_readwrite("reuse_factorization", &ContinuationOptions::reuse_factorization)
       .def_readwrite("contraction", &ContinuationOptions::contraction);
   bind_options_class<StabilityOptions>(m, "StabilityOptions", "Floquet stability settings (case file [stability]).",
-                                       {"method", "monodromy_steps", "hill_solver", "cross_check"})
+                                       {"method", "monodromy_steps", "hill_solver", "cross_check", "every_point"})
       .def_readwrite("method", &StabilityOptions::method)
       .def_readwrite("monodromy_steps", &StabilityOptions::monodromy_steps)
       .def_readwrite("hill_solver", &StabilityOptions::hill_solver)
-      .def_readwrite("cross_check", &StabilityOptions::cross_check);
+      .def_readwrite("cross_check", &StabilityOptions::cross_check)
+      .def_readwrite("every_point", &StabilityOptions::every_point);
   bind_options_class<HarmonicBalanceOptions>(m, "HarmonicBalanceOptions", "Harmonic balance settings (case file [harmonic_balance]).",
                                              {"harmonics", "subharmonic", "samples", "condensation"})
       // H, or the list of harmonics balanced ([1, 3, 5]: harmonic_balance.harmonics as a list).

@@ -59,7 +59,8 @@ def test_stability_table_decides_stable(two_dof):
     assert 0 < branch["stable"].sum() < len(branch["stable"])  # the contact fold is unstable between its LPs
     # The `method` code of each point (0 hill, 1 monodromy, 2 shooting) agrees with summary.json's
     # count of what decided the points, one method per point (a C0 contact law on 2 dofs: the
-    # cross-check, not Hill, decides most of them).
+    # cross-check, not Hill, decides most of them). A 2-dof model is evaluated at every point:
+    # none takes its verdict from its neighbours ("bracketed", which has no rows here).
     codes = {"hill": 0, "monodromy": 1, "shooting": 2}
     per_point = []
     for i in range(len(branch["omega"])):
@@ -67,7 +68,8 @@ def test_stability_table_decides_stable(two_dof):
         assert len(methods) == 1, (i, methods)
         per_point.append(methods.pop())
     decided = result["summary"]["stability_methods"]["points"]
-    assert set(decided) == set(codes)
+    assert set(decided) == set(codes) | {"bracketed"}
+    assert decided["bracketed"] == 0
     for name, code in codes.items():
         assert per_point.count(code) == decided[name], name
     assert per_point.count(codes["hill"]) < len(per_point)

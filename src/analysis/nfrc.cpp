@@ -88,11 +88,22 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
   result.length_scale = adaptive ? 0.01 * reference : reference;
   NfrcProblem problem(hbm, result.length_scale, std::abs(options.omega_end - options.omega_start), force_scale(hbm, reference), adaptive);
   FloquetMonitor monitor(hbm, options.stability);
+  // Of the last point passed on: a point the monitor skipped shares it. A resumed run's first
+  // points may have been skipped: the saved state carries the verdict of its last point.
+  int last_stable = -1;
+  if (restart.resume_from && !restart.resume_from->earlier_test_values.empty())
+    last_stable = restart.resume_from->monitor_verdict % 2 == 0 ? 1 : 0;
   result.continuation = continue_within(
       problem, x0, omega0, window, options.continuation,
       [&](const BranchPoint& p, int index) {
         RecordedPoint rec = record_point(hbm, p.u, p.lambda, outputs);
-        if (options.stability.enabled()) {
+        if (options.stability.enabled() && !p.monitored) {
+          // Between two evaluated points whose verdicts agree (the engine evaluates every point
+          // between two that disagree): their verdict, no exponents of its own.
+          rec.stable = last_stable;
+          rec.max_floquet_real = NAN;
+          rec.stability_method = kBracketedStability;
+        } else if (options.stability.enabled()) {
           const FloquetResult& f = monitor.result_for(p);
           rec.stable = f.stable ? 1 : 0;
           rec.max_floquet_real = f.max_real;
@@ -100,6 +111,7 @@ NfrcResult compute_branch(HarmonicBalance& hbm, const NfrcOptions& options, cons
           rec.floquet_multipliers = f.multipliers;
           rec.stability_method = to_string(f.method);
         }
+        last_stable = rec.stable;
         result.recorded.push_back(std::move(rec));
         return !observer || observer(p, result.recorded.back(), index);
       },

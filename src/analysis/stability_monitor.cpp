@@ -1,6 +1,7 @@
 #include "hbtrack/analysis/stability_monitor.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include "hbtrack/stability/hill.hpp"
@@ -69,6 +70,11 @@ FloquetResult floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double ome
   return hill;
 }
 
+FloquetMonitor::FloquetMonitor(HarmonicBalance& hbm, StabilityOptions options)
+    : hbm_(hbm),
+      options_(std::move(options)),
+      may_skip_(!options_.every_point && options_.method == StabilityMethod::hill && hbm.model().dofs() > kCrossCheckDofs) {}
+
 const FloquetResult& FloquetMonitor::result_for(const BranchPoint& p) {
   for (auto it = recent_.rbegin(); it != recent_.rend(); ++it)
     if (it->lambda == p.lambda && it->u.size() == p.u.size() && it->u == p.u) return it->result;
@@ -96,6 +102,13 @@ std::string FloquetMonitor::classify(const std::string& /*type*/, const BranchPo
   // stop a few 1e-3 off the circle: the bracket's tolerance still tells which multiplier crossed.
   if (type.empty() && located) type = crossing_type(r.multipliers, 0.05, real_tolerance);
   return type == "LP" ? "" : type;  // a multiplier through +1 is the engine's LP/BP test's
+}
+
+int FloquetMonitor::verdict(const BranchPoint& p) {
+  const FloquetResult& r = result_for(p);
+  int outside = 0;
+  for (Eigen::Index i = 0; i < r.multipliers.size(); ++i) outside += std::abs(r.multipliers(i)) > 1.0 ? 1 : 0;
+  return 2 * outside + (r.stable ? 0 : 1);
 }
 
 std::vector<double> FloquetMonitor::test_functions(const BranchPoint& p) {

@@ -54,38 +54,56 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count(); };
   ContinuationResult result;
   continuation_detail::ContinuationStepper stepper(problem, u0, window, options, monitor);
+  // The state after the last point passed on whose monitor verdict is settled: what a
+  // checkpoint saves (points waiting for a lazy monitor are not in it; a resumed run redoes them).
+  ContinuationState settled;
+  int passed_on = restart.resume_from ? restart.resume_from->points : 0;
   double last_state_s = -INFINITY;
   auto save_state = [&] {
     last_state_s = elapsed();
-    restart.on_state(stepper.state());
+    restart.on_state(settled);
   };
   auto finish = [&](StopReason reason) {
-    if (restart.on_state && stepper.points() > 0) save_state();
+    if (restart.on_state && passed_on > 0) save_state();
     result.summary = stepper.summary();
+    result.summary.points = passed_on;
     result.summary.stop_reason = reason;
     result.summary.wall_s = elapsed();
     result.special_points = stepper.special_points();
     return result;
   };
-  // The stepper has counted the point: it is number points() - 1 of the branch.
-  auto accept = [&](BranchPoint p) {
-    result.points.push_back(std::move(p));
-    return !observer || observer(result.points.back(), stepper.points() - 1);
+  // Passes the points on in order; false when the observer asked to stop (the points after it
+  // are dropped, and the state saved is the one before them).
+  auto accept = [&](std::vector<BranchPoint> points) {
+    for (size_t i = 0; i < points.size(); ++i) {
+      result.points.push_back(std::move(points[i]));
+      const bool go_on = !observer || observer(result.points.back(), passed_on);
+      ++passed_on;
+      if (i + 1 == points.size() && stepper.settled()) settled = stepper.state();
+      if (!go_on) return false;
+    }
+    return true;
+  };
+  // A run that stops passes on the points still waiting for the monitor first.
+  auto stop = [&](StopReason reason) {
+    if (!stepper.settled() && !accept(stepper.settle())) return finish(StopReason::interrupted);
+    return finish(reason);
   };
 
   if (restart.resume_from) {
     stepper.resume(*restart.resume_from);
+    settled = *restart.resume_from;
   } else {
     BranchPoint first;
     if (!stepper.start(u0, lambda_start, first)) return finish(StopReason::no_convergence_at_start);
-    if (!accept(std::move(first))) return finish(StopReason::interrupted);
+    if (!accept({std::move(first)})) return finish(StopReason::interrupted);
   }
   while (true) {
     if (restart.on_state && elapsed() - last_state_s >= restart.state_interval_s) save_state();
-    if (stepper.points() >= options.max_points) return finish(StopReason::max_points);
-    if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return finish(StopReason::time_limit);
+    if (stepper.points() >= options.max_points) return stop(StopReason::max_points);
+    if (options.wall_time_limit > 0 && elapsed() > options.wall_time_limit) return stop(StopReason::time_limit);
     continuation_detail::ContinuationStepper::Outcome step = stepper.step();
-    if (step.point && !accept(std::move(*step.point))) return finish(StopReason::interrupted);
+    if (!accept(std::move(step.points))) return finish(StopReason::interrupted);
     if (step.stop_reason) return finish(*step.stop_reason);
   }
 }

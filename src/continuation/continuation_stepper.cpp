@@ -24,8 +24,10 @@ ContinuationStepper::ContinuationStepper(ContinuationProblem& problem, const Vec
       corners_(problem.has_corners()),
       ds_(options.step),
       first_parameter_scale_(s_.sl) {
-  if (monitor)
+  if (monitor) {
     for (const auto& t : monitor->types()) types_.push_back(t);
+    lazy_ = monitor->may_skip_points();
+  }
 }
 
 bool ContinuationStepper::start(const VectorXd& u0, double lambda_start, BranchPoint& first) {
@@ -47,7 +49,11 @@ bool ContinuationStepper::start(const VectorXd& u0, double lambda_start, BranchP
   if (tan.t(s_.m) * direction_ < 0) tan.t = -tan.t;
   t_ = tan.t;
   first_point_ = BranchPoint{u, lambda_start, t_, iterations, 0.0};
-  previous_ = test_values(first_point_, tan);
+  MonitoredPoint start_point{first_point_, x_, t_, s_.su, engine_test_values(tan), 0.0, 0, 0};
+  if (monitor_) evaluate_monitor(start_point);
+  previous_ = start_point.values;
+  history_.last = previous_.values;
+  last_monitored_ = std::move(start_point);
   first_scale_ = s_.su;
   first = first_point_;
   ++points_;
@@ -74,6 +80,11 @@ void ContinuationStepper::resume(const ContinuationState& state) {
   first_parameter_scale_ = state.first_parameter_scale;
   special_points_ = state.special_points;
   summary_ = state.summary;
+  // A state is taken where the monitor evaluated its point (settled()): the history goes on
+  // from there, arc lengths counted from it.
+  history_ = MonitorHistory{previous_.values, state.earlier_test_values, 0.0, -state.earlier_distance, 0};
+  last_monitored_ = MonitoredPoint{
+      BranchPoint{s_.unknowns(x_), s_.parameter(x_), t_, 0, 0.0}, x_, t_, s_.su, previous_, 0.0, points_ - 1, state.monitor_verdict};
   s_.jacobian_evaluations = summary_.jacobian_evaluations;
   s_.factorizations = summary_.factorizations;
   s_.residual_evaluations = summary_.residual_evaluations;
@@ -92,35 +103,50 @@ ContinuationSummary ContinuationStepper::summary() const {
 }
 
 ContinuationState ContinuationStepper::state() const {
-  return ContinuationState{points_,
-                           x_,
-                           x_before_,
-                           t_,
-                           s_.su,
-                           ds_,
-                           cut_,
-                           farthest_,
-                           previous_.values,
-                           previous_.bp_log_det,
-                           first_point_,
-                           first_scale_,
-                           first_parameter_scale_,
-                           special_points_,
-                           summary()};
+  ContinuationState state;
+  state.points = points_;
+  state.x = x_;
+  state.x_before = x_before_;
+  state.tangent = t_;
+  state.unknown_scale = s_.su;
+  state.step = ds_;
+  state.step_cut = cut_;
+  state.farthest = farthest_;
+  state.test_values = previous_.values;
+  state.bp_log_det = previous_.bp_log_det;
+  if (lazy_) {
+    state.earlier_test_values = history_.before;
+    state.earlier_distance = history_.last_arc - history_.before_arc;
+    state.monitor_verdict = last_monitored_.verdict;
+  }
+  state.first = first_point_;
+  state.first_scale = first_scale_;
+  state.first_parameter_scale = first_parameter_scale_;
+  state.special_points = special_points_;
+  state.summary = summary();
+  return state;
 }
 
-TestValues ContinuationStepper::test_values(const BranchPoint& p, const Tangent& tan) {
+TestValues ContinuationStepper::engine_test_values(const Tangent& tan) const {
   TestValues v;
   v.bp_log_det = tan.log_det;
   v.values = {tan.t(s_.m), static_cast<double>(tan.det_sign)};
-  if (monitor_)
-    for (double f : monitor_->test_functions(p)) v.values.push_back(f);
   return v;
 }
 
-ContinuationStepper::Outcome ContinuationStepper::emit(BranchPoint point, std::optional<StopReason> stop_reason) {
-  ++points_;
-  return Outcome{std::move(point), stop_reason};
+void ContinuationStepper::evaluate_monitor(MonitoredPoint& p) {
+  p.values.values.resize(2);
+  for (double f : monitor_->test_functions(p.point)) p.values.values.push_back(f);
+  p.verdict = lazy_ ? monitor_->verdict(p.point) : 0;
+  p.point.monitored = true;
+}
+
+VectorXd ContinuationStepper::in_current_scale(const VectorXd& v, const VectorXd& su_then, bool normalize) const {
+  if (su_then == s_.su) return v;
+  VectorXd out = v;
+  out.head(s_.m) = v.head(s_.m).cwiseProduct(su_then).cwiseQuotient(s_.su);
+  if (normalize) out.normalize();
+  return out;
 }
 
 ContinuationStepper::Outcome ContinuationStepper::step() {
@@ -181,40 +207,69 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
     ++summary_.step_halvings;
     ds_ *= 0.5;
     cut_ = true;
-    if (ds_ < options_.step_min)
-      return {std::nullopt, converged ? StopReason::step_size_underflow_on_curvature : StopReason::step_size_underflow};
+    if (ds_ < options_.step_min) return {{}, converged ? StopReason::step_size_underflow_on_curvature : StopReason::step_size_underflow};
     return {};
   }
   if (through_corner || onto_corner) ++summary_.corners_stepped_over;
 
   const double arc = (y - x_).norm();
   BranchPoint point{s_.unknowns(y), s_.parameter(y), tan_new.t, iterations, arc};
-  const TestValues current = test_values(point, tan_new);
-  record_special_points(y, point, current);
+  const double lambda = point.lambda;
+  // Crossing a bound of the window ends the branch exactly on it; so does closing on itself.
+  const bool beyond_end = (lambda - lambda_end_) * direction_ >= 0;
+  const bool beyond_back = (lambda - lambda_back_) * direction_ < 0;
+  BranchPoint closing;
+  const bool closes = !beyond_end && !beyond_back && window_.stop_when_closed && closes_on_first_point(x_, y, tan_new.t, closing);
+  arc_ += arc;
+  MonitoredPoint now{point, y, tan_new.t, s_.su, engine_test_values(tan_new), arc_, points_, 0};
+  // A lazy monitor waits where its verdict cannot change; the branch's last point settles it.
+  if (monitor_ &&
+      (!lazy_ || beyond_end || beyond_back || closes || monitor_due(history_, arc_, previous_.values, now.values.values, arc, turn)))
+    evaluate_monitor(now);
+  else if (monitor_)
+    now.point.monitored = false;
+  const TestValues current = now.values;
+  record_engine_special_points(y, point, current);
+  std::vector<BranchPoint> settled_points;
+  if (now.evaluated()) {
+    settled_points = settle_with(now);
+  } else {
+    pending_.push_back(now);
+    ++history_.points_since;
+    history_.turn_since += turn;
+  }
+  ++points_;
   const TestValues before = std::move(previous_);
   previous_ = current;
   x_before_ = x_;
   x_ = y;
   t_ = tan_new.t;
-  const double lambda = point.lambda;
-  // Crossing a bound of the window: land exactly on it, interpolating the last step.
-  const bool beyond_end = (lambda - lambda_end_) * direction_ >= 0;
-  const bool beyond_back = (lambda - lambda_back_) * direction_ < 0;
   if (beyond_end || beyond_back) {
+    // Land on the bound, interpolating the last step: that point replaces the step's.
     const double bound = beyond_end ? lambda_end_ : lambda_back_;
     const StopReason reason = beyond_end ? StopReason::reached_end : StopReason::left_range;
     const double lambda_before = s_.parameter(x_before_);
     const double f = (bound - lambda_before) / (lambda - lambda_before);
     VectorXd u_end = s_.unknowns(x_before_ + f * (x_ - x_before_));
     const int it = newton_at_fixed_parameter(s_.problem, u_end, bound, options_.tolerance, options_.max_iterations);
-    if (it < 0) return emit(point, reason);
-    summary_.newton_iterations += it;
-    return emit({u_end, bound, t_, it, arc * f}, reason);
+    if (it >= 0) {
+      summary_.newton_iterations += it;
+      settled_points.back() = BranchPoint{u_end, bound, t_, it, arc * f};
+    }
+    return {std::move(settled_points), reason};
   }
-  if (BranchPoint closing; window_.stop_when_closed && closes_on_first_point(y, closing)) return emit(closing, StopReason::closed);
-  Outcome out = emit(point);
+  if (closes) {
+    settled_points.back() = closing;
+    return {std::move(settled_points), StopReason::closed};
+  }
 
   s_.rescale(s_.unknowns(x_), {&x_, &x_before_}, t_);
+  if (now.evaluated()) {
+    // Kept in the scale a saved state has, so a resumed run brackets from the same numbers.
+    last_monitored_.x = x_;
+    last_monitored_.t = t_;
+    last_monitored_.su = s_.su;
+  }
   // A chord step counts half: it gains about half the digits of a Newton step near the
   // solution (linear against quadratic convergence) at a fraction of the cost. A corner's turn
   // says nothing of the curvature ahead: it does not size the next step.
@@ -222,6 +277,7 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
   AcceptedStep taken{ds_, iterations - 0.5 * chords, at_corner ? 0.0 : turn, {}, {}};
   for (size_t k = 0; k < types_.size(); ++k) {
     if (k == 1) continue;  // BP: the bordered determinant's magnitude is no distance to a zero
+    if (k >= before.values.size() || k >= current.values.size()) continue;  // a point the monitor skipped
     taken.before.push_back(before.values[k]);
     taken.after.push_back(current.values[k]);
   }
@@ -233,14 +289,59 @@ ContinuationStepper::Outcome ContinuationStepper::step() {
   ds_ = std::min(through_corner ? std::max(ds_ * factor, corner_.step) : ds_ * factor, options_.step_max);
   // A remembered turn only stands for the corner just ahead.
   if (through_corner || ++corner_.points_since > 4) corner_ = {};
+  return {std::move(settled_points), std::nullopt};
+}
+
+std::vector<BranchPoint> ContinuationStepper::settle() {
+  if (pending_.empty()) return {};
+  MonitoredPoint last = std::move(pending_.back());
+  pending_.pop_back();
+  evaluate_monitor(last);
+  previous_ = last.values;  // the newest point is x_: its state now carries the monitor's values
+  std::vector<BranchPoint> out = settle_with(std::move(last));
+  last_monitored_.x = x_;
+  last_monitored_.t = t_;
+  last_monitored_.su = s_.su;
   return out;
 }
 
-// Brackets the special points between the last point (x_, t_, previous_) and the new one y.
-void ContinuationStepper::record_special_points(const VectorXd& y, const BranchPoint& point, const TestValues& current) {
+std::vector<BranchPoint> ContinuationStepper::settle_with(MonitoredPoint now) {
+  const auto signs_differ = [](const TestValues& a, const TestValues& b) {
+    for (size_t k = 2; k < a.values.size() && k < b.values.size(); ++k)
+      if (!(a.values[k] * b.values[k] > 0)) return true;
+    return false;
+  };
+  if (!pending_.empty() && (now.verdict != last_monitored_.verdict || signs_differ(last_monitored_.values, now.values)))
+    for (MonitoredPoint& p : pending_) evaluate_monitor(p);
+  pending_.push_back(std::move(now));
+  const size_t found_before = special_points_.size();
+  std::vector<BranchPoint> out;
+  for (MonitoredPoint& p : pending_) {
+    out.push_back(p.point);
+    if (!p.evaluated()) continue;
+    record_monitor_special_points(last_monitored_, p);
+    history_.before = std::move(history_.last);
+    history_.before_arc = history_.last_arc;
+    history_.last = p.values.values;
+    history_.last_arc = p.arc;
+    last_monitored_ = std::move(p);
+  }
+  history_.points_since = 0;
+  history_.turn_since = 0;
+  pending_.clear();
+  // Found out of order when pending points were evaluated late: kept in branch order.
+  if (special_points_.size() > found_before)
+    std::stable_sort(special_points_.begin(), special_points_.end(),
+                     [](const SpecialPoint& a, const SpecialPoint& b) { return a.index < b.index; });
+  return out;
+}
+
+// Brackets the engine's special points (LP, BP) between the last point (x_, t_, previous_) and
+// the new one y.
+void ContinuationStepper::record_engine_special_points(const VectorXd& y, const BranchPoint& point, const TestValues& current) {
   const int m = s_.m;
   const int index_new = points_;
-  for (size_t k = 0; k < types_.size(); ++k) {
+  for (size_t k = 0; k < 2; ++k) {
     const double f0 = previous_.values[k];
     const double f1 = k == 1 ? current.values[1] * std::exp(std::min(current.bp_log_det - previous_.bp_log_det, 600.0)) : current.values[k];
     if (!(f0 * f1 < 0)) continue;
@@ -256,12 +357,27 @@ void ContinuationStepper::record_special_points(const VectorXd& y, const BranchP
       if (was_rising ? s_.parameter(x_) > s_.parameter(y) : s_.parameter(x_) < s_.parameter(y))
         sp = {types_[k], index_new - 1, false, s_.parameter(x_), s_.unknowns(x_), t_, ""};
     }
-    if (k >= 2) {
-      sp.type = monitor_->classify(types_[k], BranchPoint{sp.u, sp.lambda, sp.tangent, 0, 0}, sp.located, sp.decided_by);
-      // Two test functions may flip for one crossing (a nearly real pair): record it once.
-      const auto same = [&](const SpecialPoint& q) { return q.type == sp.type && q.index == sp.index; };
-      if (sp.type.empty() || std::any_of(special_points_.begin(), special_points_.end(), same)) continue;
+    special_points_.push_back(sp);
+  }
+}
+
+void ContinuationStepper::record_monitor_special_points(const MonitoredPoint& a, const MonitoredPoint& b) {
+  const VectorXd xa = in_current_scale(a.x, a.su, false), ta = in_current_scale(a.t, a.su, true);
+  const VectorXd xb = in_current_scale(b.x, b.su, false);
+  for (size_t k = 2; k < types_.size() && k < a.values.values.size() && k < b.values.values.size(); ++k) {
+    const double f0 = a.values.values[k], f1 = b.values.values[k];
+    if (!(f0 * f1 < 0)) continue;
+    SpecialPoint sp{types_[k], b.index, false, b.point.lambda, b.point.u, b.point.tangent, ""};
+    VectorXd located;
+    Tangent located_tan;
+    if (options_.locate && locator_.locate(k, xa, ta, f0, xb, f1, 0.0, located, located_tan)) {
+      const double along = ta.dot(located - xa) / std::max(ta.dot(xb - xa), 1e-300);
+      sp = {types_[k], along < 0.5 ? a.index : b.index, true, s_.parameter(located), s_.unknowns(located), located_tan.t, ""};
     }
+    sp.type = monitor_->classify(types_[k], BranchPoint{sp.u, sp.lambda, sp.tangent, 0, 0}, sp.located, sp.decided_by);
+    // Two test functions may flip for one crossing (a nearly real pair): record it once.
+    const auto same = [&](const SpecialPoint& q) { return q.type == sp.type && q.index == sp.index; };
+    if (sp.type.empty() || std::any_of(special_points_.begin(), special_points_.end(), same)) continue;
     special_points_.push_back(sp);
   }
 }
@@ -270,24 +386,24 @@ void ContinuationStepper::record_special_points(const VectorXd& y, const BranchP
 // within a quarter step of it after the branch went more than two steps away from it (a loop
 // only three steps across, as the tracked fold of a law narrower than a sample draws, went round
 // 290 times under the former four). A closed curve ends on a copy of its first point. Called
-// after the step: x_before_ is where it started, x_ = y where it ended.
-bool ContinuationStepper::closes_on_first_point(const VectorXd& y, BranchPoint& closing) {
+// with the step from `start` to y and the tangent t at y.
+bool ContinuationStepper::closes_on_first_point(const VectorXd& start, const VectorXd& y, const VectorXd& t, BranchPoint& closing) {
   const int m = s_.m;
   const VectorXd first_x = s_.pack(first_point_.u, first_point_.lambda);
-  const VectorXd chord = y - x_before_;
+  const VectorXd chord = y - start;
   const double length = chord.norm();
   farthest_ = std::max(farthest_, (y - first_x).norm());
-  const double along = length > 0 ? (first_x - x_before_).dot(chord) / length : -1.0;
-  const double off = (first_x - x_before_ - along * chord / std::max(length, 1e-300)).norm();
+  const double along = length > 0 ? (first_x - start).dot(chord) / length : -1.0;
+  const double off = (first_x - start - along * chord / std::max(length, 1e-300)).norm();
   // A loop arrives with the orientation it left with; a branch that turned back on itself (a
   // sharp corner taken at the smallest step) passes the start going the other way.
   const VectorXd first_t = s_.pack(first_point_.u + first_point_.tangent.head(m).cwiseProduct(first_scale_),
                                    first_point_.lambda + first_point_.tangent(m) * first_parameter_scale_) -
                            first_x;
-  const bool same_orientation = first_t.dot(t_) > 0;
+  const bool same_orientation = first_t.dot(t) > 0;
   if (!(farthest_ > 2 * length && along >= 0 && along <= length && off <= 0.25 * length && same_orientation)) return false;
   closing = first_point_;
-  closing.step = (first_x - x_before_).norm();
+  closing.step = (first_x - start).norm();
   return true;
 }
 

@@ -242,7 +242,11 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
   co.contraction = in.number_or(cont, "contraction", "continuation.contraction", co.contraction);
   if (const toml::value* st = in.find(root, "stability")) {
     in.table(*st, "stability");
-    in.check_keys(*st, "stability", {"method", "monodromy_steps", "hill_solver", "cross_check"});
+    in.check_keys(*st, "stability", {"method", "monodromy_steps", "hill_solver", "cross_check", "every_point"});
+    if (const toml::value* every = in.find(*st, "every_point")) {
+      if (!every->is_boolean()) in.fail(every, "stability.every_point", "expected true or false");
+      o.stability.every_point = every->as_boolean();
+    }
     o.stability.cross_check = in.choice_or(*st, "cross_check", o.stability.cross_check);
     o.stability.hill_solver = in.choice_or(*st, "hill_solver", o.stability.hill_solver);
     o.stability.method = in.choice_or(*st, "method", o.stability.method);

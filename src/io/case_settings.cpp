@@ -64,7 +64,8 @@ toml::value settings_document(const CaseDefinition& c) {
       {"stability", toml::table{{"method", to_string(st.method)},
                                 {"monodromy_steps", st.monodromy_steps},
                                 {"hill_solver", to_string(st.hill_solver)},
-                                {"cross_check", to_string(st.cross_check)}}},
+                                {"cross_check", to_string(st.cross_check)},
+                                {"every_point", st.every_point}}},
       // Only what the checks of the settings against the model read: each forcing's harmonic,
       // and one (empty) entry per element.
       {"forcing", forcing},

@@ -60,6 +60,9 @@ json state_json(const ContinuationState& state) {
           {"farthest", state.farthest},
           {"test_values", state.test_values},
           {"bp_log_det", state.bp_log_det},
+          {"earlier_test_values", state.earlier_test_values},
+          {"earlier_distance", state.earlier_distance},
+          {"monitor_verdict", state.monitor_verdict},
           {"first", first},
           {"first_scale", vector_json(state.first_scale)},
           {"first_parameter_scale", state.first_parameter_scale},
@@ -96,6 +99,11 @@ ContinuationState state_from_json(const json& j) {
   s.farthest = j.at("farthest").get<double>();
   s.test_values = j.at("test_values").get<std::vector<double>>();
   s.bp_log_det = j.at("bp_log_det").get<double>();
+  // Absent from checkpoints written before monitors could skip points: no history, so the
+  // resumed run evaluates its monitor at its next two points.
+  s.earlier_test_values = j.value("earlier_test_values", std::vector<double>());
+  s.earlier_distance = j.value("earlier_distance", 0.0);
+  s.monitor_verdict = j.value("monitor_verdict", 0);
   const json& first = j.at("first");
   s.first = BranchPoint{json_vector(first.at("u")), first.at("lambda").get<double>(), json_vector(first.at("tangent")),
                         first.at("newton_iterations").get<int>(), 0.0};

@@ -55,7 +55,8 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
            {{"method", to_string(c.nfrc.stability.method)},
             {"monodromy_steps", c.nfrc.stability.monodromy_steps},
             {"hill_solver", to_string(c.nfrc.stability.hill_solver)},
-            {"cross_check", to_string(c.nfrc.stability.cross_check)}}}};
+            {"cross_check", to_string(c.nfrc.stability.cross_check)},
+            {"every_point", c.nfrc.stability.every_point}}}};
 }
 
 json outputs_json(const CaseDefinition& c) {
@@ -130,7 +131,8 @@ std::vector<double> branch_row(const RecordedPoint& p) {
 namespace {
 // The methods that decide a point's stability: the keys of summary.json's stability_methods, and
 // in this order the codes of stability.csv's `method` column (its cells are numbers).
-constexpr std::array<const char*, 3> kStabilityMethods{"hill", "monodromy", "shooting"};
+// "bracketed" points have no exponents of their own, hence no stability.csv rows.
+constexpr std::array<const char*, 4> kStabilityMethods{"hill", "monodromy", "shooting", kBracketedStability};
 
 double stability_method_code(const std::string& method) {
   for (size_t i = 0; i < kStabilityMethods.size(); ++i)

@@ -48,6 +48,9 @@ class NfrcProblem final : public ContinuationProblem {
   bool adaptive_;
 };
 
+// The stability_method of a point whose verdict is that of the evaluated points around it.
+inline constexpr const char* kBracketedStability = "bracketed";
+
 // One recorded point of a branch.
 struct RecordedPoint {
   double omega = 0;
@@ -56,7 +59,9 @@ struct RecordedPoint {
   double max_floquet_real = 0;        // largest real part of the Floquet exponents (1/s)
   // The Floquet exponents (1/s) and multipliers that decided `stable` (empty when not computed).
   Eigen::VectorXcd floquet_exponents, floquet_multipliers;
-  std::string stability_method;  // what decided `stable`: hill | monodromy ("" not computed)
+  // What decided `stable`: hill | monodromy | shooting, kBracketedStability (the verdict of the
+  // evaluated points around it, stability.every_point = false), "" not computed.
+  std::string stability_method;
   // The harmonics balanced (multiples of omega / subharmonic): the hK_/phaseK_ columns written.
   std::vector<int> harmonic_numbers;
   int subharmonic = 1;

@@ -68,6 +68,9 @@ struct BranchPoint {
   Eigen::VectorXd tangent;  // unit tangent in scaled coordinates, size+1 entries, lambda last
   int newton_iterations = 0;
   double step = 0;  // arc length from the previous point (scaled)
+  // False when a monitor that may skip points (BranchMonitor::may_skip_points) did not evaluate
+  // this point: its verdict is that of the evaluated points around it, which agree.
+  bool monitored = true;
 };
 
 struct SpecialPoint {
@@ -124,7 +127,20 @@ class BranchMonitor {
   virtual std::string classify(const std::string& type, const BranchPoint& p, bool located, std::string& /*decided_by*/) {
     return confirm(type, p, located) ? type : "";
   }
+  // True when the monitor is costly and may be evaluated at some points only: where its test
+  // functions, extrapolated from the last two evaluations, could change sign, where the engine's
+  // fold test is about to, and at least every kMaxSkippedPoints + 1 points. The points between
+  // two evaluated ones are passed to the observer only once both are known (monitored = false);
+  // when the two disagree (a test function's sign or the verdict), every point between them is
+  // evaluated and the change located as usual.
+  virtual bool may_skip_points() const { return false; }
+  // What the monitor concludes at p, as a number that changes wherever the conclusion does
+  // (FloquetMonitor: the number of multipliers outside the unit circle).
+  virtual int verdict(const BranchPoint& /*p*/) { return 0; }
 };
+
+// A lazy monitor (may_skip_points) is evaluated at least once every kMaxSkippedPoints + 1 points.
+inline constexpr int kMaxSkippedPoints = 4;
 
 // Solve R(u, lambda) = 0 at fixed lambda by Newton from u. Returns iterations used, -1 on failure.
 int newton_at_fixed_parameter(ContinuationProblem& problem, Eigen::VectorXd& u, double lambda, double tolerance, int max_iterations);
@@ -157,7 +173,12 @@ struct ContinuationState {
   double farthest = 0;              // farthest scaled distance from the first point (closure test)
   std::vector<double> test_values;  // special-point test functions at x (brackets the next step)
   double bp_log_det = 0;            // the BP test function's reference
-  BranchPoint first;                // the first point and its scaling (closure test)
+  // A lazy monitor's history (x is always a point it evaluated): its test functions at the
+  // evaluated point before x (empty: none), the arc length back to it, and x's verdict.
+  std::vector<double> earlier_test_values;
+  double earlier_distance = 0;
+  int monitor_verdict = 0;
+  BranchPoint first;  // the first point and its scaling (closure test)
   Eigen::VectorXd first_scale;
   double first_parameter_scale = 0;
   std::vector<SpecialPoint> special_points;  // found so far
