@@ -6,7 +6,7 @@ NFRC's plane, over an NFRC: hbtrack.overlay_figures.)
 import numpy as np
 
 from .overlay_figures import SPECIAL_MARKERS, _draw, describe, draw_overlay
-from .plots import OMEGA_LABEL, _stable_masks, length_label, parameter_label, plt
+from .figure_style import OMEGA_LABEL, _stable_masks, length_label, parameter_label, plt
 from .results import output_names
 
 

@@ -15,7 +15,7 @@ from matplotlib.lines import Line2D
 
 from .label_layout import place_labels
 from .output_descriptions import output_descriptions
-from .plots import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
+from .figure_style import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
 from .results import output_names
 from .special_points import numbered_special_points
 

@@ -9,7 +9,7 @@ import os
 
 import numpy as np
 
-from .plots import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
+from .figure_style import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
 from .results import output_names, tracking_curve
 
 # Marker of each special point type (LP, BP, PD, NS on branches; min, max of the parameter on

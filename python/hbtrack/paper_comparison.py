@@ -127,14 +127,14 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     if "MPLBACKEND" not in os.environ:
         matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from .plots import save_figure
+    from .figure_style import save_figure
 
     files = []
     nfrc = read_result(os.path.join(study_dir, "nfrc"))
     # Fig. 3: the signed inward extremes of leading and trailing edge (solid: stable, dashed:
     # unstable), limit points numbered as the tables number them (in omega order), their
     # labels placed once the layout is final where they overlap no other text (label_layout).
-    from .plots import _plot_split, _stable_masks
+    from .figure_style import _plot_split, _stable_masks
     fig, ax = plt.subplots(figsize=(6.5, 4))
     b = nfrc["branch"]
     if reversed_dir:

@@ -3,123 +3,23 @@ from hbtrack.results.read_result, and returns a matplotlib Figure; save_figure w
 and PDF. Frequencies are in rad/s; lengths in the model's own unit (the case's matrices decide
 it: metres for the blade), which the labels say unless a unit is given.
 """
-import os
+import numpy as np
 
-import matplotlib
-
-if "MPLBACKEND" not in os.environ:
-    matplotlib.use("Agg")  # figures go to files; no display needed
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-from .results import output_names, tracking_curve  # noqa: E402
-from .special_points import tracked_limit_point_label  # noqa: E402
-from .view_angle import least_hidden_view  # noqa: E402
-
-OMEGA_LABEL = r"$\omega$ [rad/s]"
-MODEL_LENGTH = "model length unit"
-# Units of the usual tracking parameters; any other named parameter is in the case's units.
-PARAMETER_UNITS = {"amplitude": "-, scales the case's forcing", "mu": "-", "clearance": MODEL_LENGTH}
-
-
-def length_label(what, unit=None):
-    """An axis label with a length unit.
-
-    Parameters
-    ----------
-    what : str
-        The quantity.
-    unit : str, optional
-        Its unit (default: "model length unit").
-
-    Returns
-    -------
-    str
-        "what [unit]".
-
-    Examples
-    --------
-    >>> length_label("max x", "m")
-    'max x [m]'
-    """
-    return f"{what} [{unit or MODEL_LENGTH}]"
-
-
-def parameter_label(name, length_unit=None):
-    """An axis label for a named parameter, with its unit.
-
-    Parameters
-    ----------
-    name : str
-        The parameter ("amplitude", "mu", "clearance", ...).
-    length_unit : str, optional
-        The model's length unit, for length parameters.
-
-    Returns
-    -------
-    str
-        "name [unit]".
-
-    Examples
-    --------
-    >>> parameter_label("clearance", "m")
-    'clearance [m]'
-    """
-    unit = PARAMETER_UNITS.get(name, "case units")
-    if unit == MODEL_LENGTH and length_unit:
-        unit = length_unit
-    return f"{name} [{unit}]"
-
-
-def save_figure(fig, path):
-    """Writes a figure as PNG and PDF.
-
-    Parameters
-    ----------
-    fig : matplotlib.figure.Figure
-        The figure.
-    path : str
-        PATH without extension; its folder is created.
-
-    Returns
-    -------
-    list of str
-        [PATH.png, PATH.pdf].
-
-    Examples
-    --------
-    >>> save_figure(nfrc_figure(nfrc), "out/nfrc")
-    ['out/nfrc.png', 'out/nfrc.pdf']
-    """
-    folder = os.path.dirname(path)
-    if folder:
-        os.makedirs(folder, exist_ok=True)
-    files = [f"{path}.png", f"{path}.pdf"]
-    fig.savefig(files[0], dpi=150)
-    fig.savefig(files[1])
-    plt.close(fig)
-    return files
-
-
-def _stable_masks(branch):
-    """(stable, unstable) point masks; every point stable when stability was not computed."""
-    stable = branch.get("stable")
-    if stable is None:
-        return np.ones(len(branch["omega"]), bool), np.zeros(len(branch["omega"]), bool)
-    return stable == 1, stable == 0
-
-
-def _plot_split(ax, x, y, stable, unstable, colour, label):
-    """Stable segments solid, unstable dashed; a segment joining a stable and an unstable point
-    is drawn dashed so that the curve stays connected."""
-    if len(x) == 1:
-        ax.plot(x, y, "o", color=colour, label=label)
-        return
-    solid = np.where(stable, y, np.nan)
-    dashed = np.where(unstable | np.roll(unstable, 1) | np.roll(unstable, -1), y, np.nan)
-    ax.plot(x, solid, "-", color=colour, lw=1.3, label=label)
-    if unstable.any():
-        ax.plot(x, dashed, "--", color=colour, lw=1.3)
+from .branch_figures import nfrc_figure as _branch_nfrc_figure
+from .figure_style import (  # noqa: F401 (the names plots has always offered)
+    MODEL_LENGTH,
+    OMEGA_LABEL,
+    PARAMETER_UNITS,
+    _plot_split,
+    _stable_masks,
+    length_label,
+    parameter_label,
+    plt,
+    save_figure,
+)
+from .results import output_names, tracking_curve
+from .special_points import tracked_limit_point_label
+from .view_angle import least_hidden_view
 
 
 def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, zoom=0.1, norm=False, descriptions=None):
@@ -153,8 +53,7 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, z
     --------
     >>> fig = nfrc_figure(hbtrack.frc(case), length_unit="m")
     """
-    from .branch_figures import nfrc_figure as figure  # branch_figures imports this module
-    return figure(result, outputs, others, length_unit, title, zoom, norm, descriptions)
+    return _branch_nfrc_figure(result, outputs, others, length_unit, title, zoom, norm, descriptions)
 
 
 def _response(columns, name, norm):

@@ -9,7 +9,7 @@ import numpy as np
 
 from .branch_figures import ZOOM_FRACTION, _fit_y_to_window, _legend, _stability_legend, norm_of, resonance_window
 from .output_descriptions import output_descriptions
-from .plots import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
+from .figure_style import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
 from .results import output_names, read_result
 
 NORM_LABEL = r"$\Vert r(t) \Vert_\infty$"

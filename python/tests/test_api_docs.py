@@ -21,7 +21,7 @@ MODULES = sorted(m.name for m in pkgutil.iter_modules(hbtrack.__path__) if not m
 # Functions whose examples need nothing but themselves: run as doctests, so that their outputs
 # are the real ones.
 SELF_CONTAINED = ["hbtrack.arrays.is_sparse", "hbtrack.arrays.as_matrix", "hbtrack.cases.toml_key", "hbtrack.cases.toml_value",
-                  "hbtrack.plots.length_label", "hbtrack.plots.parameter_label", "hbtrack.plots.harmonic_signal",
+                  "hbtrack.figure_style.length_label", "hbtrack.figure_style.parameter_label", "hbtrack.plots.harmonic_signal",
                   "hbtrack.plots.harmonic_amplitudes", "hbtrack.overlay_figures.describe",
                   "hbtrack.special_points.numbered_special_points", "hbtrack.special_points.numbered_limit_points",
                   "hbtrack.special_points.limit_point_label",
