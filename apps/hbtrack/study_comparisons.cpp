@@ -1,8 +1,10 @@
 #include "study_comparisons.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "result_folder.hpp"
+#include "study_plan.hpp"
 
 namespace hbtrack::cli {
 
@@ -92,6 +94,60 @@ json compare_with_simulation(const std::string& branch_dir, long point, const js
       cmp["outputs"].push_back({{"name", key}, {"hbm", hbm}, {"simulation", sim}, {"relative_difference", (sim - hbm) / std::abs(hbm)}});
     }
   return cmp;
+}
+
+json validation_against_crossings(const json& validation, const json& crossings, const std::string& first_output) {
+  const std::string& out = first_output;
+  json lps = json::array();
+  double worst = 0;
+  int off_the_curves = 0;
+  std::vector<bool> used(crossings.size(), false);
+  for (const auto& sp : validation.value("special_points", json::array())) {
+    if (sp.value("type", "") != "LP") continue;
+    const double omega = sp.value("omega", 0.0), output = out.empty() ? 0.0 : sp.value("max_" + out, 0.0);
+    double best = 1e300;
+    size_t best_k = crossings.size();
+    for (size_t k = 0; k < crossings.size(); ++k) {
+      const std::string status = crossings[k].value("status", "");
+      if (status != "located" && status != "duplicate") continue;
+      const double d_omega = std::abs(crossings[k].value("omega", 0.0) - omega) / std::abs(omega);
+      const double d_output =
+          out.empty() ? 0.0 : std::abs(crossings[k].value("max_" + out, 0.0) - output) / std::max(std::abs(output), 1e-300);
+      if (std::max(d_omega, d_output) < best) best = std::max(d_omega, d_output), best_k = k;
+    }
+    const bool on_curve = best <= kSameLimitPoint;
+    if (on_curve)
+      used[best_k] = true, worst = std::max(worst, best);
+    else
+      ++off_the_curves;
+    lps.push_back({{"omega", omega}, {"max_" + out, output}, {"distance", best}, {"on_a_tracking_curve", on_curve}});
+  }
+  int unseen = 0;
+  for (size_t k = 0; k < crossings.size(); ++k)
+    if (crossings[k].value("status", "") == "located" && !used[k]) ++unseen;
+  return {{"limit_points", lps},
+          {"lps_off_the_curves", off_the_curves},
+          {"largest_distance", worst},
+          {"crossings", crossings.size()},
+          {"crossings_not_on_the_nfrc", unseen}};
+}
+
+long resonance_simulation_point(const std::string& nfrc_dir, const json& limit_points, const std::string& first_output) {
+  const CsvTable b = read_csv_table(nfrc_dir + "/branch.csv");
+  const auto amplitude = static_cast<size_t>(b.column("h1_" + first_output));
+  const bool has_stability = std::find(b.header.begin(), b.header.end(), "stable") != b.header.end();
+  const auto stable = has_stability ? static_cast<size_t>(b.column("stable")) : 0;
+  auto near_a_fold = [&](double omega) {
+    for (const auto& lp : limit_points)
+      if (std::abs(omega - lp.value("omega", 0.0)) <= kSimulationDetuning * std::abs(omega)) return true;
+    return false;
+  };
+  long best = -1;
+  for (size_t i = 0; i < b.rows.size(); ++i)
+    if ((!has_stability || b.rows[i][stable] == 1.0) && !near_a_fold(b.rows[i][0]) &&
+        (best < 0 || b.rows[i][amplitude] > b.rows[static_cast<size_t>(best)][amplitude]))
+      best = static_cast<long>(i);
+  return best;
 }
 
 }  // namespace hbtrack::cli

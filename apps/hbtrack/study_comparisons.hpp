@@ -29,6 +29,22 @@ struct BranchPoint {
 std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, const nlohmann::json& tracking,
                                               const std::string& first_output);
 
+// A validation NFRC's limit points against the tracking curves' crossings located at the same
+// parameter value (`isolas --locate-only`'s "crossings"): each LP must be one of them (within
+// kSameLimitPoint, relative omega and first output); crossings it does not hold belong to
+// branches it does not reach. Its limit_points (with their distance), lps_off_the_curves,
+// largest_distance, crossings and crossings_not_on_the_nfrc.
+nlohmann::json validation_against_crossings(const nlohmann::json& validation, const nlohmann::json& crossings,
+                                            const std::string& first_output);
+
+// The resonance a user checks first: the row of DIR/branch.csv of largest first harmonic of the
+// first output among the stable ones at least kSimulationDetuning (relative omega) away from
+// every limit point; -1 when none. At a fold itself the truncated HBM's limit point may lie a
+// little beyond the full model's, and a simulation there leaves the orbit; the first harmonic,
+// not the maximum, measures the resonance when a casing caps the outward excursion.
+inline constexpr double kSimulationDetuning = 2e-3;
+long resonance_simulation_point(const std::string& nfrc_dir, const nlohmann::json& limit_points, const std::string& first_output);
+
 // Row `point` of DIR/branch.csv against a `simulate` summary: max, min, h1 of every output.
 nlohmann::json compare_with_simulation(const std::string& branch_dir, long point, const nlohmann::json& simulation,
                                        const std::vector<OutputDof>& outputs);

@@ -323,47 +323,13 @@ class Study {
     std::string tag;
   };
 
-  // Every LP of the validation NFRC must be a located crossing; crossings it does not hold
-  // belong to branches it does not reach.
   void compare(const Probe& p) {
-    const std::string out = first_output();
     const json validation = read_summary(dir_ + "/validate_" + p.tag);
-    const json crossings = read_summary(dir_ + "/crossings_" + p.tag)["crossings"];
-    json lps = json::array();
-    double worst = 0;
-    int off_the_curves = 0;
-    std::vector<bool> used(crossings.size(), false);
-    for (const auto& sp : validation.value("special_points", json::array())) {
-      if (sp.value("type", "") != "LP") continue;
-      const double omega = sp.value("omega", 0.0), output = out.empty() ? 0.0 : sp.value("max_" + out, 0.0);
-      double best = 1e300;
-      size_t best_k = crossings.size();
-      for (size_t k = 0; k < crossings.size(); ++k) {
-        const std::string status = crossings[k].value("status", "");
-        if (status != "located" && status != "duplicate") continue;
-        const double d_omega = std::abs(crossings[k].value("omega", 0.0) - omega) / std::abs(omega);
-        const double d_output =
-            out.empty() ? 0.0 : std::abs(crossings[k].value("max_" + out, 0.0) - output) / std::max(std::abs(output), 1e-300);
-        if (std::max(d_omega, d_output) < best) best = std::max(d_omega, d_output), best_k = k;
-      }
-      const bool on_curve = best <= kSameLimitPoint;
-      if (on_curve)
-        used[best_k] = true, worst = std::max(worst, best);
-      else
-        ++off_the_curves;
-      lps.push_back({{"omega", omega}, {"max_" + out, output}, {"distance", best}, {"on_a_tracking_curve", on_curve}});
-    }
-    int unseen = 0;
-    for (size_t k = 0; k < crossings.size(); ++k)
-      if (crossings[k].value("status", "") == "located" && !used[k]) ++unseen;
-    entries_[p.track->parameter]["validations"].push_back({{"value", p.value},
-                                                           {"folder", "validate_" + p.tag},
-                                                           {"stop_reason", validation.value("stop_reason", "")},
-                                                           {"limit_points", lps},
-                                                           {"lps_off_the_curves", off_the_curves},
-                                                           {"largest_distance", worst},
-                                                           {"crossings", crossings.size()},
-                                                           {"crossings_not_on_the_nfrc", unseen}});
+    json entry = validation_against_crossings(validation, read_summary(dir_ + "/crossings_" + p.tag)["crossings"], first_output());
+    entry["value"] = p.value;
+    entry["folder"] = "validate_" + p.tag;
+    entry["stop_reason"] = validation.value("stop_reason", "");
+    entries_[p.track->parameter]["validations"].push_back(entry);
   }
 
   // Limit points of the tracking curves that no NFRC from the linear solution passes announce
@@ -400,29 +366,9 @@ class Study {
     return true;
   }
 
-  // The resonance a user checks first: the stable NFRC point of largest first-harmonic amplitude
-  // of the first output, at least kSimulationDetuning (relative omega) away from every limit
-  // point. At a fold itself the truncated HBM's limit point may lie a little beyond the full
-  // model's, and a simulation there leaves the orbit; the first harmonic, not the maximum,
-  // measures the resonance when a casing caps the outward excursion.
   long simulation_point() const {
-    constexpr double kSimulationDetuning = 2e-3;
     if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return -1;
-    const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
-    const auto amplitude = static_cast<size_t>(b.column("h1_" + first_output()));
-    const bool has_stability = std::find(b.header.begin(), b.header.end(), "stable") != b.header.end();
-    const auto stable = has_stability ? static_cast<size_t>(b.column("stable")) : 0;
-    auto near_a_fold = [&](double omega) {
-      for (const auto& lp : limit_points_)
-        if (std::abs(omega - lp.value("omega", 0.0)) <= kSimulationDetuning * std::abs(omega)) return true;
-      return false;
-    };
-    long best = -1;
-    for (size_t i = 0; i < b.rows.size(); ++i)
-      if ((!has_stability || b.rows[i][stable] == 1.0) && !near_a_fold(b.rows[i][0]) &&
-          (best < 0 || b.rows[i][amplitude] > b.rows[static_cast<size_t>(best)][amplitude]))
-        best = static_cast<long>(i);
-    return best;
+    return resonance_simulation_point(dir_ + "/nfrc", limit_points_, first_output());
   }
 
   void compare_simulation(long point) {
