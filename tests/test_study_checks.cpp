@@ -49,6 +49,25 @@ TEST(StudyChecks, AValidationThatDidNotStartOrAFailedStepFailsTheStudy) {
   EXPECT_NE(failed[1].get<std::string>().find("no_convergence_at_start"), std::string::npos) << failed;
 }
 
+TEST(StudyChecks, AValidationThatLeftItsRangeIsJudgedWithItsContinuationBeyondIt) {
+  json s = passing_summary();
+  s["steps"][1]["exit_code"] = 1;
+  json& v = s["tracking"][0]["validations"][0];
+  v["stop_reason"] = "left_range";
+  // Computed again over a range widened beyond its start, to the end: nothing left uncompared.
+  v["beyond"] = {{"folder", "validate_a_1_beyond"}, {"stop_reason", "reached_end"}, {"omega_start", 600.0}};
+  EXPECT_TRUE(hbtrack::cli::failed_checks(s).empty()) << hbtrack::cli::failed_checks(s);
+  // Left the widened range too: its limit points there are not all known.
+  v["beyond"]["stop_reason"] = "left_range";
+  const json failed = hbtrack::cli::failed_checks(s);
+  ASSERT_EQ(failed.size(), 2u) << failed;
+  EXPECT_NE(failed[0].get<std::string>().find("validate_a_1: exit 1"), std::string::npos) << failed;
+  EXPECT_NE(failed[1].get<std::string>().find("left_range, and its continuation beyond the range left_range"), std::string::npos) << failed;
+  // Without a continuation, as before.
+  v.erase("beyond");
+  EXPECT_EQ(hbtrack::cli::failed_checks(s).size(), 2u);
+}
+
 TEST(StudyChecks, ANominalNfrcThatStoppedEarlyFailsTheStudy) {
   json s = passing_summary();
   s["nfrc"] = {{"stop_reason", "max_points"}, {"points", 3}};

@@ -139,6 +139,11 @@ void tracking_section(std::ostream& out, const json& s) {
       out << "| " << t["parameter"].get<std::string>() << " = " << num(v.value("value", 0.0)) << " | " << lps << " | "
           << lps - static_cast<size_t>(v.value("lps_off_the_curves", 0)) << " | " << num(v.value("largest_distance", 0.0), "%.1e") << " | "
           << v.value("crossings", 0) << " | " << v.value("crossings_not_on_the_nfrc", 0) << " | " << v.value("isolas", 0) << " |\n";
+      if (v.contains("beyond"))
+        out << "|   left its range at the start (" << v.value("stop_reason", "")
+            << "): again from omega = " << num(v["beyond"].value("omega_start", 0.0), "%.2f") << " in [" << v["beyond"].value("folder", "")
+            << "](" << v["beyond"].value("folder", "") << "/), " << v["beyond"].value("stop_reason", "")
+            << "; its limit points are the row's | | | | | | |\n";
       for (const auto& i : v.value("isola_branches", json::array()))
         out << "|   isola [" << i.value("folder", "") << "](" << i.value("folder", "") << "/) | omega " << num(i["omega_range"][0], "%.2f")
             << " to " << num(i["omega_range"][1], "%.2f") << " | " << i.value("points", 0) << " points | " << i.value("unstable_points", 0)

@@ -22,13 +22,13 @@
 #include "folder_lock.hpp"
 #include "hbtrack/results/results_writer.hpp"
 #include "hbtrack/util/stop_reason.hpp"
-#include "python_package.hpp"
 #include "result_folder.hpp"
 #include "resume_command.hpp"
 #include "step_progress.hpp"
 #include "study_branches.hpp"
 #include "study_comparisons.hpp"
 #include "study_curves.hpp"
+#include "study_figures_step.hpp"
 #include "study_checks.hpp"
 #include "study_report.hpp"
 #include "study_plan.hpp"
@@ -311,7 +311,7 @@ class Study {
                        std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods))},
                       false});
     }
-    if (!run_steps(frcs) || !run_steps(crossings)) return false;
+    if (!run_steps(frcs) || !run_steps(crossings) || !continue_validations_beyond_the_range()) return false;
     for (const Probe& p : probes_) compare(p);
     if (point >= 0) compare_simulation(point);
     return true;
@@ -323,12 +323,38 @@ class Study {
     std::string tag;
   };
 
+  // A validation NFRC that left through the start of its range (its branch turned back past
+  // omega_start) is computed again over a range widened beyond the start by one range width (at
+  // most to 5 % of it): the branch then runs through its turning point there and on, and every
+  // limit point it meets is compared.
+  bool continue_validations_beyond_the_range() {
+    const double start = c_.nfrc.omega_start, end = c_.nfrc.omega_end;
+    const double beyond = start < end ? std::max(start - (end - start), 0.05 * start) : start + (start - end);
+    std::vector<Step> steps;
+    for (const Probe& p : probes_)
+      if (read_summary(dir_ + "/validate_" + p.tag).value("stop_reason", "") == to_string(StopReason::left_range))
+        steps.push_back({"validate_" + p.tag + "_beyond",
+                         {"frc", o_.common.case_path, "--set", p.track->parameter + "=" + number_text(p.value), "--set",
+                          "continuation.omega_start=" + number_text(beyond), "--set", "stability.method=none"},
+                         false});
+    return run_steps(steps);
+  }
+
   void compare(const Probe& p) {
-    const json validation = read_summary(dir_ + "/validate_" + p.tag);
+    json validation = read_summary(dir_ + "/validate_" + p.tag);
+    json beyond;
+    if (const std::string folder = "validate_" + p.tag + "_beyond"; std::filesystem::exists(dir_ + "/" + folder + "/summary.json")) {
+      // The widened run holds the whole branch: its limit points replace the validation's.
+      const json s = read_summary(dir_ + "/" + folder);
+      validation["special_points"] = s.value("special_points", json::array());
+      beyond = {
+          {"folder", folder}, {"stop_reason", s.value("stop_reason", "")}, {"omega_start", s["options"]["continuation"]["omega_start"]}};
+    }
     json entry = validation_against_crossings(validation, read_summary(dir_ + "/crossings_" + p.tag)["crossings"], first_output());
     entry["value"] = p.value;
     entry["folder"] = "validate_" + p.tag;
     entry["stop_reason"] = validation.value("stop_reason", "");
+    if (!beyond.is_null()) entry["beyond"] = beyond;
     entries_[p.track->parameter]["validations"].push_back(entry);
   }
 
@@ -460,28 +486,8 @@ class Study {
   void figures() {
     stage_ = kFigures;
     if (!o_.common.quiet) std::fprintf(stderr, "study: stage %d of %d, %s: drawing\n", stage_ + 1, int{kStages}, kStageNames[stage_]);
-    ensure_directory(dir_ + "/figures");
     summary_["figures"] = json::array();
-    std::vector<std::string> args{dir_};
-    if (!o_.units.empty()) args.insert(args.end(), {"--units", o_.units});
-    int code = -1;
-    try {
-      code = run_child(python_module_task("hbtrack.study_figures", args, dir_ + "/figures/log.txt"));
-    } catch (const RunFailed& no_package) {
-      if (!o_.common.quiet) std::fprintf(stderr, "study: no figures: %s\n", no_package.reason.c_str());
-      return;
-    }
-    json made = json::array();
-    if (code == 0) {
-      std::vector<std::string> files;
-      for (const auto& f : std::filesystem::directory_iterator(dir_ + "/figures"))
-        if (f.path().extension() == ".png") files.push_back("figures/" + f.path().filename().string());
-      std::sort(files.begin(), files.end());
-      for (const auto& f : files) made.push_back(f);
-    } else if (!o_.common.quiet) {
-      std::fprintf(stderr, "study: no figures (exit %d, see %s/figures/log.txt)\n", code, dir_.c_str());
-    }
-    summary_["figures"] = made;
+    summary_["figures"] = draw_study_figures(dir_, o_.units, o_.common.quiet);
   }
 
   const StudyOptions& o_;
