@@ -63,6 +63,7 @@ const std::vector<Variant>& variants() {
        "exponents = [[3, 0], [1, 2]]\n"},
       {"power_damper", "power_damper", "[\"a\"]", {{"coefficient", 0.1}, {"exponent", 2.0}}, ""},
       {"elastic_dry_friction", "elastic_dry_friction", "[\"a\"]", {{"stiffness", 20.0}, {"limit_force", 1.0}}, ""},
+      {"elastic_dry_friction_2d", "elastic_dry_friction_2d", "[\"a\", \"b\"]", {{"stiffness", 20.0}, {"limit_force", 1.0}}, ""},
       {"iwan", "iwan", "[\"a\"]", {{"limit_force", 1.0}, {"stiffness", 3.0}, {"chi", -0.5}, {"beta", 0.1}}, ""},
       {"frictional_contact",
        "frictional_contact",

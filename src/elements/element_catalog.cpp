@@ -1,6 +1,7 @@
 #include "hbtrack/elements/element_catalog.hpp"
 
 #include "hbtrack/elements/elastic_dry_friction.hpp"
+#include "hbtrack/elements/elastic_dry_friction_2d.hpp"
 #include "hbtrack/elements/frictional_contact.hpp"
 #include "hbtrack/elements/iwan.hpp"
 #include "hbtrack/elements/polynomial_elements.hpp"
@@ -186,6 +187,17 @@ std::vector<ElementType> make_catalog() {
                              {stiffness("stiffness", "stiffness of the spring in series with the slider"),
                               {"limit_force", "F", Range::nonnegative, {}, "slip force of the slider"}}};
        }},
+      {"elastic_dry_friction_2d",
+       "Jenkins element slipping in a plane: a spring in series with a Coulomb slider of radial return",
+       true,
+       {},
+       {},
+       [](const ElementSetup&) {
+         return ElementBuild{std::make_shared<ElasticDryFriction2D>(),
+                             {stiffness("stiffness", "stiffness of the spring in series with the slider"),
+                              {"limit_force", "F", Range::nonnegative, {}, "slip force of the slider (mu N)"}}};
+       },
+       2},
       {"frictional_contact",
        "normal contact with a Jenkins slider of limit mu N(t) on the tangential dof",
        false,
