@@ -106,8 +106,8 @@ TEST(ElasticDryFriction2D, CircularOrbitSlidesWithTheClosedFormLagAndMagnitude) 
         magnitude = std::max(magnitude, std::abs(out.force.row(t).norm() - kLimit));
       }
       const double lead = std::arg(g), series = alpha - delta / 2 + s * delta * delta / (8 * std::sqrt(1 - s * s));
-      std::printf("[ measured ] s %.1f N %4d: force vs sampled closed form %.1e, |T| - F %.1e, lead - arccos(s) %.3e (-pi/N %.3e)\n", s,
-                  n, worst / kLimit, magnitude / kLimit, lead - alpha, -delta / 2);
+      std::printf("[ measured ] s %.1f N %4d: force vs sampled closed form %.1e, |T| - F %.1e, lead - arccos(s) %.3e (-pi/N %.3e)\n", s, n,
+                  worst / kLimit, magnitude / kLimit, lead - alpha, -delta / 2);
       EXPECT_LT(worst, 1e-12 * kLimit) << "s " << s << " N " << n;
       EXPECT_LT(magnitude, 1e-12 * kLimit) << "s " << s << " N " << n;
       EXPECT_NEAR(std::abs(g), 1.0, 1e-12);

@@ -44,7 +44,8 @@ TEST(PlanarJenkinsNfrc, HbmOrbitsAreTheTimeIntegratorsSteadyStates) {
     const FixedFrequencySolution s = solve_at_frequency(hbm, omega, c.outputs, 1e-11, 100);
     ASSERT_TRUE(s.converged) << "omega " << omega;
     const double worst = test::deviation_from_time_integration(c, hbm, s.x, omega, h, samples);
-    std::printf("[ measured ] omega %.2f: largest deviation of Newmark's steady state from the HBM orbit %.2e of the range\n", omega, worst);
+    std::printf("[ measured ] omega %.2f: largest deviation of Newmark's steady state from the HBM orbit %.2e of the range\n", omega,
+                worst);
     EXPECT_LT(worst, 1e-4) << "omega " << omega;
   }
 }
@@ -64,8 +65,8 @@ TEST(PlanarJenkinsNfrc, SampledLawConvergesAsOneOverTheSamples) {
     }
     std::vector<double> change;
     for (size_t i = 1; i < solutions.size(); ++i) change.push_back((solutions[i] - solutions[i - 1]).norm() / solutions.back().norm());
-    std::printf("[ measured ] omega %.2f: relative change of the harmonics 256 -> 512 %.2e, -> 1024 %.2e, -> 2048 %.2e\n", omega,
-                change[0], change[1], change[2]);
+    std::printf("[ measured ] omega %.2f: relative change of the harmonics 256 -> 512 %.2e, -> 1024 %.2e, -> 2048 %.2e\n", omega, change[0],
+                change[1], change[2]);
     for (size_t i = 1; i < change.size(); ++i) {
       EXPECT_GT(change[i - 1] / change[i], 1.6) << "omega " << omega;
       EXPECT_LT(change[i - 1] / change[i], 2.5) << "omega " << omega;

@@ -16,8 +16,8 @@ namespace hbtrack::test {
 
 // The largest deviation, relative to the orbit's range, between Newmark's last period started
 // on the HBM orbit and that orbit, over the case's outputs.
-inline double deviation_from_time_integration(const CaseDefinition& c, HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, int harmonics,
-                                       int steps) {
+inline double deviation_from_time_integration(const CaseDefinition& c, HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega,
+                                              int harmonics, int steps) {
   const int n = c.model.dofs();
   const Eigen::VectorXd full = hbm.expand(x, omega);
   EquationOfMotion eom(c.model, c.elements, hbm.parameters(), omega);

@@ -32,7 +32,9 @@ class ElasticDryFriction2D final : public NonlinearElement {
   void history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
                     const std::vector<double>& property_values, HistoryStep& out) const override;
   Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& property_values) const override;
-  std::string configuration() const override { return "weights=" + exact_text(weights.row(0).transpose()) + ";" + exact_text(weights.row(1).transpose()); }
+  std::string configuration() const override {
+    return "weights=" + exact_text(weights.row(0).transpose()) + ";" + exact_text(weights.row(1).transpose());
+  }
 
   // u = weights x_local (2 x k). Default: the identity on two dofs [x, y] (grounded), and
   // [[1, 0, -1, 0], [0, 1, 0, -1]] on four [x_a, y_a, x_b, y_b] (between two nodes).
