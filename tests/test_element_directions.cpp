@@ -63,8 +63,9 @@ fs::path write_case(const MatrixXd& t, const std::string& name) {
   element("elastic_dry_friction", Eigen::Vector3d(0.6, 0.8, -1.0), "stiffness = 3.0\nlimit_force = 0.05\n");
   element("unilateral_spring", Eigen::Vector3d(-0.8, 0.6, 0.0), "stiffness = 4.0\ngap = 0.05\n");
   element("power_damper", Eigen::Vector3d(0.6, 0.8, -1.0), "coefficient = 0.05\n");
-  text += "[harmonic_balance]\nharmonics = 5\nsamples = 128\ncondensation = \"none\"\n"
-          "[continuation]\nomega_start = 0.5\nomega_end = 2.0\n[stability]\nmethod = \"none\"\n";
+  text +=
+      "[harmonic_balance]\nharmonics = 5\nsamples = 128\ncondensation = \"none\"\n"
+      "[continuation]\nomega_start = 0.5\nomega_end = 2.0\n[stability]\nmethod = \"none\"\n";
   const fs::path dir = fs::temp_directory_path() / ("hbtrack_directions_" + std::to_string(getpid()));
   fs::create_directories(dir);
   const fs::path path = dir / (name + ".toml");
@@ -97,7 +98,8 @@ TEST(ElementDirections, ATurnedFrameIsTheSameProblem) {
   const MatrixXd p = on_every_harmonic(t, a.unknowns());
   // A motion in stick-slip and in and out of contact: amplitudes near 0.1.
   VectorXd x = VectorXd::Zero(a.unknowns());
-  for (Eigen::Index i = 0; i < x.size(); ++i) x(i) = 0.15 * std::cos(1.7 * static_cast<double>(i) + 0.4) / (1.0 + static_cast<double>(i / 6));
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    x(i) = 0.15 * std::cos(1.7 * static_cast<double>(i) + 0.4) / (1.0 + static_cast<double>(i / 6));
   for (double omega : {0.8, 1.3}) {
     VectorXd ra, rb;
     MatrixXd ja, jb;
