@@ -70,6 +70,8 @@ TEST(ModelFingerprint, EachElementsOwnStateIsPartOfIt) {
        [](bool e) { return std::make_shared<FrictionalContact>(e ? ContactFormulation::dlft : ContactFormulation::penalty); }, 2},
       {"planar slider's second direction", [](bool e) { return planar(e ? 0.1 : 0.0); }, 2},
       {"planar slider's last bit", [](bool e) { return planar(e ? std::nextafter(0.0, 1.0) : 0.0); }, 2},
+      {"frictional contact in two directions",
+       [](bool e) { return std::make_shared<FrictionalContact>(ContactFormulation::penalty, e ? 2 : 1); }, 3},
       {"polynomial exponents", [](bool e) { return std::make_shared<PolynomialStiffness>(Eigen::MatrixXi::Constant(1, 1, e ? 2 : 3)); }},
   };
   for (const Variant& v : variants) {

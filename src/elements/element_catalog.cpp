@@ -212,6 +212,18 @@ std::vector<ElementType> make_catalog() {
          "",
          "penalty contact and slider, or dlft (rigid contact and stick, Lagrange multipliers)"}},
        frictional_contact},
+      {"frictional_contact_2d",
+       "normal contact with a Jenkins slider of limit mu N(t) slipping in the tangential plane",
+       false,
+       {"normal", "tangential_1", "tangential_2"},
+       {},
+       [](const ElementSetup&) {
+         return ElementBuild{std::make_shared<FrictionalContact>(ContactFormulation::penalty, 2),
+                             {stiffness("normal_stiffness", "normal penalty stiffness k_n"),
+                              stiffness("tangential_stiffness", "stiffness k_t of the Jenkins slider"),
+                              mu(),
+                              {"normal_preload", "F", Range::any, 0.0, "normal force at x_n = 0: N = max(0, preload + k_n x_n)"}}};
+       }},
       {"iwan",
        "Segalman's four-parameter Iwan joint: parallel Jenkins sliders with a power-law density",
        true,
