@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <vector>
 
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/io/case_file.hpp"
@@ -52,25 +53,28 @@ TEST(PlanarJenkinsNfrc, HbmOrbitsAreTheTimeIntegratorsSteadyStates) {
 
 TEST(PlanarJenkinsNfrc, SampledLawConvergesAsOneOverTheSamples) {
   // The radial return lags the continuous slider by half a sample, so the solution moves by
-  // O(1/N) as N grows: successive differences of the first harmonics halve as N doubles.
-  const int h = 7;
-  for (double omega : {0.97, 1.2}) {
-    std::vector<VectorXd> solutions;
-    for (int samples : {256, 512, 1024, 2048}) {
-      CaseDefinition c = example(h, samples);
-      HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
-      const FixedFrequencySolution s = solve_at_frequency(hbm, omega, c.outputs, 1e-12, 100);
-      ASSERT_TRUE(s.converged) << "omega " << omega << " N " << samples;
-      solutions.push_back(s.x);
-    }
-    std::vector<double> change;
-    for (size_t i = 1; i < solutions.size(); ++i) change.push_back((solutions[i] - solutions[i - 1]).norm() / solutions.back().norm());
-    std::printf("[ measured ] omega %.2f: relative change of the harmonics 256 -> 512 %.2e, -> 1024 %.2e, -> 2048 %.2e\n", omega, change[0],
-                change[1], change[2]);
-    for (size_t i = 1; i < change.size(); ++i) {
-      EXPECT_GT(change[i - 1] / change[i], 1.6) << "omega " << omega;
-      EXPECT_LT(change[i - 1] / change[i], 2.5) << "omega " << omega;
-    }
+  // O(1/N) as N grows: successive differences of the harmonics halve as N doubles (measured at
+  // omega = 1.2: 4.95e-3, 2.48e-3, 1.24e-3 of their norm from 256 to 512, 1024, 2048; at 0.97,
+  // 9.9e-4, 5.0e-4, 2.5e-4). Under the sanitizers (a minute) up to 1024 only.
+  const std::vector<int> samples = test::kSanitizedBuild ? std::vector<int>{256, 512, 1024} : std::vector<int>{256, 512, 1024, 2048};
+  const double omega = 1.2;
+  std::vector<VectorXd> solutions;
+  for (int n : samples) {
+    CaseDefinition c = example(7, n);
+    HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+    const FixedFrequencySolution s = solve_at_frequency(hbm, omega, c.outputs, 1e-12, 100);
+    ASSERT_TRUE(s.converged) << "N " << n;
+    solutions.push_back(s.x);
+  }
+  std::vector<double> change;
+  for (size_t i = 1; i < solutions.size(); ++i) {
+    change.push_back((solutions[i] - solutions[i - 1]).norm() / solutions.back().norm());
+    std::printf("[ measured ] omega %.2f: relative change of the harmonics from N = %d to %d: %.2e\n", omega, samples[i - 1], samples[i],
+                change.back());
+  }
+  for (size_t i = 1; i < change.size(); ++i) {
+    EXPECT_GT(change[i - 1] / change[i], 1.6) << "N " << samples[i];
+    EXPECT_LT(change[i - 1] / change[i], 2.5) << "N " << samples[i];
   }
 }
 
