@@ -315,4 +315,33 @@ TEST(CaseFile, BadForcingGrowthOrBaseMotionGivesOneLineErrorsNamingTheField) {
   expect_one_line_errors(cases);
 }
 
+TEST(CaseFile, BadDirectionsGiveOneLineErrorsNamingTheField) {
+  // Elements along a direction over several dofs (`weights`) and the planar slider's two rows.
+  const auto scalar = [](const std::string& keys) {
+    return variant("", "[[elements]]\ntype = \"cubic_spring\"\ncubic_stiffness = 1.0\n" + keys);
+  };
+  const auto planar = [](const std::string& keys) { return variant("", "[[elements]]\ntype = \"elastic_dry_friction_2d\"\n" + keys); };
+  const std::vector<BadCase> cases = {
+      {"direction_wrong_count", scalar("dofs = [\"a\", \"b\"]\nweights = [0.6, 0.8, -1.0]"),
+       "elements[1].weights: expected one weight per dof (2)"},
+      {"direction_zero", scalar("dofs = [\"a\", \"b\"]\nweights = [0.0, 0.0]"), "elements[1].weights: must not all be zero"},
+      {"direction_unknown_dof", scalar("dofs = [\"a\", \"c\"]\nweights = [0.6, 0.8]"), "elements[1].dofs[1]: unknown dof 'c'"},
+      {"planar_one_row", planar("stiffness = 5.0\nlimit_force = 0.1\ndofs = [\"a\", \"b\"]\nweights = [1.0, 0.0]"),
+       "elements[1].weights: expected two rows"},
+      {"planar_row_length", planar("stiffness = 5.0\nlimit_force = 0.1\ndofs = [\"a\", \"b\"]\nweights = [[1.0, 0.0], [0.0, 1.0, 0.0]]"),
+       "elements[1].weights[1]: expected one weight per dof (2)"},
+      {"planar_zero_row", planar("stiffness = 5.0\nlimit_force = 0.1\ndofs = [\"a\", \"b\"]\nweights = [[1.0, 0.0], [0.0, 0.0]]"),
+       "elements[1].weights[1]: must not all be zero"},
+      {"planar_parallel_rows", planar("stiffness = 5.0\nlimit_force = 0.1\ndofs = [\"a\", \"b\"]\nweights = [[1.0, 2.0], [-0.5, -1.0]]"),
+       "elements[1].weights: the two rows must not be parallel"},
+      {"planar_one_dof", planar("stiffness = 5.0\nlimit_force = 0.1\ndofs = [\"a\"]"),
+       "elements[1].weights: required unless the dofs are [x, y] (2)"},
+      {"planar_negative_stiffness", planar("stiffness = -5.0\nlimit_force = 0.1\ndofs = [\"a\", \"b\"]"),
+       "elements[1].stiffness: must be > 0"},
+      {"planar_negative_limit", planar("stiffness = 5.0\nlimit_force = -0.1\ndofs = [\"a\", \"b\"]"), "elements[1].limit_force"},
+      {"planar_unknown_dof", planar("stiffness = 5.0\nlimit_force = 0.1\ndofs = [\"a\", \"bb\"]"), "elements[1].dofs[1]: unknown dof 'bb'"},
+  };
+  expect_one_line_errors(cases);
+}
+
 }  // namespace hbtrack_tests::file_case_file

@@ -40,9 +40,9 @@ std::string write_case(const ElementType& type, const ElementSetup& setup,
       "[model]\ndofs = [\"a\", \"b\", \"c\"]\nM = {diagonal = [1.0, 1.0, 1.0]}\n"
       "K = [[2.0, -1.0, 0.0], [-1.0, 1.0, 0.0], [0.0, 0.0, 1.0]]\n[[forcing]]\ndof = \"a\"\ncos = 0.1\n";
   text += "[[elements]]\ntype = \"" + type.type + "\"\n";
-  text += type.dof_names.size() == 3   ? "dofs = [\"a\", \"b\", \"c\"]\n"
-          : type.dof_names.size() == 2 ? "dofs = [\"a\", \"b\"]\n"
-                                       : "dofs = [\"a\"]\n";
+  text += type.dof_names.size() == 3                           ? "dofs = [\"a\", \"b\", \"c\"]\n"
+          : type.dof_names.size() == 2 || type.directions == 2 ? "dofs = [\"a\", \"b\"]\n"
+                                                               : "dofs = [\"a\"]\n";
   for (const auto& [key, value] : setup.choices) text += key + " = \"" + value + "\"\n";
   for (const auto& [name, value] : properties) text += name + " = " + value + "\n";
   text += "[continuation]\nomega_start = 0.5\nomega_end = 1.5\n[stability]\nmethod = \"none\"\n";

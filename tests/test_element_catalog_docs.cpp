@@ -32,7 +32,7 @@ std::map<std::string, std::vector<DocumentedKey>> documented_elements() {
   std::map<std::string, std::vector<DocumentedKey>> out;
   std::string line;
   bool in_section = false;
-  const std::regex row(R"(^\| `([a-z_]+)` \|[^|]*\| (.*?) \|)");
+  const std::regex row(R"(^\| `([a-z0-9_]+)` \|[^|]*\| (.*?) \|)");
   const std::regex entry(R"(`([A-Za-z_]+)`(?: \[([^\]]*)\])?(?: \(([^)]*)\))?)");
   while (std::getline(in, line)) {
     if (line.rfind("## ", 0) == 0) in_section = line.find("`[[elements]]`") != std::string::npos;

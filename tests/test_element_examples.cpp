@@ -32,6 +32,7 @@ TEST_P(ElementExample, NfrcReachesTheEndOfItsRange) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, ElementExample,
                          testing::Values("polynomial_and_power_damper.toml", "frictional_contact.toml", "iwan_joint.toml",
+                                         "planar_jenkins.toml", "element_directions.toml", "frictional_contact_2d.toml",
                                          "tip_stick_slip.toml"),
                          [](const testing::TestParamInfo<const char*>& param) {
                            std::string name = param.param;

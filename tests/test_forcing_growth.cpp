@@ -13,6 +13,7 @@
 #include "hbtrack/timeint/newmark_integrator.hpp"
 #include "hbtrack/timeint/steady_state.hpp"
 #include "test_support.hpp"
+#include "time_integration_support.hpp"
 
 // File-local names in a namespace of this file's own: unity builds compile several test files
 // as one.
@@ -98,32 +99,6 @@ TEST(ForcingGrowth, LinearResponseIsTheClosedFormFrfTimesTheGrowth) {
   }
 }
 
-// The largest deviation, relative to the orbit's range, between Newmark's last period started
-// on the HBM orbit and that orbit, over the case's outputs.
-double deviation_from_time_integration(const CaseDefinition& c, HarmonicBalance& hbm, const VectorXd& x, double omega, int harmonics,
-                                       int steps) {
-  const int n = c.model.dofs();
-  const VectorXd full = hbm.expand(x, omega);
-  EquationOfMotion eom(c.model, c.elements, hbm.parameters(), omega);
-  MotionState start = state_from_harmonics(full, n, harmonics, omega);
-  start.history = eom.periodic_history(period_samples(full, n, harmonics, hbm.basis().samples()));
-  NewmarkOptions options;
-  options.steps_per_period = steps;
-  NewmarkIntegrator integrator(eom, options);
-  SteadyStateOptions steady;
-  steady.harmonics = harmonics;
-  const SteadyStateResult r = integrate_to_steady_state(integrator, start, c.outputs, steady);
-  EXPECT_TRUE(r.converged) << "omega " << omega << ": " << to_string(r.stop_reason);
-  const MatrixXd orbit = period_samples(full, n, harmonics, steps);
-  double worst = 0;
-  for (size_t o = 0; o < c.outputs.size(); ++o) {
-    const VectorXd expected = orbit.col(c.outputs[o].dof);
-    worst = std::max(worst, (r.signals.col(static_cast<Eigen::Index>(o)) - expected).cwiseAbs().maxCoeff() /
-                                (expected.maxCoeff() - expected.minCoeff()));
-  }
-  return worst;
-}
-
 // The HBM orbit at H harmonics sampled at `steps` instants of a period, and its solution.
 struct Orbit {
   VectorXd x;
@@ -170,7 +145,7 @@ TEST(ForcingGrowth, UnbalancedDiscWithJenkinsSupportsMatchesTimeIntegration) {
     VectorXd force;
     EquationOfMotion(c.model, c.elements, c.parameters, omega).external_force(0.0, force);
     EXPECT_NEAR(force(0), 0.02 * omega * omega, 1e-15);
-    const double deviation = deviation_from_time_integration(c, hbm, solution, omega, kHarmonics, kSteps);
+    const double deviation = test::deviation_from_time_integration(c, hbm, solution, omega, kHarmonics, kSteps);
     std::printf("[ measured ] omega %.2f: H = 21 truncation %.2e, deviation from Newmark %.2e of the range\n", omega, truncation,
                 deviation);
     EXPECT_LT(deviation, truncation + 1e-4) << "omega " << omega;

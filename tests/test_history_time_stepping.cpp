@@ -42,7 +42,7 @@ std::shared_ptr<Element> with_properties(std::shared_ptr<Element> e, std::vector
 
 // Three dofs: a Jenkins element on x1, an Iwan joint between x2 and x1, a frictional contact
 // [normal x3, tangential x2], a stick-slip tip contact [radial x3, theta x2, z x1] on a turning
-// casing.
+// casing, a frictional contact in two directions [normal x3, tangential x1, x2].
 ElementList history_elements() {
   auto jenkins = std::make_shared<ElasticDryFriction>();
   jenkins->weights = VectorXd::Ones(1);
@@ -51,7 +51,8 @@ ElementList history_elements() {
   return {with_properties(jenkins, {0}, {20.0, 1.0}), with_properties(iwan, {1, 0}, {1.0, 30.0, -0.4, 0.5}),
           with_properties(std::make_shared<FrictionalContact>(), {2, 1}, {5.0, 20.0, 0.4, 1.0}),
           with_properties(std::make_shared<TipContact>(ContactLawKind::polynomial, TipFriction::stick_slip), {2, 1, 0},
-                          {5.0, 0.05, 0.2, 0.3, 0.2, 1.0, 0.0, 15.0})};
+                          {5.0, 0.05, 0.2, 0.3, 0.2, 1.0, 0.0, 15.0}),
+          with_properties(std::make_shared<FrictionalContact>(ContactFormulation::penalty, 2), {2, 0, 1}, {5.0, 20.0, 0.4, 1.0})};
 }
 
 }  // namespace
@@ -61,7 +62,7 @@ TEST(HistoryTimeStepping, TangentsWithCommittedStatesMatchFiniteDifferences) {
   // are exact up to round-off / h (~1e-9 relative) away from a stick/slip boundary, which these
   // states keep further than h from.
   EquationOfMotion eom(test::chain_between_walls(3, 1), history_elements(), ParameterSet(), 1.0);
-  ASSERT_EQ(eom.history_size(), 1 + 9 + 1 + 2);
+  ASSERT_EQ(eom.history_size(), 1 + 9 + 1 + 2 + 2);
   const VectorXd v = VectorXd::Zero(3);
   struct Case {
     const char* name;

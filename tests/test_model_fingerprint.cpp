@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/elements/elastic_dry_friction_2d.hpp"
 #include "hbtrack/elements/frictional_contact.hpp"
 #include "hbtrack/elements/iwan.hpp"
 #include "hbtrack/elements/polynomial_elements.hpp"
@@ -38,6 +39,13 @@ std::shared_ptr<NonlinearElement> weighted(std::shared_ptr<ScalarElement> elemen
   return element;
 }
 
+// A planar slider on two dofs whose second direction is (sin a, cos a).
+std::shared_ptr<NonlinearElement> planar(double a) {
+  auto element = std::make_shared<ElasticDryFriction2D>();
+  element->weights = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, std::sin(a), std::cos(a)).finished();
+  return element;
+}
+
 }  // namespace
 
 TEST(ModelFingerprint, EachElementsOwnStateIsPartOfIt) {
@@ -60,6 +68,10 @@ TEST(ModelFingerprint, EachElementsOwnStateIsPartOfIt) {
        3},
       {"frictional contact formulation",
        [](bool e) { return std::make_shared<FrictionalContact>(e ? ContactFormulation::dlft : ContactFormulation::penalty); }, 2},
+      {"planar slider's second direction", [](bool e) { return planar(e ? 0.1 : 0.0); }, 2},
+      {"planar slider's last bit", [](bool e) { return planar(e ? std::nextafter(0.0, 1.0) : 0.0); }, 2},
+      {"frictional contact in two directions",
+       [](bool e) { return std::make_shared<FrictionalContact>(ContactFormulation::penalty, e ? 2 : 1); }, 3},
       {"polynomial exponents", [](bool e) { return std::make_shared<PolynomialStiffness>(Eigen::MatrixXi::Constant(1, 1, e ? 2 : 3)); }},
   };
   for (const Variant& v : variants) {

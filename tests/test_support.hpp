@@ -124,6 +124,25 @@ inline Eigen::MatrixXd property_difference(const NonlinearElement& e, const Eige
   return (rp.force - rm.force) / (2 * h);
 }
 
+// Central differences of a history element's forces over a period with respect to each sample
+// of each dof, in the layout of history_sensitivity_matrix: entry (t + N i, s + N j) is
+// d f_i(t) / d x_j(s), with step h.
+inline Eigen::MatrixXd history_difference(const NonlinearElement& e, const Eigen::MatrixXd& x, const std::vector<double>& props, double h) {
+  const Eigen::Index n = x.rows(), k = x.cols();
+  Eigen::MatrixXd fd(n * k, n * k);
+  for (Eigen::Index j = 0; j < k; ++j)
+    for (Eigen::Index s = 0; s < n; ++s) {
+      Eigen::MatrixXd xp = x, xm = x;
+      xp(s, j) += h, xm(s, j) -= h;
+      ElementResponse rp, rm;
+      e.evaluate(xp, xp, 1.0, props, rp, false);
+      e.evaluate(xm, xm, 1.0, props, rm, false);
+      const Eigen::MatrixXd column = (rp.force - rm.force) / (2 * h);
+      for (Eigen::Index i = 0; i < k; ++i) fd.block(i * n, j * n + s, n, 1) = column.col(i);
+    }
+  return fd;
+}
+
 // A 9-dof model: a 3-dof tip node [r, t, z] in contact with a casing (polynomial law, Lanczos,
 // friction), a cubic spring between dofs 3 and 4, tanh friction on dof 5, and three linear dofs
 // (6-8) that condensation eliminates.

@@ -73,6 +73,9 @@ def key_doc(name, key):
 
 
 def dofs_doc(info):
+    if info["weighted"] and info.get("directions", 1) == 2:
+        return ("The slider's plane is u = W x of these dofs (two [x, y]: grounded, four "
+                "[x_a, y_a, x_b, y_b]: between two nodes, other counts: give `weights`).")
     if info["weighted"]:
         return ("The element acts along d = w.x of these dofs (one: grounded, two: between them, "
                 "more: give `weights`).")
@@ -99,7 +102,12 @@ def make_helper(type_name, info):
         docs += [f"{name} : {BINDING}" + ("" if required else ", optional")] + ["    " + x for x in lines]
     if info["weighted"]:
         optional.append(inspect.Parameter("weights", KEYWORD, default=None))
-        docs += ["weights : sequence of float, optional", "    w of d = w.x; default [1] on one dof, [1, -1] on two."]
+        if info.get("directions", 1) == 2:
+            docs += ["weights : sequence of two sequences of float, optional",
+                     "    The rows of W in u = W x, one per direction of the plane; default the identity on",
+                     "    two dofs, [[1, 0, -1, 0], [0, 1, 0, -1]] on four."]
+        else:
+            docs += ["weights : sequence of float, optional", "    w of d = w.x; default [1] on one dof, [1, -1] on two."]
     optional.append(inspect.Parameter("lanczos", KEYWORD, default=None))
     docs += ["lanczos : float, optional", "    Lanczos sigma exponent p in [0, 10] for the force harmonics; default 0 (off)."]
     signature = inspect.Signature(parameters + optional)
@@ -128,7 +136,7 @@ def make_helper(type_name, info):
         "    The ``[[elements]]`` table, as ``case_from_arrays(elements=[...])`` takes it.", "",
         "Examples", "--------",
         f">>> hbtrack.elements.{type_name}(" + ", ".join(
-            [repr(["x", "y", "z"][:max(1, len(info["dofs"]))])] + [f"{p.name}=..." for p in parameters[1:]]) + ")",
+            [repr(["x", "y", "z"][:max(1, len(info["dofs"]), info.get("directions", 1))])] + [f"{p.name}=..." for p in parameters[1:]]) + ")",
     ])
     return helper
 

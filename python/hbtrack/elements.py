@@ -37,7 +37,8 @@ def element_types():
     -------
     dict
         {type: {"summary": the force law in one line, "dofs": the names of the dofs it takes
-        ([] for any number), "weighted": whether it acts along d = w.x (`weights`), "keys":
+        ([] for any number), "weighted": whether it acts along d = w.x (`weights`), "directions": the rows of
+        `weights` of a weighted type (2: a slider in the plane u = W x), "keys":
         {name: {"kind", "values" or "range", "default", "doc"}} (the keys that decide how it is
         built: law, friction, sliders, ...), "variants": [{"choices": {key: value},
         "properties": {name: {"unit", "range", "default", "doc"}}}]}}. Units are the model's:

@@ -151,7 +151,7 @@ py::dict property_dict(const PropertySpec& p) {
   return out;
 }
 
-// {type: {summary, dofs, weighted, keys, variants: [{choices, properties}]}} from the catalogue.
+// {type: {summary, dofs, weighted, directions, keys, variants: [{choices, properties}]}} from the catalogue.
 py::dict element_types() {
   py::dict out;
   for (const ElementType& type : element_catalog()) {
@@ -159,6 +159,7 @@ py::dict element_types() {
     t["summary"] = type.summary;
     t["dofs"] = type.dof_names;
     t["weighted"] = type.weighted;
+    t["directions"] = type.directions;
     for (const ElementKey& key : type.keys) keys[py::str(key.name)] = key_dict(key);
     t["keys"] = keys;
     py::list variants;
@@ -179,7 +180,7 @@ py::dict element_types() {
 
 void bind_elements(py::module_& m) {
   m.def("element_types", &element_types,
-        "The element catalogue: {type: {summary, dofs, weighted, keys, variants: [{choices, properties}]}} "
+        "The element catalogue: {type: {summary, dofs, weighted, directions, keys, variants: [{choices, properties}]}} "
         "(see hbtrack.element_types)");
   m.def(
       "add_python_element",

@@ -1,6 +1,7 @@
 #include "hbtrack/elements/element_catalog.hpp"
 
 #include "hbtrack/elements/elastic_dry_friction.hpp"
+#include "hbtrack/elements/elastic_dry_friction_2d.hpp"
 #include "hbtrack/elements/frictional_contact.hpp"
 #include "hbtrack/elements/iwan.hpp"
 #include "hbtrack/elements/polynomial_elements.hpp"
@@ -186,6 +187,17 @@ std::vector<ElementType> make_catalog() {
                              {stiffness("stiffness", "stiffness of the spring in series with the slider"),
                               {"limit_force", "F", Range::nonnegative, {}, "slip force of the slider"}}};
        }},
+      {"elastic_dry_friction_2d",
+       "Jenkins element slipping in a plane: a spring in series with a Coulomb slider of radial return",
+       true,
+       {},
+       {},
+       [](const ElementSetup&) {
+         return ElementBuild{std::make_shared<ElasticDryFriction2D>(),
+                             {stiffness("stiffness", "stiffness of the spring in series with the slider"),
+                              {"limit_force", "F", Range::nonnegative, {}, "slip force of the slider (mu N)"}}};
+       },
+       2},
       {"frictional_contact",
        "normal contact with a Jenkins slider of limit mu N(t) on the tangential dof",
        false,
@@ -200,6 +212,18 @@ std::vector<ElementType> make_catalog() {
          "",
          "penalty contact and slider, or dlft (rigid contact and stick, Lagrange multipliers)"}},
        frictional_contact},
+      {"frictional_contact_2d",
+       "normal contact with a Jenkins slider of limit mu N(t) slipping in the tangential plane",
+       false,
+       {"normal", "tangential_1", "tangential_2"},
+       {},
+       [](const ElementSetup&) {
+         return ElementBuild{std::make_shared<FrictionalContact>(ContactFormulation::penalty, 2),
+                             {stiffness("normal_stiffness", "normal penalty stiffness k_n"),
+                              stiffness("tangential_stiffness", "stiffness k_t of the Jenkins slider"),
+                              mu(),
+                              {"normal_preload", "F", Range::any, 0.0, "normal force at x_n = 0: N = max(0, preload + k_n x_n)"}}};
+       }},
       {"iwan",
        "Segalman's four-parameter Iwan joint: parallel Jenkins sliders with a power-law density",
        true,

@@ -24,6 +24,11 @@ NormalLoad normal_load(const std::vector<double>& props, double xn) {
 
 }  // namespace
 
+FrictionalContact::FrictionalContact(ContactFormulation law, int directions) : law_(law), directions_(directions) {
+  if (directions != 1 && directions != 2) throw std::invalid_argument("frictional_contact: 1 or 2 tangential directions");
+  if (directions == 2 && law == ContactFormulation::dlft) throw std::invalid_argument("frictional_contact_2d: the penalty law only");
+}
+
 ContactFormulation parse_contact_formulation(const std::string& name) {
   if (name == "penalty") return ContactFormulation::penalty;
   if (name == "dlft") return ContactFormulation::dlft;
@@ -37,13 +42,15 @@ const std::vector<std::string>& FrictionalContact::property_names() const {
 }
 
 std::optional<FrictionCoupling> FrictionalContact::friction_coupling(const std::vector<double>& props, double /*omega*/) const {
+  if (directions_ == 2) return std::nullopt;  // the loop gain's coupling has one tangential direction
   if (law_ == ContactFormulation::dlft) return FrictionCoupling{0, 1, props[0], 0.0, 0};  // properties mu, epsilon, gap
   return FrictionCoupling{0, 1, props[kMu], props[kNormalStiffness], 0};
 }
 
 void FrictionalContact::evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& /*v*/, double /*omega*/, const std::vector<double>& props,
                                  ElementResponse& out, bool want_property_derivatives) const {
-  if (local_dofs() != 2 || x.cols() != 2) throw std::invalid_argument("frictional_contact: needs 2 dofs [normal, tangential]");
+  if (local_dofs() != 1 + directions_ || x.cols() != 1 + directions_)
+    throw std::invalid_argument(type() + ": needs " + std::to_string(1 + directions_) + " dofs [normal, tangential...]");
   if (law_ == ContactFormulation::dlft) throw std::logic_error("frictional_contact with law = \"dlft\" needs the linear residual");
   penalty_contact_period(x, props, out, want_property_derivatives);
 }
@@ -52,18 +59,19 @@ void penalty_contact_period(const Eigen::MatrixXd& x, const std::vector<double>&
                             bool want_property_derivatives) {
   out.residual_operator.reset();
   const Eigen::Index n = x.rows();
+  const int d = static_cast<int>(x.cols()) - 1;  // tangential directions
   Eigen::VectorXd normal(n), slope(n);
   for (Eigen::Index t = 0; t < n; ++t) {
     const NormalLoad load = normal_load(props, x(t, 0));
     normal(t) = load.force;
     slope(t) = load.slope;
   }
-  CoulombSlider slider(1, props[kTangentialStiffness], props[kMu]);
-  slider.solve_period(normal, x.col(1), Eigen::VectorXd::Zero(1));
+  CoulombSlider slider(d, props[kTangentialStiffness], props[kMu]);
+  slider.solve_period(normal, x.rightCols(d), Eigen::VectorXd::Zero(d));
 
-  out.force.resize(n, 2);
+  out.force.resize(n, 1 + d);
   out.force.col(0) = normal;
-  for (Eigen::Index t = 0; t < n; ++t) out.force(t, 1) = slider.steps()[static_cast<size_t>(t)].force(0);
+  for (Eigen::Index t = 0; t < n; ++t) out.force.row(t).tail(d) = slider.steps()[static_cast<size_t>(t)].force.transpose();
   out.dforce_dx.resize(0, 0);
   out.dforce_dv.resize(0, 0);
   out.dforce_domega.resize(0, 0);
@@ -81,11 +89,12 @@ void penalty_contact_period(const Eigen::MatrixXd& x, const std::vector<double>&
       dv(t * q + slider.stiffness_input(), kTangentialStiffness) = 1.0;
     }
     const Eigen::MatrixXd dt = slider.periodic_response(dv);
-    out.dforce_dproperty.setZero(n, 8);
-    for (int p = 0; p < 4; ++p) {
-      for (Eigen::Index t = 0; t < n; ++t) out.dforce_dproperty(t, 2 * p) = dv(t * q + slider.normal_input(), p);
-      out.dforce_dproperty.col(2 * p + 1) = dt.col(p);
-    }
+    out.dforce_dproperty.setZero(n, 4 * (1 + d));
+    for (int p = 0; p < 4; ++p)
+      for (Eigen::Index t = 0; t < n; ++t) {
+        out.dforce_dproperty(t, (1 + d) * p) = dv(t * q + slider.normal_input(), p);
+        for (int i = 0; i < d; ++i) out.dforce_dproperty(t, (1 + d) * p + 1 + i) = dt(t * d + i, p);
+      }
   }
   out.history_operator = std::make_shared<ContactSliderSensitivity>(std::move(slider), std::move(slope));
 }
@@ -97,18 +106,18 @@ void FrictionalContact::history_step(const Eigen::MatrixXd& x, const Eigen::Vect
     return;
   }
   const NormalLoad load = normal_load(props, x(0, 0));
-  contact_slider_step(CoulombSlider(1, props[kTangentialStiffness], props[kMu]), load.force, load.slope, x, Eigen::VectorXd::Zero(1), state,
-                      out);
+  contact_slider_step(CoulombSlider(directions_, props[kTangentialStiffness], props[kMu]), load.force, load.slope, x,
+                      Eigen::VectorXd::Zero(directions_), state, out);
 }
 
 Eigen::MatrixXd FrictionalContact::periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& props) const {
   if (law_ == ContactFormulation::dlft) return NonlinearElement::periodic_history(x, omega, props);
   Eigen::VectorXd normal(x.rows());
   for (Eigen::Index t = 0; t < x.rows(); ++t) normal(t) = normal_load(props, x(t, 0)).force;
-  CoulombSlider slider(1, props[kTangentialStiffness], props[kMu]);
-  slider.solve_period(normal, x.col(1), Eigen::VectorXd::Zero(1));
-  Eigen::MatrixXd z(x.rows(), 1);
-  for (Eigen::Index t = 0; t < x.rows(); ++t) z(t, 0) = slider.steps()[static_cast<size_t>(t)].state(0);
+  CoulombSlider slider(directions_, props[kTangentialStiffness], props[kMu]);
+  slider.solve_period(normal, x.rightCols(directions_), Eigen::VectorXd::Zero(directions_));
+  Eigen::MatrixXd z(x.rows(), directions_);
+  for (Eigen::Index t = 0; t < x.rows(); ++t) z.row(t) = slider.steps()[static_cast<size_t>(t)].state.transpose();
   return z;
 }
 

@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "hbtrack/elements/elastic_dry_friction_2d.hpp"
 #include "hbtrack/elements/element_catalog.hpp"
 #include "hbtrack/elements/scalar_elements.hpp"
 
@@ -96,6 +97,39 @@ void read_weights(const CaseReader& in, const toml::value& e, const std::string&
   }
 }
 
+// u = W x over the plane of a slider (W 2 x k): the rows given, or the identity on [x, y] and the
+// relative motion [[1, 0, -1, 0], [0, 1, 0, -1]] on [x_a, y_a, x_b, y_b].
+void read_planar_weights(const CaseReader& in, const toml::value& e, const std::string& field, ElasticDryFriction2D& s) {
+  const int k = s.local_dofs();
+  const std::string weights_field = field + ".weights";
+  const toml::value* w = in.find(e, "weights");
+  if (!w) {
+    if (k == 2) {
+      s.weights = Eigen::MatrixXd::Identity(2, 2);
+    } else if (k == 4) {
+      s.weights = (Eigen::MatrixXd(2, 4) << 1.0, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, -1.0).finished();
+    } else {
+      in.fail(&e, weights_field, "required unless the dofs are [x, y] (2) or [x_a, y_a, x_b, y_b] (4)");
+    }
+    return;
+  }
+  if (!w->is_array() || w->as_array().size() != 2 || !w->as_array()[0].is_array() || !w->as_array()[1].is_array())
+    in.fail(w, weights_field, "expected two rows, one per direction of the plane: [[w_x...], [w_y...]]");
+  s.weights.resize(2, k);
+  for (size_t j = 0; j < 2; ++j) {
+    const toml::value& row = w->as_array()[j];
+    const std::string row_field = weights_field + "[" + std::to_string(j) + "]";
+    const VectorXd r = in.vector(row, row_field);
+    if (r.size() != k) in.fail(&row, row_field, "expected one weight per dof (" + std::to_string(k) + ")");
+    if (r.isZero(0.0)) in.fail(&row, row_field, "must not all be zero (the direction would be no direction)");
+    s.weights.row(static_cast<Eigen::Index>(j)) = r.transpose();
+  }
+  // Gram determinant |w_x|^2 |w_y|^2 - (w_x.w_y)^2 = |w_x|^2 |w_y|^2 sin^2(angle), against round-off.
+  const double xx = s.weights.row(0).squaredNorm(), yy = s.weights.row(1).squaredNorm(), xy = s.weights.row(0).dot(s.weights.row(1));
+  if (xx * yy - xy * xy <= 1e-12 * xx * yy)
+    in.fail(w, weights_field, "the two rows must not be parallel (the slider would slip along a line, not in a plane)");
+}
+
 std::string join_names(const std::vector<std::string>& names) {
   std::string text;
   for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
@@ -153,7 +187,8 @@ void read_elements(const CaseReader& in, const toml::value& root, CaseDefinition
     if (type->weighted && k < 1) in.fail(&dofs_value, field + ".dofs", "expected at least one dof");
     if (std::set<int>(element.dofs.begin(), element.dofs.end()).size() != element.dofs.size())
       in.fail(&dofs_value, field + ".dofs", "a dof appears twice");
-    if (type->weighted) read_weights(in, e, field, static_cast<ScalarElement&>(element));
+    if (type->weighted && type->directions == 1) read_weights(in, e, field, static_cast<ScalarElement&>(element));
+    if (type->weighted && type->directions == 2) read_planar_weights(in, e, field, static_cast<ElasticDryFriction2D&>(element));
     // Integer rows hold one entry per dof; property rows, one row per integer row.
     Eigen::Index rows = 0;
     for (const ElementKey& key : type->keys) {

@@ -76,13 +76,17 @@ struct ElementBuild {
 struct ElementType {
   std::string type;
   std::string summary;  // the force law in one line
-  // How the element sees its dofs: weighted ones (ScalarElements) act along d = w.x of any
-  // number of dofs (`weights`, by default [1] on one dof and [1, -1] between two); the others take
-  // exactly the dofs named in `dof_names` (empty: any number, each its own).
+  // How the element sees its dofs: weighted ones act along `directions` combinations of any
+  // number of dofs, `weights`: one direction (ScalarElements), d = w.x, by default [1] on one dof
+  // and [1, -1] between two; two directions (a slider in a plane, ElasticDryFriction2D),
+  // u = W x with W 2 x k rows, by default the identity on [x, y] and the relative motion
+  // [[1, 0, -1, 0], [0, 1, 0, -1]] on [x_a, y_a, x_b, y_b]. The others take exactly the dofs
+  // named in `dof_names` (empty: any number, each its own).
   bool weighted = true;
   std::vector<std::string> dof_names;
   std::vector<ElementKey> keys;
   ElementBuild (*build)(const ElementSetup& setup) = nullptr;  // throws ElementKeyError
+  int directions = 1;                                          // of a weighted type: the rows of `weights` (see `weighted`)
 };
 
 // Every element type, in the order of the documentation.

@@ -1,6 +1,8 @@
 #pragma once
 // Point contact with a varying normal load and elastic dry friction (a Jenkins element whose
-// slip limit is mu N(t)), with separation. Two dofs: [normal, tangential].
+// slip limit is mu N(t)), with separation. Two dofs: [normal, tangential]; or, as
+// frictional_contact_2d (penalty only), three: [normal, tangential_1, tangential_2], the slider
+// slipping in the tangential plane (the Coulomb disc |T| <= mu N(t) of coulomb_slider.hpp).
 #include "hbtrack/elements/nonlinear_element.hpp"
 
 namespace hbtrack {
@@ -29,8 +31,9 @@ ContactFormulation parse_contact_formulation(const std::string& name);  // throw
 // which only affects Newton's path. Properties: mu, epsilon, gap (the contact plane: x_n <= gap).
 class FrictionalContact final : public NonlinearElement {
  public:
-  explicit FrictionalContact(ContactFormulation law = ContactFormulation::penalty) : law_(law) {}
-  std::string type() const override { return "frictional_contact"; }
+  // directions: 1, or 2 tangential directions (penalty only: frictional_contact_2d).
+  explicit FrictionalContact(ContactFormulation law = ContactFormulation::penalty, int directions = 1);
+  std::string type() const override { return directions_ == 2 ? "frictional_contact_2d" : "frictional_contact"; }
   const std::vector<std::string>& property_names() const override;
   bool depends_on_velocity() const override { return false; }
   bool history_dependent() const override { return true; }
@@ -41,19 +44,21 @@ class FrictionalContact final : public NonlinearElement {
   bool uses_linear_residual() const override { return law_ == ContactFormulation::dlft; }
   void evaluate_with_residual(const Eigen::MatrixXd& x, const Eigen::MatrixXd& r, double omega, const std::vector<double>& property_values,
                               ElementResponse& out, bool want_property_derivatives) const override;
-  // Penalty: one internal variable, the slider position z (T = k_t (x_t - z)). DLFT has no
-  // time-domain form.
-  int history_state_size() const override { return law_ == ContactFormulation::penalty ? 1 : 0; }
+  // Penalty: the slider position z, one variable per tangential direction (T = k_t (x_t - z)).
+  // DLFT has no time-domain form.
+  int history_state_size() const override { return law_ == ContactFormulation::penalty ? directions_ : 0; }
   void history_step(const Eigen::MatrixXd& x, const Eigen::VectorXd& state, double dt, double omega,
                     const std::vector<double>& property_values, HistoryStep& out) const override;
   Eigen::MatrixXd periodic_history(const Eigen::MatrixXd& x, double omega, const std::vector<double>& property_values) const override;
-  // The slider may slip either way (sense 0); DLFT's contact is rigid (stiffness 0).
+  // The slider may slip either way (sense 0); DLFT's contact is rigid (stiffness 0). None in two
+  // directions (the coupling names one tangential direction).
   std::optional<FrictionCoupling> friction_coupling(const std::vector<double>& property_values, double omega) const override;
   ContactFormulation law() const { return law_; }
   std::string configuration() const override { return law_ == ContactFormulation::dlft ? "law=dlft" : "law=penalty"; }
 
  private:
   ContactFormulation law_;
+  int directions_;
 };
 
 }  // namespace hbtrack
