@@ -146,7 +146,8 @@ TEST(StudyCli, BadStudyInputGivesOneLineErrors) {
 TEST(StudyCli, AStudyWhoseValidationFailsExitsOneAndSaysSoFirst) {
   // The Duffing oscillator's limit points tracked in the amplitude with at most 4 points a leg:
   // the curves stop near the start, so the validation NFRC at amplitude 2.5 (the case's
-  // `validate`) has limit points on no tracking curve. The study must not say "completed".
+  // `validate`) has limit points on no tracking curve, and none may start a curve of its own
+  // (max_added_curves = 0). The study must not say "completed".
   const fs::path dir = absent_dir("hbtrack_study_failing");
   fs::create_directories(dir);
   {
@@ -154,7 +155,7 @@ TEST(StudyCli, AStudyWhoseValidationFailsExitsOneAndSaysSoFirst) {
     std::ofstream out(dir / "case.toml");
     out << duffing.rdbuf()
         << "\n[study]\ntrack = [ { parameter = \"amplitude\", range = [0.5, 3.0], validate = [2.5] } ]\nmax_points = 4\nsimulate_periods = "
-           "0\n";
+           "0\nmax_added_curves = 0\n";
   }
   const CliRun r = run_cli("study " + (dir / "case.toml").string() + " -q -o " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 1) << r.err;

@@ -150,4 +150,30 @@ long resonance_simulation_point(const std::string& nfrc_dir, const json& limit_p
   return best;
 }
 
+std::optional<OffCurveLimitPoint> first_limit_point_off_the_curves(const std::string& study_dir, const json& validations,
+                                                                   const std::set<std::string>& tried) {
+  for (const auto& v : validations)
+    for (const auto& lp : v.value("limit_points", json::array())) {
+      if (lp.value("on_a_tracking_curve", true)) continue;
+      const std::string folder = v.value("limit_points_folder", v.value("folder", ""));
+      const json points = read_summary(study_dir + "/" + folder).value("special_points", json::array());
+      const std::vector<size_t> rows = limit_point_rows(points);
+      for (size_t j = 0; j < rows.size(); ++j)
+        if (points[rows[j]].value("omega", 0.0) == lp.value("omega", 0.0) && !tried.count(folder + "#" + std::to_string(j + 1)))
+          return OffCurveLimitPoint{folder, static_cast<int>(j + 1), lp.value("omega", 0.0)};
+    }
+  return std::nullopt;
+}
+
+size_t nearest_limit_point(const json& special_points, double omega) {
+  const std::vector<size_t> rows = limit_point_rows(special_points);
+  size_t lp = 0;
+  double best = 1e300;
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const double distance = std::abs(special_points[rows[k]].value("omega", 0.0) - omega);
+    if (distance < best) best = distance, lp = k + 1;
+  }
+  return lp;
+}
+
 }  // namespace hbtrack::cli

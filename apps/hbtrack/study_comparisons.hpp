@@ -4,6 +4,7 @@
 // and samples, and an HBM point against its time integration.
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,20 @@ nlohmann::json validation_against_crossings(const nlohmann::json& validation, co
 // not the maximum, measures the resonance when a casing caps the outward excursion.
 inline constexpr double kSimulationDetuning = 2e-3;
 long resonance_simulation_point(const std::string& nfrc_dir, const nlohmann::json& limit_points, const std::string& first_output);
+
+// The first limit point (in the order of `validations`, one parameter's study entries) that lies
+// on no tracking curve and is not in `tried` ("folder#K"), with the result folder it is in and its
+// number there (1-based, omega order: `track --lp K`).
+struct OffCurveLimitPoint {
+  std::string folder;
+  int index = 0;
+  double omega = 0;
+};
+std::optional<OffCurveLimitPoint> first_limit_point_off_the_curves(const std::string& study_dir, const nlohmann::json& validations,
+                                                                   const std::set<std::string>& tried);
+
+// The limit point of `special_points` nearest `omega` (1-based, omega order), 0 when none.
+size_t nearest_limit_point(const nlohmann::json& special_points, double omega);
 
 // Row `point` of DIR/branch.csv against a `simulate` summary: max, min, h1 of every output.
 nlohmann::json compare_with_simulation(const std::string& branch_dir, long point, const nlohmann::json& simulation,

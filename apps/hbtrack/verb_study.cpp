@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <set>
 
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
@@ -79,7 +81,8 @@ class Study {
                 {"steps", json::array()}};
     if (resuming) summary_["resumed_steps"] = 0;
     save();
-    const bool ok = nominal() && branches() && tracking() && validation_and_simulation() && isolas() && isola_simulation() && convergence();
+    const bool ok = nominal() && branches() && tracking() && validation_and_simulation() && added_families() && isolas() &&
+                    isola_simulation() && convergence();
     // Only the parameters tracking reached: a study stopped at its nominal NFRC has none (a
     // null entry here made the checks and the page fail on "cannot use value() with null").
     for (const StudyTrack& t : tracked_)
@@ -92,9 +95,7 @@ class Study {
     summary_["timings"] = {{"wall_s", seconds_since(t0)}};
     save();
     write_study_report(dir_, summary_);
-    if (!ok)
-      // A failed step may pass when resumed (memory, a killed child): the command is offered
-      // whatever stopped the study.
+    if (!ok)  // a failed step may pass when resumed (memory, a killed child): the command is offered whatever stopped it
       throw RunFailed{"study stopped: " + stop_reason_ + " (results so far in " + dir_ + ")",
                       "study stopped: resume with: " + resume_command(dir_)};
     if (!failed.empty())
@@ -343,19 +344,72 @@ class Study {
   void compare(const Probe& p) {
     json validation = read_summary(dir_ + "/validate_" + p.tag);
     json beyond;
+    std::string lp_folder = "validate_" + p.tag;
     if (const std::string folder = "validate_" + p.tag + "_beyond"; std::filesystem::exists(dir_ + "/" + folder + "/summary.json")) {
+      lp_folder = folder;
       // The widened run holds the whole branch: its limit points replace the validation's.
       const json s = read_summary(dir_ + "/" + folder);
       validation["special_points"] = s.value("special_points", json::array());
       beyond = {
           {"folder", folder}, {"stop_reason", s.value("stop_reason", "")}, {"omega_start", s["options"]["continuation"]["omega_start"]}};
     }
-    json entry = validation_against_crossings(validation, read_summary(dir_ + "/crossings_" + p.tag)["crossings"], first_output());
+    const std::string crossings = crossings_folder_.count(p.tag) ? crossings_folder_[p.tag] : "crossings_" + p.tag;
+    json entry = validation_against_crossings(validation, read_summary(dir_ + "/" + crossings)["crossings"], first_output());
     entry["value"] = p.value;
     entry["folder"] = "validate_" + p.tag;
+    entry["limit_points_folder"] = lp_folder;
     entry["stop_reason"] = validation.value("stop_reason", "");
     if (!beyond.is_null()) entry["beyond"] = beyond;
     entries_[p.track->parameter]["validations"].push_back(entry);
+  }
+
+  // A validation NFRC's limit point on no tracking curve belongs to a family no limit point of the
+  // nominal NFRC leads to: it is tracked from that NFRC (`track_P_addedK/`, at most
+  // study.max_added_curves per parameter, one per parameter at a time so that a second limit
+  // point of the same family is not tracked twice), then the crossings at every validation value
+  // of P are located again with every curve (`crossings_P_J_all/`) and the NFRCs compared again.
+  bool added_families() {
+    std::map<std::string, int> added;
+    while (true) {
+      std::vector<Step> round;
+      std::vector<const StudyTrack*> which;
+      std::vector<OffCurveLimitPoint> starts;
+      for (const StudyTrack& t : tracked_) {
+        if (added[t.parameter] >= c_.study.max_added_curves) continue;
+        const auto lp = first_limit_point_off_the_curves(dir_, entries_[t.parameter]["validations"], tried_);
+        if (!lp) continue;
+        tried_.insert(lp->folder + "#" + std::to_string(lp->index));
+        const int k = ++added[t.parameter];
+        round.push_back({"track_" + t.parameter + "_added" + std::to_string(k),
+                         {"track", o_.common.case_path, "--from", dir_ + "/" + lp->folder, "--lp", std::to_string(lp->index), "--param",
+                          t.parameter, "--range", number_text(t.min) + ":" + number_text(t.max), "--set",
+                          "continuation.max_points=" + std::to_string(c_.study.max_points)},
+                         false});
+        which.push_back(&t);
+        starts.push_back(*lp);
+      }
+      if (round.empty()) return true;
+      stage_ = kTracking;
+      if (!run_steps(round)) return false;
+      std::vector<Step> crossings;
+      for (size_t i = 0; i < round.size(); ++i) {
+        add_curve(*which[i], 0, starts[i].omega, round[i].folder);
+        entries_[which[i]->parameter]["curves"].back()["from"] = starts[i].folder + " LP" + std::to_string(starts[i].index);
+      }
+      for (const Probe& p : probes_) {
+        if (std::find(which.begin(), which.end(), p.track) == which.end()) continue;
+        Step locate{"crossings_" + p.tag + "_all" + std::to_string(added[p.track->parameter]),
+                    {"isolas", o_.common.case_path, "--at", number_text(p.value), "--locate-only"},
+                    true};
+        for (const TrackingCurve& c : curves_[p.track->parameter]) locate.args.insert(locate.args.end(), {"--from", c.folder});
+        crossings_folder_[p.tag] = locate.folder;
+        crossings.push_back(locate);
+      }
+      if (!run_steps(crossings)) return false;
+      for (const StudyTrack* t : which) entries_[t->parameter]["validations"] = json::array();
+      for (const Probe& p : probes_)
+        if (std::find(which.begin(), which.end(), p.track) != which.end()) compare(p);
+    }
   }
 
   // Limit points of the tracking curves that no NFRC from the linear solution passes announce
@@ -449,16 +503,8 @@ class Study {
     for (const StudyTrack& t : tracked_)
       for (const auto& curve : entries_[t.parameter]["curves"]) {
         if (!curve.contains("folder")) continue;
-        // The refined NFRC's limit point nearest this curve's starting one (1-based, omega order).
-        const double omega = curve.value("omega", 0.0);
-        const json refined_points = refined.value("special_points", json::array());
-        const std::vector<size_t> rows = limit_point_rows(refined_points);
-        size_t lp = 0;
-        double best = 1e300;
-        for (size_t k = 0; k < rows.size(); ++k) {
-          const double distance = std::abs(refined_points[rows[k]].value("omega", 0.0) - omega);
-          if (distance < best) best = distance, lp = k + 1;
-        }
+        if (curve.value("lp", 0) == 0) continue;  // an added family's: started from a validation NFRC
+        const size_t lp = nearest_limit_point(refined.value("special_points", json::array()), curve.value("omega", 0.0));
         if (lp == 0) continue;
         const std::string folder = "converged/" + curve.value("folder", std::string());
         steps.push_back({folder,
@@ -500,6 +546,8 @@ class Study {
   std::map<std::string, json> entries_;  // per tracked parameter: curves, extrema, validations
   std::map<std::string, std::vector<TrackingCurve>> curves_;
   std::vector<Probe> probes_;
+  std::map<std::string, std::string> crossings_folder_;  // a probe's crossings located again with added curves
+  std::set<std::string> tried_;                          // "folder#K": limit points an added curve started from
   std::string stop_reason_;
   Stage stage_ = kNominal;
   std::map<std::string, json> previous_;  // resuming: the stopped study's ended steps, by folder

@@ -41,6 +41,9 @@ struct StudySettings {
   bool switch_branches = false;  // follow the branches born at the nominal NFRC's BP and PD points
   int max_points = 400;          // per leg of a tracking curve
   int simulate_periods = 60;     // periods of the time-integration check, 0 for none
+  // A validation NFRC's limit point on no tracking curve starts one of its own: at most this many
+  // such curves per tracked parameter (0: none).
+  int max_added_curves = 4;
   // The convergence check: the nominal NFRC and the tracking curves recomputed with these
   // harmonics and samples (0: no check), their limit points and extrema compared.
   int convergence_harmonics = 0, convergence_samples = 0;
