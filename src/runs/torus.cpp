@@ -58,8 +58,6 @@ RunReport torus(const CaseDefinition& c, const TorusRunOptions& o, ResultSink& s
   const auto branch = sink.table("branch", torus_branch_header(c));
   const auto states =
       sink.table("states", torus_state_header(TorusBasis(options.h1, options.h2, options.n1, options.n2), c.model.dof_names));
-  std::unique_ptr<TableSink> unknowns;
-  if (sink.keeps_unknowns()) unknowns = sink.table("unknowns", state_header(hbm.unknowns()));
   sink.summary(summary);
 
   const FoldScales scales = tracking_scales(hbm, c.nfrc, options.omega_max - options.omega_min);
