@@ -40,3 +40,15 @@ def test_bad_keywords_name_the_keyword(nltva_frc):
         hbtrack.torus(case, nltva_frc, ns=1, range=(1.0, 1.3), harmonics=5)
     with pytest.raises(ValueError, match="samples: must be N1 >= 2 H1 \\+ 1 = 11 and N2 >= 2 H2 \\+ 1 = 9"):
         hbtrack.torus(case, nltva_frc, ns=1, range=(1.0, 1.3), samples=(64, 5))
+
+
+def test_hbtrack_plot_draws_a_torus_folder_over_its_nfrc(results_dir, nltva_frc):
+    from hbtrack.plot import figures_for
+    folder = str(results_dir / "nltva_torus_for_plot")
+    run_cli("torus", NLTVA, "--from", nltva_frc["folder"], "--ns", "1", "--range", "1.0:1.3", "-o", folder)
+    figures = figures_for(read_result(folder))
+    assert list(figures) == ["torus"]
+    axes = figures["torus"].get_axes()
+    assert len(axes) == 2  # x1, x2
+    labels = [t.get_text() for t in axes[0].get_legend().get_texts()]
+    assert "NS points" in labels and "torus: max over the torus" in labels and "NFRC, unstable" in labels
