@@ -127,6 +127,9 @@ TEST(TorusCli, BadInputIsOneLineNamingTheFlag) {
       {" --ns 1 --range 1.0:1.3 --harmonics 5", "--harmonics: expected two integers A,B, got '5'"},
       {" --ns 1 --range 1.0:1.3 --samples 64,5", "--samples: must be N1 >= 2 H1 + 1 = 11 and N2 >= 2 H2 + 1 = 9"},
       {" --ns 0 --range 1.0:1.3", "--ns"},
+      {" --ns 1 --range 1.0:1.3 --harmonics 40,30",
+       "--harmonics: the torus would have 9883 unknowns (2 dofs x 4941 coefficients), at most 4000"},
+      {" --ns 1 --range 1.0:1.3 --samples 4096,4096", "--samples: the grid of 16777216 samples times 99 coefficients is above 8388608"},
   };
   for (const auto& c : cases) {
     const CliRun r = run_cli(base + c.flags);

@@ -12,6 +12,9 @@ namespace hbtrack::runs {
 using nlohmann::json;
 
 namespace {
+constexpr long kMaxTorusUnknowns = 4000;         // a dense Jacobian of 128 MB
+constexpr long kMaxTorusGridEntries = 1L << 23;  // 64 MB per grid matrix, four of them
+
 // The run's options checked (CaseError naming the option) and resolved.
 TorusOptions torus_options(const CaseDefinition& c, const HarmonicBalance& hbm, const TorusRunOptions& o) {
   if (!(o.omega_min < o.omega_max)) throw CaseError(o.range_name + ": must be LO:HI with LO < HI");
@@ -34,7 +37,16 @@ TorusOptions torus_options(const CaseDefinition& c, const HarmonicBalance& hbm, 
   if (t.n1 < 2 * t.h1 + 1 || t.n2 < 2 * t.h2 + 1)
     throw CaseError(o.samples_name + ": must be N1 >= 2 H1 + 1 = " + std::to_string(2 * t.h1 + 1) +
                     " and N2 >= 2 H2 + 1 = " + std::to_string(2 * t.h2 + 1));
-  if (static_cast<long>(t.n1) * t.n2 > (1L << 20)) throw CaseError(o.samples_name + ": N1 N2 at most 2^20");
+  // Everything is dense: the Jacobian (unknowns^2) and the grid matrices (4 x grid x coefficients).
+  const long coefficients = 1 + 2 * (t.h2 + static_cast<long>(t.h1) * (2 * t.h2 + 1));
+  const long unknowns = coefficients * hbm.model().dofs() + 1, grid = static_cast<long>(t.n1) * t.n2;
+  if (unknowns > kMaxTorusUnknowns)
+    throw CaseError(o.harmonics_name + ": the torus would have " + std::to_string(unknowns) + " unknowns (" +
+                    std::to_string(hbm.model().dofs()) + " dofs x " + std::to_string(coefficients) + " coefficients), at most " +
+                    std::to_string(kMaxTorusUnknowns) + " (its Jacobian is dense): fewer harmonics, or a smaller model");
+  if (grid * coefficients > kMaxTorusGridEntries)
+    throw CaseError(o.samples_name + ": the grid of " + std::to_string(grid) + " samples times " + std::to_string(coefficients) +
+                    " coefficients is above " + std::to_string(kMaxTorusGridEntries) + " (dense matrices): fewer samples or harmonics");
   return t;
 }
 }  // namespace
