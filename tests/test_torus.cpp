@@ -110,6 +110,18 @@ TEST(Torus, ResidualJacobianMatchesCentralDifferences) {
   expect_jacobian_matches_differences(damper, some_torus(damper, 0.01, 0.05 * omega), omega, "friction damper (tanh friction)");
 }
 
+TEST(Torus, RefusesALawWithMemoryNamingTheElement) {
+  // A hysteresis finds its steady state over a period; a torus has none.
+  const CaseDefinition c = load_case(test::source_path("examples/iwan_joint.toml"));
+  HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+  try {
+    TorusSystem system(hbm, TorusBasis(3, 2, 16, 8), tracking_scales(hbm, c.nfrc, 1.0));
+    FAIL() << "an Iwan joint was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("torus: elements[0] (iwan): its force depends on its past"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Torus, BranchIsBornAtOneNsPointAndClosesAtTheOther) {
   Absorber a;
   const std::vector<SpecialPoint> ns = a.ns_points();
