@@ -82,7 +82,8 @@ TEST(Choices, EveryValueRoundTripsThroughItsName) {
                                                                       "no_convergence",
                                                                       "tasks_failed",
                                                                       "checks_failed",
-                                                                      "stopped_by_callback"}));
+                                                                      "stopped_by_callback",
+                                                                      "reached_ns_point"}));
 }
 
 TEST(Choices, TheNamedParsersAgreeWithTheTables) {
@@ -109,7 +110,7 @@ TEST(Choices, AnUnknownNameNamesTheFieldAndEveryAllowedName) {
   EXPECT_EQ(error_for<TrackingMethod>("minimal"), "tracking method: must be bordered or extended, got 'minimal'");
   EXPECT_EQ(error_for<IntegrationMethod>("rk4"), "method: must be newmark or dopri5, got 'rk4'");
   EXPECT_EQ(error_for<StopReason>("finished").substr(0, 42), "stop_reason: must be running, reached_end,");
-  EXPECT_NE(error_for<StopReason>("finished").find(" or stopped_by_callback, got 'finished'"), std::string::npos);
+  EXPECT_NE(error_for<StopReason>("finished").find(" or reached_ns_point, got 'finished'"), std::string::npos);
   // Names are exact: no case folding, no surrounding blanks.
   EXPECT_NE(error_for<Predictor>("Tangent"), "no error");
   EXPECT_NE(error_for<Predictor>(" tangent"), "no error");

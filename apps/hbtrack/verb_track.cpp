@@ -13,6 +13,7 @@
 #include "hbtrack/runs/track.hpp"
 #include "result_folder.hpp"
 #include "result_folder_sink.hpp"
+#include "special_point_start.hpp"
 #include "resume_command.hpp"
 
 namespace hbtrack::cli {
@@ -61,31 +62,6 @@ struct IsolaOptions {
   std::string at;
   bool locate_only = false;
 };
-
-// The case rebuilt with the settings of the result folder `dir`, then the user's --set.
-CaseDefinition case_as_in(const CommonOptions& o, const std::string& dir) {
-  const CaseDefinition plain = load_case(o.case_path, o.sets);
-  std::vector<std::string> overrides = hbm_overrides(dir, plain);
-  overrides.insert(overrides.end(), o.sets.begin(), o.sets.end());  // --set wins
-  return load_case(o.case_path, overrides);
-}
-
-// The special point the tracking starts from: the K-th point of `type` ("LP", "NS", "PD"; from 1,
-// in increasing omega as the figures number them) of DIR/summary.json, and its state. `flag`
-// names the option in errors.
-HbmState starting_point(const std::string& dir, const std::string& type, const std::string& flag, long k, const HarmonicBalance& hbm) {
-  const json summary = read_summary(dir);
-  const std::string path = dir + "/summary.json";
-  if (!summary.contains("special_points") || !summary["special_points"].is_array())
-    throw CaseError(path + ": special_points missing (is --from a frc result?)");
-  const std::vector<size_t> rows = special_point_rows(summary["special_points"], type);
-  const std::string name = type == "LP" ? "limit points" : type + " points";
-  if (rows.empty() && type != "LP")
-    throw CaseError(flag + ": " + path + " has no " + name + " (an NFRC computed with stability finds them)");
-  if (static_cast<size_t>(k) > rows.size())
-    throw CaseError(flag + ": " + std::to_string(k) + " is beyond the " + std::to_string(rows.size()) + " " + name + " of " + path);
-  return read_hbm_state(dir + "/special_states.csv", static_cast<long>(rows[static_cast<size_t>(k - 1)]), hbm);
-}
 
 // Which of --lp, --ns, --pd was given (exactly one): its flag, special-point type and value.
 struct StartFlag {

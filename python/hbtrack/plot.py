@@ -32,6 +32,7 @@ from .output_descriptions import parse_labels
 from .overlay_figures import describe, overlay_figure
 from .results import output_names, read_result
 from .sweep_figures import sweep_figure
+from .torus_figures import torus_figure
 from .units import length_factor, scale_lengths
 
 
@@ -171,6 +172,9 @@ def figures_for(result, length_unit=None, model_unit=None, norm=False, zoom=0.1,
         if tracks:
             figures["tracking"] = plots.tracking_plane_figure(tracks, length_unit=length_unit, at=isolas["at"])
         return figures
+    if kind == "torus":
+        origin = _related(result.get("folder", ""), result["summary"]["options"]["torus"].get("from", ""), factor)
+        return {"torus": torus_figure(result, nfrc=origin if origin and origin["kind"] == "frc" else None, length_unit=length_unit)}
     if kind == "sweep":
         return {"sweep_peaks": sweep_figure(result["folder"], length_unit=length_unit)}
     if kind == "simulate":

@@ -67,7 +67,7 @@ def result_kind(folder):
     Returns
     -------
     str
-        frc, solve, track, isolas, isola_branch, simulate, modes, reduce, sweep or study.
+        frc, solve, track, isolas, isola_branch, torus, simulate, modes, reduce, sweep or study.
 
     Examples
     --------
@@ -127,7 +127,9 @@ def read_result(folder):
             result[key] = read_columns(path)
     for name, key in (("states.csv", "states"), ("special_states.csv", "special_states")):
         path = os.path.join(folder, name)
-        if os.path.exists(path):
+        if kind == "torus" and os.path.exists(path):  # torus coefficients, not periodic unknowns
+            result["dof_" + key] = read_columns(path)
+        elif os.path.exists(path):
             header, rows = read_table(path)
             result[key] = state_unknowns(header, rows, summary)
             if not is_unknown_layout(header):

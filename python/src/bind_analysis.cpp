@@ -12,6 +12,7 @@
 #include "hbtrack/runs/frc.hpp"
 #include "hbtrack/runs/isolas.hpp"
 #include "hbtrack/runs/modes.hpp"
+#include "hbtrack/runs/torus.hpp"
 #include "hbtrack/runs/track.hpp"
 #include "python_monitor.hpp"
 
@@ -64,6 +65,23 @@ py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, 
   return run_in_memory(progress, [&](runs::ResultSink& sink, runs::RunMonitor& monitor) { runs::track(c, options, sink, monitor); });
 }
 
+// `hbtrack torus` from the NS point (x, omega) of an NFRC of the same case.
+py::dict torus(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, double omega_min, double omega_max, int h1, int h2, int n1,
+               int n2, const py::object& progress) {
+  runs::TorusRunOptions options;
+  options.start = runs::StartPoint{omega, x, "start: the NS point"};
+  options.omega_min = omega_min;
+  options.omega_max = omega_max;
+  options.h1 = h1;
+  options.h2 = h2;
+  options.n1 = n1;
+  options.n2 = n2;
+  options.range_name = "range";
+  options.harmonics_name = "harmonics";
+  options.samples_name = "samples";
+  return run_in_memory(progress, [&](runs::ResultSink& sink, runs::RunMonitor& monitor) { runs::torus(c, options, sink, monitor); });
+}
+
 // Tracking curves as `track` returns their states: rows of leg, omega, parameter, x0, x1, ...
 std::vector<FoldCurvePoint> curve_from_states(const Eigen::MatrixXd& states, int unknowns) {
   if (states.cols() != 3 + unknowns)
@@ -107,6 +125,9 @@ void bind_analysis(py::module_& m) {
   m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
         py::arg("parameter_max"), py::arg("method") = "bordered", py::arg("progress") = py::none(), py::arg("point") = "LP",
         "limit point (NS, PD point) (x, omega) tracked in param");
+  m.def("torus", &torus, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("omega_min"), py::arg("omega_max"), py::arg("h1") = 0,
+        py::arg("h2") = 4, py::arg("n1") = 0, py::arg("n2") = 0, py::arg("progress") = py::none(),
+        "the torus branch born at the NS point (x, omega), continued in omega within [omega_min, omega_max]");
   m.def("isolas", &isolas, py::arg("case"), py::arg("curves"), py::arg("param"), py::arg("at"), py::arg("progress") = py::none(),
         "branches through the crossings of tracking curves (their states) with param = at");
 }

@@ -48,6 +48,9 @@ enum class StopReason {
   tasks_failed,         // sweep: a task left no finished result
   checks_failed,        // study: every step ran, a check failed
   stopped_by_callback,  // Python: the progress callback returned False
+  // The torus branch (torus_branch.hpp): its size in theta2 reached zero, back on the periodic
+  // branch at a Neimark-Sacker point.
+  reached_ns_point,
 };
 
 template <>
@@ -77,6 +80,7 @@ struct ChoiceTable<StopReason> {
       {StopReason::tasks_failed, "tasks_failed"},
       {StopReason::checks_failed, "checks_failed"},
       {StopReason::stopped_by_callback, "stopped_by_callback"},
+      {StopReason::reached_ns_point, "reached_ns_point"},
   };
 };
 

@@ -1,0 +1,104 @@
+"""The quasi-periodic branch of ``hbtrack torus`` over its NFRC: one panel per output, the NFRC's
+max against omega (stable solid, unstable dashed) with its NS points, the largest value on the
+torus along the branch, and time integrations' maxima (``hbtrack plot`` of a torus folder,
+python/plot_torus.py, docs/analyses.md)."""
+import numpy as np
+
+from .plots import OMEGA_LABEL, length_label, plt
+
+
+def simulated_max(simulation, name):
+    """The largest value of output `name` in a time integration.
+
+    Of its last period when it found a periodic steady state (its record may hold the transient
+    too), else of its recorded periods (a quasi-periodic motion, after the transient).
+
+    Parameters
+    ----------
+    simulation : dict
+        A simulate result (``hbtrack simulate`` folder or :func:`hbtrack.simulate`).
+    name : str
+        An output's name.
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> simulated_max(read_result("out/sim_1.14"), "x1")
+    """
+    if simulation["summary"].get("converged"):
+        return simulation["summary"]["max_" + name]
+    return float(np.max(simulation["signals"][name]))
+
+
+def _draw_nfrc(axes, nfrc, name):
+    """The NFRC's max of `name`, stable solid and unstable dashed, as runs of rows."""
+    omega, value = nfrc["branch"]["omega"], nfrc["branch"]["max_" + name]
+    stable = nfrc["branch"].get("stable", np.ones_like(omega)) > 0.5
+    start = 0
+    for i in range(1, len(omega) + 1):
+        if i == len(omega) or stable[i] != stable[start]:
+            end = min(i + 1, len(omega))  # joined to the next run's first point
+            axes.plot(omega[start:end], value[start:end], color="tab:blue", linestyle="-" if stable[start] else "--", linewidth=1.2)
+            start = i
+    axes.plot([], [], color="tab:blue", label="NFRC, stable")
+    axes.plot([], [], color="tab:blue", linestyle="--", label="NFRC, unstable")
+    ns = [p for p in nfrc.get("special_points", []) if p["type"] == "NS"]
+    axes.plot([p["omega"] for p in ns], [p["max_" + name] for p in ns], "o", color="black", markerfacecolor="white", markersize=7,
+              label="NS points", zorder=4)
+
+
+def torus_figure(torus, nfrc=None, simulations=(), zoom=None, length_unit=None):
+    """The torus branch's largest value of each output against omega, over its NFRC.
+
+    Parameters
+    ----------
+    torus : dict
+        A torus result (``hbtrack torus`` folder or :func:`hbtrack.torus`).
+    nfrc : dict, optional
+        The frc result it started from, drawn under it with its NS points.
+    simulations : list of dict, optional
+        Time integrations (``hbtrack simulate`` with ``--record-periods``) marked at their omega.
+    zoom : tuple of float, optional
+        (LO, HI): the omega interval drawn (default: the torus' with a margin).
+    length_unit : str, optional
+        The model's length unit for the labels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> fig = torus_figure(read_result("out/nltva_torus"), nfrc=read_result("out/nltva"), zoom=(1.0, 1.35))
+    """
+    names = [o["name"] for o in torus["summary"]["outputs"]]
+    figure, panels = plt.subplots(1, len(names), figsize=(5.2 * len(names), 4.2), squeeze=False)
+    omega = torus["branch"]["omega"]
+    if zoom is None:
+        margin = 0.5 * (omega.max() - omega.min())
+        zoom = (omega.min() - margin, omega.max() + margin)
+    for axes, name in zip(panels[0], names):
+        top = torus["branch"]["max_" + name].max()
+        if nfrc is not None:
+            _draw_nfrc(axes, nfrc, name)
+            shown = (nfrc["branch"]["omega"] >= zoom[0]) & (nfrc["branch"]["omega"] <= zoom[1])
+            if shown.any():
+                top = max(top, nfrc["branch"]["max_" + name][shown].max())
+        axes.plot(omega, torus["branch"]["max_" + name], color="tab:red", linewidth=1.8, label="torus: max over the torus")
+        if simulations:
+            axes.plot([s["summary"]["omega"] for s in simulations], [simulated_max(s, name) for s in simulations], "x", color="black",
+                      markersize=8, markeredgewidth=1.6, label="time integration: max", zorder=5)
+        axes.set_xlim(*zoom)
+        axes.set_ylim(0, 1.1 * top)
+        axes.set_xlabel(OMEGA_LABEL)
+        axes.set_ylabel(length_label(f"max {name}", length_unit))
+        axes.grid(alpha=0.3)
+        axes.legend(fontsize=8, loc="lower left")
+    start = torus["summary"]["ns_point"]
+    figure.suptitle(f"quasi-periodic branch from the NS point at ω = {start['omega']:.4f} (NS frequency {start['ns_frequency']:.4f})",
+                    fontsize=10)
+    figure.tight_layout()
+    return figure

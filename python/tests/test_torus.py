@@ -1,0 +1,54 @@
+"""The torus branch from Python (hbtrack.torus(..., ns=K)) is the CLI's `torus --ns K`: same
+columns, same numbers (1e-12: test_same_as_cli.py says why), read_result reads its folder, and its
+bad keywords fail with the CLI's messages."""
+import pytest
+
+import hbtrack
+from hbtrack.results import read_result
+
+from conftest import NLTVA, assert_same_columns, run_cli
+
+
+@pytest.fixture(scope="module")
+def nltva_frc(results_dir):
+    folder = str(results_dir / "nltva_frc_for_torus")
+    run_cli("frc", NLTVA, "-o", folder)
+    return read_result(folder)
+
+
+def test_nltva_torus_matches_cli(results_dir, nltva_frc):
+    folder = str(results_dir / "nltva_torus")
+    run_cli("torus", NLTVA, "--from", nltva_frc["folder"], "--ns", "1", "--range", "1.0:1.3", "-o", folder)
+    cli = read_result(folder)
+    api = hbtrack.torus(hbtrack.load_case(NLTVA), nltva_frc, ns=1, range=(1.0, 1.3))
+    assert cli["kind"] == api["kind"] == "torus"
+    assert_same_columns(api["branch"], cli["branch"])
+    assert_same_columns(api["dof_states"], cli["dof_states"])
+    assert list(api["branch"])[:3] == ["omega", "omega2", "size"]
+    assert api["summary"]["stop_reason"] == cli["summary"]["stop_reason"] == "reached_ns_point"
+    assert api["summary"]["options"]["torus"]["ns"] == 1
+    assert api["branch"]["size"][0] == 0.0  # row 0: the NS point
+
+
+def test_bad_keywords_name_the_keyword(nltva_frc):
+    case = hbtrack.load_case(NLTVA)
+    with pytest.raises(ValueError, match="ns: 3 is beyond the 2 NS points"):
+        hbtrack.torus(case, nltva_frc, ns=3, range=(1.0, 1.3))
+    with pytest.raises(ValueError, match="range: must contain the NS point's omega"):
+        hbtrack.torus(case, nltva_frc, ns=1, range=(1.2, 1.3))
+    with pytest.raises(ValueError, match=r"harmonics: expected two integers \(A, B\), got 5"):
+        hbtrack.torus(case, nltva_frc, ns=1, range=(1.0, 1.3), harmonics=5)
+    with pytest.raises(ValueError, match="samples: must be N1 >= 2 H1 \\+ 1 = 11 and N2 >= 2 H2 \\+ 1 = 9"):
+        hbtrack.torus(case, nltva_frc, ns=1, range=(1.0, 1.3), samples=(64, 5))
+
+
+def test_hbtrack_plot_draws_a_torus_folder_over_its_nfrc(results_dir, nltva_frc):
+    from hbtrack.plot import figures_for
+    folder = str(results_dir / "nltva_torus_for_plot")
+    run_cli("torus", NLTVA, "--from", nltva_frc["folder"], "--ns", "1", "--range", "1.0:1.3", "-o", folder)
+    figures = figures_for(read_result(folder))
+    assert list(figures) == ["torus"]
+    axes = figures["torus"].get_axes()
+    assert len(axes) == 2  # x1, x2
+    labels = [t.get_text() for t in axes[0].get_legend().get_texts()]
+    assert "NS points" in labels and "torus: max over the torus" in labels and "NFRC, unstable" in labels
