@@ -532,7 +532,6 @@ class Study {
   void figures() {
     stage_ = kFigures;
     if (!o_.common.quiet) std::fprintf(stderr, "study: stage %d of %d, %s: drawing\n", stage_ + 1, int{kStages}, kStageNames[stage_]);
-    summary_["figures"] = json::array();
     summary_["figures"] = draw_study_figures(dir_, o_.units, o_.common.quiet);
   }
 
