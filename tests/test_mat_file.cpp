@@ -411,6 +411,24 @@ TEST_F(MatFileTest, V4NameLengthBeyondTheFileIsRejectedBeforeMatio) {
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the v4 record at byte 0 claims 1768055160");
 }
 
+// Fuzzing finding (oom-2f72...): a 106-byte v4 sparse record of one entry whose last row (the
+// sparse format's size row) makes it some 26 000 x 26 000; its dense copy, within the old limit of
+// 1e9 entries, allocated 5.6 GB. Dense copies now stop at 1e8 entries (800 MB); the sparse
+// reader still reads it.
+TEST_F(MatFileTest, DenseCopyOfAHugeSparseRecordIsRejected) {
+  const std::string bytes(
+      "\x02\x00\x00\x00\x03\x00\x00\x00\x03\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\x4b\x00\x00\x00"
+      "\x00\x00\x00\x00\xf0\x3f\x00\x00\x00\x00\x00\x00\x00\x40\x00\x00\x00\x00\x00\x00\xbd\x40\x00\x00"
+      "\x00\x00\x00\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\xfe\xf6\x40\x00\xff"
+      "\xff\x08\xff\x00\x20\x41\x80\x45\xcf\x00\x00\x00\x20\x41\x80\x45\x01\x00\x00\x00\x00\x64\x01\xfe"
+      "\x00\x00\x00\x00\x00\x49\x00\x00\x01\x00",
+      106);
+  const std::string path = write_text("dense_copy.mat", bytes);
+  EXPECT_NO_THROW(hbtrack::read_mat_variable_sparse(path, "K"));
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "is too large to read as a dense matrix (limit 100000000 entries, 800 MB)");
+}
+
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {
   const std::string path = path_for("full.mat");
   {
