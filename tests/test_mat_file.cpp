@@ -413,8 +413,8 @@ TEST_F(MatFileTest, V4NameLengthBeyondTheFileIsRejectedBeforeMatio) {
 
 // Fuzzing finding (oom-2f72...): a 106-byte v4 sparse record of one entry whose last row (the
 // sparse format's size row) makes it some 26 000 x 26 000; its dense copy, within the old limit of
-// 1e9 entries, allocated 5.6 GB. Dense copies now stop at 1e8 entries (800 MB); the sparse
-// reader still reads it.
+// 1e9 entries, allocated 5.6 GB. Dense copies now stop at 4000 x 4000 entries (128 MB); the
+// sparse reader still reads it.
 TEST_F(MatFileTest, DenseCopyOfAHugeSparseRecordIsRejected) {
   const std::string bytes(
       "\x02\x00\x00\x00\x03\x00\x00\x00\x03\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\x4b\x00\x00\x00"
@@ -426,7 +426,7 @@ TEST_F(MatFileTest, DenseCopyOfAHugeSparseRecordIsRejected) {
   const std::string path = write_text("dense_copy.mat", bytes);
   EXPECT_NO_THROW(hbtrack::read_mat_variable_sparse(path, "K"));
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
-               "is too large to read as a dense matrix (limit 100000000 entries, 800 MB)");
+               "is too large to read as a dense matrix (limit 16000000 entries, 128 MB)");
 }
 
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {

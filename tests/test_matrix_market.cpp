@@ -162,13 +162,14 @@ TEST_F(MatrixMarketTest, DenseReaderRefusesHugeMatrix) {
   expect_error([&] { hbtrack::read_matrix_market(path); }, path, "too large to read as a dense matrix");
 }
 
-// Issue 39's fuzzing: the dense copy's limit was 1e9 entries (8 GB); it is now 1e8 (800 MB), so
-// a one-entry file of 10001 x 10000 is refused dense, read sparse.
-TEST_F(MatrixMarketTest, DenseReaderStopsAt1e8Entries) {
-  const std::string path = write_text("wide.mtx", "%%MatrixMarket matrix coordinate real general\n10001 10000 1\n5 7 1.0\n");
+// Issue 39's fuzzing: the dense copy's limit was 1e9 entries (8 GB); it is now 4000 x 4000 (128
+// MB, the largest model a case accepts), so a one-entry file of 4001 x 4000 is refused dense,
+// read sparse.
+TEST_F(MatrixMarketTest, DenseReaderStopsAt4000By4000Entries) {
+  const std::string path = write_text("wide.mtx", "%%MatrixMarket matrix coordinate real general\n4001 4000 1\n5 7 1.0\n");
   EXPECT_EQ(hbtrack::read_matrix_market_sparse(path).nonZeros(), 1);
   expect_error([&] { hbtrack::read_matrix_market(path); }, path,
-               "10001 x 10000 is too large to read as a dense matrix (limit 100000000 entries, 800 MB); use the sparse reader");
+               "4001 x 4000 is too large to read as a dense matrix (limit 16000000 entries, 128 MB); use the sparse reader");
 }
 
 TEST_F(MatrixMarketTest, UnderflowingValueReadsAsZero) {

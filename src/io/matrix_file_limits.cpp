@@ -41,7 +41,7 @@ Eigen::MatrixXd to_dense(const std::string& where, const Eigen::SparseMatrix<dou
   const std::int64_t entries = static_cast<std::int64_t>(sparse.rows()) * static_cast<std::int64_t>(sparse.cols());
   if (entries > kMaxDenseEntries)
     fail(where, std::to_string(sparse.rows()) + " x " + std::to_string(sparse.cols()) + " is too large to read as a dense matrix (limit " +
-                    std::to_string(kMaxDenseEntries) + " entries, 800 MB); use the sparse reader");
+                    std::to_string(kMaxDenseEntries) + " entries, 128 MB); use the sparse reader");
   return Eigen::MatrixXd(sparse);
 }
 
