@@ -392,7 +392,10 @@ TEST_F(MatFileTest, GarbageAfterAV4RecordIsRejectedBeforeMatio) {
       "\x00\x00\x00\x40",
       268);
   const std::string path = write_text("v4_garbage.mat", bytes);
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the v4 record at byte 107 has the invalid type");
+  // Its type word at byte 107 is a sparse matrix's (2) stored big-endian, so the record is read
+  // little-endian, as libmatio reads it (M = 0), and its name length is the garbage's 1.2 GB.
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "corrupt MAT file: the v4 record at byte 107 claims 1224818688 + 0 bytes");
 }
 
 // Fuzzing finding (oom-1e5f...): a v4 record whose name length claims 1.7 GB.
@@ -427,6 +430,16 @@ TEST_F(MatFileTest, DenseCopyOfAHugeSparseRecordIsRejected) {
   EXPECT_NO_THROW(hbtrack::read_mat_variable_sparse(path, "K"));
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
                "is too large to read as a dense matrix (limit 16000000 entries, 128 MB)");
+}
+
+// Fuzzing finding (oom-dba0...): a v4 type word stored big-endian whose M digit says little-endian
+// (0). libmatio reads the rest of the record in the order M names, so the name length 0x70 the
+// header check read big-endian was 1.9 GB to libmatio, which allocated it.
+TEST_F(MatFileTest, V4RecordIsReadInTheByteOrderOfItsMDigit) {
+  const std::string header("\x00\x00\x00\x01\x00\x00\x00\x08\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x70", 20);
+  const std::string path = write_text("m0_big_endian.mat", header + std::string(112, '\0'));
+  expect_error([&] { hbtrack::read_mat_variable_sparse(path, "K"); }, path,
+               "corrupt MAT file: the v4 record at byte 0 claims 1879048192 + 0 bytes, 112 remain");
 }
 
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {
