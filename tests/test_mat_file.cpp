@@ -442,6 +442,26 @@ TEST_F(MatFileTest, V4RecordIsReadInTheByteOrderOfItsMDigit) {
                "corrupt MAT file: the v4 record at byte 0 claims 1879048192 + 0 bytes, 112 remain");
 }
 
+// Fuzzing finding (oom-cfce...): a variable (miMATRIX) of 0 bytes at the top level; libmatio
+// read the elements after it as its array flags, dimensions and data, and allocated 4 GB. The
+// elements as the fuzzer wrote them, after a v5 header.
+TEST_F(MatFileTest, VariableTooShortForItsHeaderIsRejectedBeforeMatio) {
+  std::string header(128, ' ');
+  header.replace(0, 10, "MATLAB 5.0");
+  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string elements(
+      "\x0e\x00\x00\x00\x00\x00\x00\x00\x06\x00\x00\x00\x08\x00\x00\x00\x05\x00\x00\x00\x04\x00\x00\x00"
+      "\x05\x00\x00\x00\x08\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\x00\x01\x00\x4b\x00\x00\x00"
+      "\x02\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\x4b\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00\x00"
+      "\x05\x00\x00\x00\x22\x31\x41\x33\x0c\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\xff\xff\xff\xff"
+      "\xff\xff\xff\x00\x00\x00\x00\x00\x00\x00\x00\x00\x1c\x1c\x1c\x1c\x1c\x00\x40\x00\x00\x00\x00\x00"
+      "\x00\xf0\xbf\x00\x00\x00\x00\x00\x00\xf0\xbf\x00\x00\x00\x00\x00\x00\x00\x05\x00\x00\x00\x00\x40",
+      144);
+  const std::string path = write_text("empty_variable.mat", header + elements);
+  expect_error([&] { hbtrack::read_mat_variable_sparse(path, "K"); }, path,
+               "corrupt MAT file: the variable at byte 128 claims 0 bytes, fewer than the 40 of its array flags, dimensions and name");
+}
+
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {
   const std::string path = path_for("full.mat");
   {

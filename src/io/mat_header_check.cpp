@@ -77,6 +77,7 @@ class MatHeaderCheck {
   static constexpr std::uint32_t kMatrix = 14;
   static constexpr std::uint64_t kMaxSparseDimension = matrix_file::kMaxDimension;
   static constexpr std::uint32_t kCompressed = 15;
+  static constexpr std::uint32_t kMinVariableBytes = 40;  // array flags 16, dims tag and 2 dims 16, name tag 8
   static constexpr std::uint64_t kMaxZlibRatio = 1032;
   // From a matrix element's tag: its tag (8), the array flags (8 + 8), the dims tag's type (4).
   static constexpr std::size_t kDimsSizeAt = 28;
@@ -173,6 +174,13 @@ class MatHeaderCheck {
       if (bytes > end - at - 8)
         fail(path_, "corrupt MAT file: the element at byte " + std::to_string(at) + " claims " + std::to_string(bytes) + " bytes, " +
                         std::to_string(end - at - 8) + " remain");
+      // libmatio reads a variable's array flags, dimensions and name tag (40 bytes at least)
+      // whatever size its element claims, so a shorter one had it read the next element as its
+      // own and allocate what that claimed: 4 GB (fuzzing, issue 39). Inside a cell or struct an
+      // empty matrix (0 bytes) is valid; a variable is not.
+      if (type == kMatrix && depth == 0 && bytes < kMinVariableBytes)
+        fail(path_, "corrupt MAT file: the variable at byte " + std::to_string(at) + " claims " + std::to_string(bytes) +
+                        " bytes, fewer than the " + std::to_string(kMinVariableBytes) + " of its array flags, dimensions and name");
       if (type == kMatrix && depth < 8) {
         unsigned char flags_tag[8];
         if (bytes > 0 && read_at(at + 8, flags_tag, 8))
