@@ -98,6 +98,15 @@ class MatWriter {
 // ---------------------------------------------------------------------------------------------
 // MATLAB .mat files
 
+// A v5 file's 128-byte header (text, version 0x0100, little-endian "IM"), for elements written
+// byte by byte.
+std::string v5_header() {
+  std::string header(128, ' ');
+  header.replace(0, 10, "MATLAB 5.0");
+  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  return header;
+}
+
 class MatFileTest : public TempDirTest {
  protected:
   // A v5 file of a dense `rows` x `cols` variable K whose dims sub-element (tag miINT32 = 5, 8
@@ -344,9 +353,7 @@ TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {
 // Fuzzing finding (oom-0338...): inside a compressed (v7) element, a tag claiming 2.5 GB that
 // libmatio allocated on inflating. The element as the fuzzer wrote it, after a v5 header.
 TEST_F(MatFileTest, CompressedTagBeyondZlibsExpansionIsRejectedBeforeMatio) {
-  std::string header(128, ' ');
-  header.replace(0, 10, "MATLAB 5.0");
-  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string header = v5_header();
   const std::string element(
       "\x0f\x00\x00\x00\x2e\x00\x00\x00\x78\x9c\xe3\x63\x60\x60\x08\x00\x62\x35\x20\xe6\x80\xd2\x20\xc0"
       "\x0a\xe5\x32\x41\x31\x23\x10\x7a\x03\x69\x4e\x20\x56\x60\x80\x03\x07\x08\xf5\x61\x3f\x2a\xcd\xe0"
@@ -359,9 +366,7 @@ TEST_F(MatFileTest, CompressedTagBeyondZlibsExpansionIsRejectedBeforeMatio) {
 // Fuzzing finding (oom-dcc1...): the same, but with tags that libmatio does not read as tags:
 // it takes the dims size at a fixed place after the array flags.
 TEST_F(MatFileTest, CompressedDimsSizeAtItsFixedPlaceIsChecked) {
-  std::string header(128, ' ');
-  header.replace(0, 10, "MATLAB 5.0");
-  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string header = v5_header();
   const std::string element(
       "\x0f\x00\x00\x00\x2e\x00\x00\x00\x78\x9c\xe3\x63\x60\x60\x08\x00\x62\x35\x20\xe6\x80\xd2\x20\xc0"
       "\x0a\xe5\x32\x41\x31\x23\x10\x7a\x03\x69\xab\xdf\xa9\x9f\x7f\xfc\xf8\xf7\xf5\x61\x3f\x2a\xcd\xe0"
@@ -446,9 +451,7 @@ TEST_F(MatFileTest, V4RecordIsReadInTheByteOrderOfItsMDigit) {
 // read the elements after it as its array flags, dimensions and data, and allocated 4 GB. The
 // elements as the fuzzer wrote them, after a v5 header.
 TEST_F(MatFileTest, VariableTooShortForItsHeaderIsRejectedBeforeMatio) {
-  std::string header(128, ' ');
-  header.replace(0, 10, "MATLAB 5.0");
-  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string header = v5_header();
   const std::string elements(
       "\x0e\x00\x00\x00\x00\x00\x00\x00\x06\x00\x00\x00\x08\x00\x00\x00\x05\x00\x00\x00\x04\x00\x00\x00"
       "\x05\x00\x00\x00\x08\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\x00\x01\x00\x4b\x00\x00\x00"
