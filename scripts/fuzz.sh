@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the input readers with libFuzzer (clang) under AddressSanitizer + UBSan.
 #   bash scripts/fuzz.sh [TARGET|all] [SECONDS]
-# TARGET: case_file, matrix_market, mat_file, calculix (default all, one after the other);
+# TARGET: case_file, matrix_market, mat_file, calculix, sections (default all, one after the other);
 # SECONDS per target (default 600). JOBS=N sets the build's parallelism (default 2).
 #
 # Needs clang and libFuzzer, from Debian (bookworm): `apt-get install clang libclang-rt-14-dev`
@@ -19,7 +19,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 target=${1:-all}
 seconds=${2:-600}
-targets=(case_file matrix_market mat_file calculix)
+targets=(case_file matrix_market mat_file calculix sections)
 [ "$target" = all ] || targets=("$target")
 
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \

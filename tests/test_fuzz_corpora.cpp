@@ -14,11 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "hbtrack/io/blade_sections_reader.hpp"
 #include "hbtrack/io/calculix_input_nodes.hpp"
 #include "hbtrack/io/calculix_reader.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/io/mat_file.hpp"
 #include "hbtrack/io/matrix_market.hpp"
+#include "hbtrack/model/section_blade.hpp"
 #include "test_support.hpp"
 
 // File-local names in a namespace of this file's own: unity builds compile several test files
@@ -86,6 +88,33 @@ TEST(FuzzCorpora, CalculixInputsLoadOrGiveOneLineErrors) {
       {[](const std::string& p) { hbtrack::read_calculix_matrix(p); }, [](const std::string& p) { hbtrack::read_calculix_dof_map(p); },
        [](const std::string& p) { hbtrack::read_calculix_input_nodes(p); }});
   EXPECT_GE(n, 3);
+}
+
+// As fuzz_sections.cpp and make-blade: the table, then the blade built from it, whose geometry
+// checks refuse with std::invalid_argument (make-blade's bad input, one line too).
+TEST(FuzzCorpora, SectionTablesLoadOrGiveOneLineErrors) {
+  const int n = replay("sections", ".csv", {[](const std::string& p) {
+                         const hbtrack::BladeSections sections = hbtrack::read_blade_sections(p);
+                         try {
+                           hbtrack::generate_section_blade(sections, hbtrack::SectionBladeOptions{});
+                         } catch (const std::invalid_argument& e) {
+                           throw std::runtime_error(e.what());
+                         }
+                       }});
+  EXPECT_GE(n, 10);
+}
+
+// The seeds meant to load still do, so the fuzzers start inside the readers' accepting paths:
+// the templates expand (several nodes, per_node lists), the cut-down rotor 67 tables mesh.
+TEST(FuzzCorpora, TheValidSeedsLoad) {
+  const auto seed = [](const std::string& name) { return hbtrack::test::source_path("fuzz/seeds/" + name); };
+  EXPECT_EQ(hbtrack::load_case(seed("case_file/templates_tip_contact.toml")).elements.size(), 4u);
+  EXPECT_EQ(hbtrack::load_case(seed("case_file/templates_many_nodes.toml")).elements.size(), 10u);
+  for (const char* table : {"rotor67_hub_casing.csv", "rotor67_three_surfaces.csv", "rotor67_four_points.csv", "subnormal_thickness.csv"}) {
+    const hbtrack::SectionBlade blade = hbtrack::generate_section_blade(
+        hbtrack::read_blade_sections(seed(std::string("sections/") + table)), hbtrack::SectionBladeOptions{});
+    EXPECT_EQ(blade.rotation.sense, -1) << table;
+  }
 }
 
 }  // namespace hbtrack_tests::file_fuzz_corpora

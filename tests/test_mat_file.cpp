@@ -98,6 +98,15 @@ class MatWriter {
 // ---------------------------------------------------------------------------------------------
 // MATLAB .mat files
 
+// A v5 file's 128-byte header (text, version 0x0100, little-endian "IM"), for elements written
+// byte by byte.
+std::string v5_header() {
+  std::string header(128, ' ');
+  header.replace(0, 10, "MATLAB 5.0");
+  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  return header;
+}
+
 class MatFileTest : public TempDirTest {
  protected:
   // A v5 file of a dense `rows` x `cols` variable K whose dims sub-element (tag miINT32 = 5, 8
@@ -344,9 +353,7 @@ TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {
 // Fuzzing finding (oom-0338...): inside a compressed (v7) element, a tag claiming 2.5 GB that
 // libmatio allocated on inflating. The element as the fuzzer wrote it, after a v5 header.
 TEST_F(MatFileTest, CompressedTagBeyondZlibsExpansionIsRejectedBeforeMatio) {
-  std::string header(128, ' ');
-  header.replace(0, 10, "MATLAB 5.0");
-  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string header = v5_header();
   const std::string element(
       "\x0f\x00\x00\x00\x2e\x00\x00\x00\x78\x9c\xe3\x63\x60\x60\x08\x00\x62\x35\x20\xe6\x80\xd2\x20\xc0"
       "\x0a\xe5\x32\x41\x31\x23\x10\x7a\x03\x69\x4e\x20\x56\x60\x80\x03\x07\x08\xf5\x61\x3f\x2a\xcd\xe0"
@@ -359,9 +366,7 @@ TEST_F(MatFileTest, CompressedTagBeyondZlibsExpansionIsRejectedBeforeMatio) {
 // Fuzzing finding (oom-dcc1...): the same, but with tags that libmatio does not read as tags:
 // it takes the dims size at a fixed place after the array flags.
 TEST_F(MatFileTest, CompressedDimsSizeAtItsFixedPlaceIsChecked) {
-  std::string header(128, ' ');
-  header.replace(0, 10, "MATLAB 5.0");
-  header.replace(124, 4, std::string("\x00\x01IM", 4));
+  const std::string header = v5_header();
   const std::string element(
       "\x0f\x00\x00\x00\x2e\x00\x00\x00\x78\x9c\xe3\x63\x60\x60\x08\x00\x62\x35\x20\xe6\x80\xd2\x20\xc0"
       "\x0a\xe5\x32\x41\x31\x23\x10\x7a\x03\x69\xab\xdf\xa9\x9f\x7f\xfc\xf8\xf7\xf5\x61\x3f\x2a\xcd\xe0"
@@ -392,7 +397,10 @@ TEST_F(MatFileTest, GarbageAfterAV4RecordIsRejectedBeforeMatio) {
       "\x00\x00\x00\x40",
       268);
   const std::string path = write_text("v4_garbage.mat", bytes);
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the v4 record at byte 107 has the invalid type");
+  // Its type word at byte 107 is a sparse matrix's (2) stored big-endian, so the record is read
+  // little-endian, as libmatio reads it (M = 0), and its name length is the garbage's 1.2 GB.
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "corrupt MAT file: the v4 record at byte 107 claims 1224818688 + 0 bytes");
 }
 
 // Fuzzing finding (oom-1e5f...): a v4 record whose name length claims 1.7 GB.
@@ -409,6 +417,52 @@ TEST_F(MatFileTest, V4NameLengthBeyondTheFileIsRejectedBeforeMatio) {
   bytes.replace(16, 4, std::string("\x78\x61\x62\x69", 4));  // name length 1768055160
   write_text("huge_name.mat", bytes);
   expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "corrupt MAT file: the v4 record at byte 0 claims 1768055160");
+}
+
+// Fuzzing finding (oom-2f72...): a 106-byte v4 sparse record of one entry whose last row (the
+// sparse format's size row) makes it some 26 000 x 26 000; its dense copy, within the old limit of
+// 1e9 entries, allocated 5.6 GB. Dense copies now stop at 4000 x 4000 entries (128 MB); the
+// sparse reader still reads it.
+TEST_F(MatFileTest, DenseCopyOfAHugeSparseRecordIsRejected) {
+  const std::string bytes(
+      "\x02\x00\x00\x00\x03\x00\x00\x00\x03\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\x4b\x00\x00\x00"
+      "\x00\x00\x00\x00\xf0\x3f\x00\x00\x00\x00\x00\x00\x00\x40\x00\x00\x00\x00\x00\x00\xbd\x40\x00\x00"
+      "\x00\x00\x00\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\xfe\xf6\x40\x00\xff"
+      "\xff\x08\xff\x00\x20\x41\x80\x45\xcf\x00\x00\x00\x20\x41\x80\x45\x01\x00\x00\x00\x00\x64\x01\xfe"
+      "\x00\x00\x00\x00\x00\x49\x00\x00\x01\x00",
+      106);
+  const std::string path = write_text("dense_copy.mat", bytes);
+  EXPECT_NO_THROW(hbtrack::read_mat_variable_sparse(path, "K"));
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "is too large to read as a dense matrix (limit 16000000 entries, 128 MB)");
+}
+
+// Fuzzing finding (oom-dba0...): a v4 type word stored big-endian whose M digit says little-endian
+// (0). libmatio reads the rest of the record in the order M names, so the name length 0x70 the
+// header check read big-endian was 1.9 GB to libmatio, which allocated it.
+TEST_F(MatFileTest, V4RecordIsReadInTheByteOrderOfItsMDigit) {
+  const std::string header("\x00\x00\x00\x01\x00\x00\x00\x08\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x70", 20);
+  const std::string path = write_text("m0_big_endian.mat", header + std::string(112, '\0'));
+  expect_error([&] { hbtrack::read_mat_variable_sparse(path, "K"); }, path,
+               "corrupt MAT file: the v4 record at byte 0 claims 1879048192 + 0 bytes, 112 remain");
+}
+
+// Fuzzing finding (oom-cfce...): a variable (miMATRIX) of 0 bytes at the top level; libmatio
+// read the elements after it as its array flags, dimensions and data, and allocated 4 GB. The
+// elements as the fuzzer wrote them, after a v5 header.
+TEST_F(MatFileTest, VariableTooShortForItsHeaderIsRejectedBeforeMatio) {
+  const std::string header = v5_header();
+  const std::string elements(
+      "\x0e\x00\x00\x00\x00\x00\x00\x00\x06\x00\x00\x00\x08\x00\x00\x00\x05\x00\x00\x00\x04\x00\x00\x00"
+      "\x05\x00\x00\x00\x08\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\x00\x01\x00\x4b\x00\x00\x00"
+      "\x02\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\x4b\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00\x00"
+      "\x05\x00\x00\x00\x22\x31\x41\x33\x0c\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\xff\xff\xff\xff"
+      "\xff\xff\xff\x00\x00\x00\x00\x00\x00\x00\x00\x00\x1c\x1c\x1c\x1c\x1c\x00\x40\x00\x00\x00\x00\x00"
+      "\x00\xf0\xbf\x00\x00\x00\x00\x00\x00\xf0\xbf\x00\x00\x00\x00\x00\x00\x00\x05\x00\x00\x00\x00\x40",
+      144);
+  const std::string path = write_text("empty_variable.mat", header + elements);
+  expect_error([&] { hbtrack::read_mat_variable_sparse(path, "K"); }, path,
+               "corrupt MAT file: the variable at byte 128 claims 0 bytes, fewer than the 40 of its array flags, dimensions and name");
 }
 
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {

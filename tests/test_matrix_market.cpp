@@ -162,6 +162,16 @@ TEST_F(MatrixMarketTest, DenseReaderRefusesHugeMatrix) {
   expect_error([&] { hbtrack::read_matrix_market(path); }, path, "too large to read as a dense matrix");
 }
 
+// Issue 39's fuzzing: the dense copy's limit was 1e9 entries (8 GB); it is now 4000 x 4000 (128
+// MB, the largest model a case accepts), so a one-entry file of 4001 x 4000 is refused dense,
+// read sparse.
+TEST_F(MatrixMarketTest, DenseReaderStopsAt4000By4000Entries) {
+  const std::string path = write_text("wide.mtx", "%%MatrixMarket matrix coordinate real general\n4001 4000 1\n5 7 1.0\n");
+  EXPECT_EQ(hbtrack::read_matrix_market_sparse(path).nonZeros(), 1);
+  expect_error([&] { hbtrack::read_matrix_market(path); }, path,
+               "4001 x 4000 is too large to read as a dense matrix (limit 16000000 entries, 128 MB); use the sparse reader");
+}
+
 TEST_F(MatrixMarketTest, UnderflowingValueReadsAsZero) {
   const std::string path = write_text("tiny.mtx", "%%MatrixMarket matrix coordinate real general\n1 2 2\n1 1 1e-400\n1 2 4.9e-324\n");
   const Eigen::MatrixXd matrix = hbtrack::read_matrix_market(path);

@@ -77,6 +77,7 @@ class MatHeaderCheck {
   static constexpr std::uint32_t kMatrix = 14;
   static constexpr std::uint64_t kMaxSparseDimension = matrix_file::kMaxDimension;
   static constexpr std::uint32_t kCompressed = 15;
+  static constexpr std::uint32_t kMinVariableBytes = 40;  // array flags 16, dims tag and 2 dims 16, name tag 8
   static constexpr std::uint64_t kMaxZlibRatio = 1032;
   // From a matrix element's tag: its tag (8), the array flags (8 + 8), the dims tag's type (4).
   static constexpr std::size_t kDimsSizeAt = 28;
@@ -173,6 +174,13 @@ class MatHeaderCheck {
       if (bytes > end - at - 8)
         fail(path_, "corrupt MAT file: the element at byte " + std::to_string(at) + " claims " + std::to_string(bytes) + " bytes, " +
                         std::to_string(end - at - 8) + " remain");
+      // libmatio reads a variable's array flags, dimensions and name tag (40 bytes at least)
+      // whatever size its element claims, so a shorter one had it read the next element as its
+      // own and allocate what that claimed: 4 GB (fuzzing, issue 39). Inside a cell or struct an
+      // empty matrix (0 bytes) is valid; a variable is not.
+      if (type == kMatrix && depth == 0 && bytes < kMinVariableBytes)
+        fail(path_, "corrupt MAT file: the variable at byte " + std::to_string(at) + " claims " + std::to_string(bytes) +
+                        " bytes, fewer than the " + std::to_string(kMinVariableBytes) + " of its array flags, dimensions and name");
       if (type == kMatrix && depth < 8) {
         unsigned char flags_tag[8];
         if (bytes > 0 && read_at(at + 8, flags_tag, 8))
@@ -196,14 +204,21 @@ class MatHeaderCheck {
     while (at + 20 <= size_) {
       unsigned char h[20];
       if (!read_at(at, h, 20)) return;
-      if (at == 0) {
-        swap_ = false;
-        if (word32(h) >= 5000) swap_ = true;  // M digit 1: big-endian; libmatio keeps the first record's order
+      // As libmatio (Mat_VarReadNextInfo4), record by record: the type word is read in either
+      // byte order (swapped when negative or above 4052), then the rest of the record in the order
+      // its M digit names, 0 little-endian, 1 big-endian, whichever order the word itself was in.
+      // Taking the word's own order instead let a big-endian word of M = 0 pass a name length of
+      // 112 that libmatio read little-endian as 1.9 GB (fuzzing, issue 39).
+      swap_ = false;
+      std::uint32_t type = word32(h);
+      if (type > 4052) {  // also a negative int32
+        swap_ = true;
+        type = word32(h);
       }
-      const std::uint32_t type = word32(h);
+      swap_ = type / 1000 == 1;
       const std::uint32_t precision = type / 10 % 10;
       static constexpr std::uint64_t kWidth[] = {8, 4, 4, 2, 2, 1};
-      if (type >= 5000 || precision > 5) {
+      if (type >= 2000 || precision > 5) {
         if (at == 0) return;  // not a v4 file: matio decides
         // libmatio would still allocate the name length this garbage claims, record after record.
         fail(path_, "corrupt MAT file: the v4 record at byte " + std::to_string(at) + " has the invalid type " + std::to_string(type));

@@ -39,9 +39,9 @@ void require_readable_file(const std::string& path) {
 
 Eigen::MatrixXd to_dense(const std::string& where, const Eigen::SparseMatrix<double>& sparse) {
   const std::int64_t entries = static_cast<std::int64_t>(sparse.rows()) * static_cast<std::int64_t>(sparse.cols());
-  if (entries > kMaxEntries)
+  if (entries > kMaxDenseEntries)
     fail(where, std::to_string(sparse.rows()) + " x " + std::to_string(sparse.cols()) + " is too large to read as a dense matrix (limit " +
-                    std::to_string(kMaxEntries) + " entries); use the sparse reader");
+                    std::to_string(kMaxDenseEntries) + " entries, 128 MB); use the sparse reader");
   return Eigen::MatrixXd(sparse);
 }
 

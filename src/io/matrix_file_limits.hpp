@@ -19,6 +19,11 @@ constexpr std::int64_t kMaxDimension = 5'000'000;
 static_assert(kMaxDimension < std::numeric_limits<int>::max());
 // A corrupt or hostile header must not be able to request an absurd allocation.
 constexpr std::int64_t kMaxEntries = 1'000'000'000;
+// The dense readers' copy of a sparse matrix: at most 4000 x 4000 entries (128 MB), the largest
+// model a case file accepts (kMaxModelDofs); larger matrices are read sparse. kMaxEntries (8 GB
+// dense) let a 106-byte sparse .mat record of one entry allocate 5.6 GB, and 1e8 (800 MB) still
+// let such records take 1.7 GB of RSS under the fuzzer (issue 39).
+constexpr std::int64_t kMaxDenseEntries = 16'000'000;
 // Reserve at most this up front; the vector grows only as real entries arrive.
 constexpr std::size_t kMaxReserve = std::size_t{1} << 20;
 
