@@ -320,6 +320,36 @@ TEST(TrackCli, IsolasAtTheTrackedValueItselfFindsTheLimitPointTheCurveStartsFrom
   fs::remove_all(base);
 }
 
+TEST(TrackCli, IsolasAtTheRangeEndACurveStartsFromFindsItsLimitPoint) {
+  // Tracked over [1, 2] from Duffing's LP1 at A = 1, the curve's first leg (towards 1) ends where
+  // it starts: two points, both at A = 1. The crossing of A = 1 is that first point all the same
+  // (the search skipped segments of one value, and so lost it: the rotor 67 study's validation
+  // at mu = 1e-4, the end of its range, found none on the curve started from its own LP).
+  const fs::path base = fs::temp_directory_path() / ("hbtrack_isolas_at_range_end_" + std::to_string(getpid()));
+  fs::remove_all(base);
+  ASSERT_EQ(run_cli("frc " + kDuffingCase + " -q -o " + (base / "frc").string()).exit_code, 0);
+  ASSERT_EQ(run_cli("track " + kDuffingCase + " --from " + (base / "frc").string() + " --lp 1 --param amplitude --range 1:2 -q -o " +
+                    (base / "track").string())
+                .exit_code,
+            0);
+  const nlohmann::json track = read_json((base / "track" / "summary.json").string());
+  ASSERT_GE(track["legs"].size(), 1u);
+  ASSERT_EQ(track["legs"][0]["points"], 2) << "the case this test is about: a first leg of two points at the range's end";
+  ASSERT_EQ(
+      run_cli("isolas " + kDuffingCase + " --from " + (base / "track").string() + " --at 1 -q -o " + (base / "isolas").string()).exit_code,
+      0);
+  // --lp 1 is the limit point of lowest omega (tracking's lp_order "omega").
+  const nlohmann::json nfrc = read_json((base / "frc" / "summary.json").string());
+  double lp1 = INFINITY;
+  for (const auto& sp : nfrc["special_points"])
+    if (sp["type"] == "LP") lp1 = std::min(lp1, sp["omega"].get<double>());
+  const nlohmann::json isolas = read_json((base / "isolas" / "summary.json").string());
+  double nearest = INFINITY;
+  for (const auto& c : isolas["crossings"]) nearest = std::min(nearest, std::abs(c["omega"].get<double>() - lp1));
+  EXPECT_LT(nearest, 1e-8) << "no crossing at LP1 " << lp1;  // both located to the Newton tolerance
+  fs::remove_all(base);
+}
+
 }  // namespace
 
 }  // namespace hbtrack_tests::file_track_cli

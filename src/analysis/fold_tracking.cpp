@@ -266,10 +266,13 @@ std::vector<IsolaCandidate> compute_isolas(const HarmonicBalance& caller, int pa
       const FoldCurvePoint &a = curve[i], &b = curve[i + 1];
       // A crossing of gamma = value inside the segment, or at its end (counted once), or at the
       // first point of a curve (the tracked limit point itself, when value is its parameter's).
-      if (a.leg != b.leg || a.parameter == b.parameter) continue;
+      // The first point counts even when the next one has the same value: a curve started at its
+      // range's end has a first leg of two points, both at the end (the rotor 67 study's
+      // validation at mu = 1e-4 found no crossing on the curve started from its own limit point).
       const bool at_first_point = i == 0 && a.parameter == value;
+      if (a.leg != b.leg || (a.parameter == b.parameter && !at_first_point)) continue;
       if (!((a.parameter - value) * (b.parameter - value) < 0 || b.parameter == value || at_first_point)) continue;
-      const double f = (value - a.parameter) / (b.parameter - a.parameter);
+      const double f = at_first_point ? 0.0 : (value - a.parameter) / (b.parameter - a.parameter);
       IsolaCandidate cand;
       cand.start =
           locate_fold(hbm, parameter, a.x + f * (b.x - a.x), a.omega + f * (b.omega - a.omega), strict, options.continuation, scales);
