@@ -58,6 +58,18 @@ json compare_extrema(const json& extrema, const std::vector<TrackingCurve>& refi
   return rows;
 }
 
+namespace {
+
+// Within kSimulationDetuning (relative omega) of a limit point of `special_points` (entries without
+// a type are limit points): a simulation started there may leave the orbit (the header says why).
+bool near_a_limit_point(double omega, const json& special_points) {
+  for (const auto& sp : special_points)
+    if (sp.value("type", "LP") == "LP" && std::abs(omega - sp.value("omega", 0.0)) <= kSimulationDetuning * std::abs(omega)) return true;
+  return false;
+}
+
+}  // namespace
+
 std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, const json& tracking, const std::string& first_output) {
   std::optional<BranchPoint> best;
   double best_output = -1e300;
@@ -70,8 +82,9 @@ std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, cons
         const auto header_end = b.header.end();
         if (std::find(b.header.begin(), header_end, "stable") == header_end) continue;
         const auto stable = static_cast<size_t>(b.column("stable"));
+        const json folds = isola.value("special_points", json::array());
         for (size_t i = 0; i < b.rows.size(); ++i)
-          if (b.rows[i][stable] == 1.0 && b.rows[i][column] > best_output)
+          if (b.rows[i][stable] == 1.0 && !near_a_limit_point(b.rows[i][0], folds) && b.rows[i][column] > best_output)
             best_output = b.rows[i][column], best = BranchPoint{folder, static_cast<long>(i)};
       }
   return best;
@@ -108,8 +121,10 @@ json validation_against_crossings(const json& validation, const json& crossings,
     double best = 1e300;
     size_t best_k = crossings.size();
     for (size_t k = 0; k < crossings.size(); ++k) {
+      // A crossing outside the case's omega range is located all the same (`isolas` only does
+      // not follow a branch from it): a validation continued beyond the range meets it there.
       const std::string status = crossings[k].value("status", "");
-      if (status != "located" && status != "duplicate") continue;
+      if (status != "located" && status != "duplicate" && status != "outside_range") continue;
       const double d_omega = std::abs(crossings[k].value("omega", 0.0) - omega) / std::abs(omega);
       const double d_output =
           out.empty() ? 0.0 : std::abs(crossings[k].value("max_" + out, 0.0) - output) / std::max(std::abs(output), 1e-300);
@@ -137,14 +152,9 @@ long resonance_simulation_point(const std::string& nfrc_dir, const json& limit_p
   const auto amplitude = static_cast<size_t>(b.column("h1_" + first_output));
   const bool has_stability = std::find(b.header.begin(), b.header.end(), "stable") != b.header.end();
   const auto stable = has_stability ? static_cast<size_t>(b.column("stable")) : 0;
-  auto near_a_fold = [&](double omega) {
-    for (const auto& lp : limit_points)
-      if (std::abs(omega - lp.value("omega", 0.0)) <= kSimulationDetuning * std::abs(omega)) return true;
-    return false;
-  };
   long best = -1;
   for (size_t i = 0; i < b.rows.size(); ++i)
-    if ((!has_stability || b.rows[i][stable] == 1.0) && !near_a_fold(b.rows[i][0]) &&
+    if ((!has_stability || b.rows[i][stable] == 1.0) && !near_a_limit_point(b.rows[i][0], limit_points) &&
         (best < 0 || b.rows[i][amplitude] > b.rows[static_cast<size_t>(best)][amplitude]))
       best = static_cast<long>(i);
   return best;

@@ -22,7 +22,9 @@ nlohmann::json compare_limit_points(const nlohmann::json& nominal, const nlohman
 nlohmann::json compare_extrema(const nlohmann::json& extrema, const std::vector<TrackingCurve>& refined, const std::string& first_output);
 
 // The stable point of largest first output among the isolated branches the study computed
-// (folders relative to the study's): the point a time integration checks.
+// (folders relative to the study's), at least kSimulationDetuning away from each branch's limit
+// points (as resonance_simulation_point): the point a time integration checks. The largest output
+// lies next to the isola's fold, where the rotor 67 study's point (5.6e-4 from it) left the orbit.
 struct BranchPoint {
   std::string folder;
   long point = -1;

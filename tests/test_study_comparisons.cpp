@@ -1,0 +1,71 @@
+// The study's comparisons (apps/hbtrack/study_comparisons.cpp): which crossings a validation
+// NFRC's limit points are matched with, and which isola point a time integration starts from.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "study_comparisons.hpp"
+
+// File-local names in a namespace of this file's own: unity builds compile several test files
+// as one.
+namespace hbtrack_tests::file_study_comparisons {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+json validation_with_a_limit_point(double omega, double max_le) {
+  return {{"special_points", json::array({{{"type", "LP"}, {"omega", omega}, {"max_le", max_le}}})}};
+}
+
+json crossing(const std::string& status, double omega, double max_le) {
+  return {{"status", status}, {"omega", omega}, {"max_le", max_le}};
+}
+
+}  // namespace
+
+TEST(StudyComparisons, ALimitPointBeyondTheCaseRangeIsMatchedWithTheCrossingLocatedThere) {
+  // A validation continued below omega_start meets the lower fold at 535 rad/s; `isolas` locates
+  // the tracking curve's crossing there and marks it outside_range (it follows no branch from it):
+  // it is on the curve all the same (the rotor 67 study counted 14 such limit points as off).
+  const json v = validation_with_a_limit_point(535.0, 1.8e-4);
+  using hbtrack::cli::validation_against_crossings;
+  const json outside = validation_against_crossings(v, json::array({crossing("outside_range", 535.0 * (1 + 1e-9), 1.8e-4)}), "le");
+  EXPECT_EQ(outside["lps_off_the_curves"], 0);
+  EXPECT_TRUE(outside["limit_points"][0]["on_a_tracking_curve"].get<bool>());
+  // A crossing whose Newton failed holds no limit point, nor does one further than kSameLimitPoint.
+  const json failed = validation_against_crossings(v, json::array({crossing("failed", 535.0, 1.8e-4)}), "le");
+  EXPECT_EQ(failed["lps_off_the_curves"], 1);
+  const json far = validation_against_crossings(v, json::array({crossing("outside_range", 535.0 * (1 + 1e-3), 1.8e-4)}), "le");
+  EXPECT_EQ(far["lps_off_the_curves"], 1);
+}
+
+TEST(StudyComparisons, TheIsolaPointToSimulateKeepsAwayFromTheIsolasFolds) {
+  // Rows: omega, max_le, stable. The largest stable output (row 0) is 5e-4 from the fold at 1000;
+  // row 2 is the largest at least kSimulationDetuning (2e-3) from it. Row 1 is unstable.
+  const fs::path dir = fs::temp_directory_path() / ("hbtrack_isola_point_" + std::to_string(getpid()));
+  fs::create_directories(dir / "isolas_mu_1" / "isola_1");
+  std::ofstream(dir / "isolas_mu_1" / "isola_1" / "branch.csv") << "omega,max_le,stable\n"
+                                                                    "999.5,5.0,1\n"
+                                                                    "995.0,4.8,0\n"
+                                                                    "997.0,4.5,1\n"
+                                                                    "990.0,4.0,1\n";
+  auto tracking_with_folds = [](const json& folds) {
+    return json::array(
+        {{{"validations", json::array({{{"isola_branches", json::array({{{"folder", "isolas_mu_1/isola_1"}, {"special_points", folds}}})}}})}}});
+  };
+  const auto away = hbtrack::cli::stable_isola_point(dir.string(), tracking_with_folds(json::array({{{"type", "LP"}, {"omega", 1000.0}}})), "le");
+  ASSERT_TRUE(away.has_value());
+  EXPECT_EQ(away->folder, "isolas_mu_1/isola_1");
+  EXPECT_EQ(away->point, 2);
+  // An NS point is no fold: only limit points keep the simulation away.
+  const auto ns = hbtrack::cli::stable_isola_point(dir.string(), tracking_with_folds(json::array({{{"type", "NS"}, {"omega", 1000.0}}})), "le");
+  ASSERT_TRUE(ns.has_value());
+  EXPECT_EQ(ns->point, 0);
+  fs::remove_all(dir);
+}
+
+}  // namespace hbtrack_tests::file_study_comparisons
