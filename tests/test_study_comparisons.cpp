@@ -21,9 +21,7 @@ json validation_with_a_limit_point(double omega, double max_le) {
   return {{"special_points", json::array({{{"type", "LP"}, {"omega", omega}, {"max_le", max_le}}})}};
 }
 
-json crossing(const std::string& status, double omega, double max_le) {
-  return {{"status", status}, {"omega", omega}, {"max_le", max_le}};
-}
+json crossing(const std::string& status, double omega, double max_le) { return {{"status", status}, {"omega", omega}, {"max_le", max_le}}; }
 
 }  // namespace
 
@@ -49,20 +47,23 @@ TEST(StudyComparisons, TheIsolaPointToSimulateKeepsAwayFromTheIsolasFolds) {
   const fs::path dir = fs::temp_directory_path() / ("hbtrack_isola_point_" + std::to_string(getpid()));
   fs::create_directories(dir / "isolas_mu_1" / "isola_1");
   std::ofstream(dir / "isolas_mu_1" / "isola_1" / "branch.csv") << "omega,max_le,stable\n"
-                                                                    "999.5,5.0,1\n"
-                                                                    "995.0,4.8,0\n"
-                                                                    "997.0,4.5,1\n"
-                                                                    "990.0,4.0,1\n";
+                                                                   "999.5,5.0,1\n"
+                                                                   "995.0,4.8,0\n"
+                                                                   "997.0,4.5,1\n"
+                                                                   "990.0,4.0,1\n";
   auto tracking_with_folds = [](const json& folds) {
     return json::array(
-        {{{"validations", json::array({{{"isola_branches", json::array({{{"folder", "isolas_mu_1/isola_1"}, {"special_points", folds}}})}}})}}});
+        {{{"validations",
+           json::array({{{"isola_branches", json::array({{{"folder", "isolas_mu_1/isola_1"}, {"special_points", folds}}})}}})}}});
   };
-  const auto away = hbtrack::cli::stable_isola_point(dir.string(), tracking_with_folds(json::array({{{"type", "LP"}, {"omega", 1000.0}}})), "le");
+  const auto away =
+      hbtrack::cli::stable_isola_point(dir.string(), tracking_with_folds(json::array({{{"type", "LP"}, {"omega", 1000.0}}})), "le");
   ASSERT_TRUE(away.has_value());
   EXPECT_EQ(away->folder, "isolas_mu_1/isola_1");
   EXPECT_EQ(away->point, 2);
   // An NS point is no fold: only limit points keep the simulation away.
-  const auto ns = hbtrack::cli::stable_isola_point(dir.string(), tracking_with_folds(json::array({{{"type", "NS"}, {"omega", 1000.0}}})), "le");
+  const auto ns =
+      hbtrack::cli::stable_isola_point(dir.string(), tracking_with_folds(json::array({{{"type", "NS"}, {"omega", 1000.0}}})), "le");
   ASSERT_TRUE(ns.has_value());
   EXPECT_EQ(ns->point, 0);
   fs::remove_all(dir);
