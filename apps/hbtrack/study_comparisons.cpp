@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hbtrack/runs/special_point_start.hpp"
 #include "result_folder.hpp"
 #include "study_plan.hpp"
 
@@ -14,11 +15,11 @@ json compare_limit_points(const json& nominal, const json& refined, const std::s
   const std::string key = "max_" + first_output;
   json rows = json::array();
   for (const auto& lp : nominal) {
-    if (lp.value("type", "") != "LP") continue;
+    if (!runs::special_point_is(lp, SpecialPointType::limit_point)) continue;
     const double omega = lp.value("omega", 0.0);
     const json* best = nullptr;
     for (const auto& other : refined)
-      if (other.value("type", "") == "LP" &&
+      if (runs::special_point_is(other, SpecialPointType::limit_point) &&
           (!best || std::abs(other.value("omega", 0.0) - omega) < std::abs(best->value("omega", 0.0) - omega)))
         best = &other;
     json row = {{"omega", omega}, {key, lp.value(key, 0.0)}};
@@ -103,7 +104,7 @@ json validation_against_crossings(const json& validation, const json& crossings,
   int off_the_curves = 0;
   std::vector<bool> used(crossings.size(), false);
   for (const auto& sp : validation.value("special_points", json::array())) {
-    if (sp.value("type", "") != "LP") continue;
+    if (!runs::special_point_is(sp, SpecialPointType::limit_point)) continue;
     const double omega = sp.value("omega", 0.0), output = out.empty() ? 0.0 : sp.value("max_" + out, 0.0);
     double best = 1e300;
     size_t best_k = crossings.size();
