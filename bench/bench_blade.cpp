@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   // Tracking of the resonance limit point in the amplitude, both systems.
   const SpecialPoint* lp = nullptr;
   for (const SpecialPoint& sp : nfrc.continuation.special_points)
-    if (sp.type == "LP" && sp.located && (!lp || sp.lambda > lp->lambda)) lp = &sp;
+    if (sp.type == SpecialPointType::limit_point && sp.located && (!lp || sp.lambda > lp->lambda)) lp = &sp;
   std::vector<Run> tracking;
   if (lp) {
     const double reference = automatic_length_scale(hbm, c.nfrc.omega_start, c.nfrc.omega_end);

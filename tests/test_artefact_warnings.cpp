@@ -12,16 +12,17 @@ using namespace hbtrack;
 
 namespace {
 
+// Types by their names, as summary.json lists them: the tables below read as a result does.
 SpecialPoint special(const char* type, double omega) {
   SpecialPoint p;
-  p.type = type;
+  p.type = parse_special_point_type(type);
   p.lambda = omega;
   return p;
 }
 
 FoldExtremum extremum(const char* type, int index, double omega, double parameter) {
   FoldExtremum e;
-  e.type = type;
+  e.type = parse_curve_extremum_type(type);
   e.index = index;
   e.omega = omega;
   e.parameter = parameter;

@@ -27,7 +27,7 @@ TEST(BranchSwitching, CoupledDuffingBranchIsAsymmetricAndMeetsTheSymmetricOneAtT
   ASSERT_EQ(nfrc.continuation.summary.stop_reason, StopReason::reached_end);
   const SpecialPoint* bp = nullptr;
   for (const SpecialPoint& sp : nfrc.continuation.special_points)
-    if (sp.type == "BP" && sp.located) {
+    if (sp.type == SpecialPointType::branch_point && sp.located) {
       bp = &sp;
       break;
     }
@@ -61,7 +61,9 @@ TEST(BranchSwitching, CoupledDuffingBranchIsAsymmetricAndMeetsTheSymmetricOneAtT
   // branch's asymmetry above (measured: 5e-5).
   const SpecialPoint* meet = nullptr;
   for (const SpecialPoint& sp : s.through.continuation.special_points)
-    if (sp.type == "LP" && sp.located && (!meet || std::abs(sp.lambda - bp->lambda) < std::abs(meet->lambda - bp->lambda))) meet = &sp;
+    if (sp.type == SpecialPointType::limit_point && sp.located &&
+        (!meet || std::abs(sp.lambda - bp->lambda) < std::abs(meet->lambda - bp->lambda)))
+      meet = &sp;
   ASSERT_NE(meet, nullptr);
   EXPECT_NEAR(meet->lambda, bp->lambda, 1e-6 * bp->lambda);
   EXPECT_LT((meet->u - bp->u).cwiseAbs().maxCoeff(), 1e-3 * bp->u.cwiseAbs().maxCoeff());

@@ -7,8 +7,8 @@
 #include <map>
 #include <regex>
 #include <set>
-#include <sstream>
 
+#include "case_key_probe.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "test_support.hpp"
 
@@ -17,8 +17,6 @@
 namespace hbtrack_tests::file_case_file_docs {
 
 namespace {
-
-using KeySet = std::set<std::string>;
 
 // Section name -> the backquoted keys in the first column of its table.
 std::map<std::string, KeySet> documented_keys() {
@@ -50,28 +48,6 @@ std::map<std::string, KeySet> documented_keys() {
       out[section].insert((*it)[1]);
   }
   return out;
-}
-
-// The reader's allowed keys of a section, from "unknown key (expected one of: a, b, c)".
-KeySet accepted_keys(const std::string& section) {
-  const std::string probe = section + ".qqqqqqqqqqqqqqqqqqqqqqqq=1";
-  try {
-    hbtrack::load_case(hbtrack::test::source_path("examples/duffing.toml"), {probe});
-  } catch (const hbtrack::CaseError& e) {
-    const std::string msg = e.what();
-    const std::string marker = "expected one of: ";
-    const size_t at = msg.find(marker);
-    if (at == std::string::npos) {
-      ADD_FAILURE() << section << ": " << msg;
-      return {};
-    }
-    KeySet keys;
-    std::stringstream list(msg.substr(at + marker.size(), msg.find(')', at) - at - marker.size()));
-    for (std::string k; std::getline(list, k, ',');) keys.insert(k.substr(k.find_first_not_of(' ')));
-    return keys;
-  }
-  ADD_FAILURE() << section << ": the reader accepted an unknown key";
-  return {};
 }
 
 }  // namespace

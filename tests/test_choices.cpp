@@ -3,11 +3,11 @@
 // message naming the field and every allowed name.
 #include <gtest/gtest.h>
 
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "choice_round_trip.hpp"
 #include "hbtrack/util/choices.hpp"
 #include "hbtrack/util/stop_reason.hpp"
 
@@ -16,37 +16,6 @@
 namespace hbtrack_tests::file_choices {
 
 using namespace hbtrack;
-
-namespace {
-
-// Each value, to its name and back; the names in table order; every enumerator listed once (the
-// table's values are 0, 1, ... as the enums declare them, without gaps or repeats).
-template <class Choice>
-std::vector<std::string> round_trip_names() {
-  std::vector<std::string> names;
-  std::set<std::string> seen;
-  int expected_value = 0;
-  for (const ChoiceName<Choice>& entry : ChoiceTable<Choice>::names) {
-    EXPECT_EQ(static_cast<int>(entry.value), expected_value++) << entry.name;
-    const std::string name = to_string(entry.value);
-    EXPECT_EQ(parse_choice<Choice>(name), entry.value) << name;
-    EXPECT_TRUE(seen.insert(name).second) << name << " appears twice";
-    names.push_back(name);
-  }
-  return names;
-}
-
-template <class Choice>
-std::string error_for(const std::string& name) {
-  try {
-    parse_choice<Choice>(name);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
-}  // namespace
 
 // The names are a file format: these lists are what existing case files and results hold.
 TEST(Choices, EveryValueRoundTripsThroughItsName) {

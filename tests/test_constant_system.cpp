@@ -58,7 +58,7 @@ TEST(ConstantSystem, FoldTrackingLeavesTheCallersEvaluatorUntouched) {
   const NfrcResult frc = compute_nfrc(finder, nfrc, {});
   const SpecialPoint* lp = nullptr;
   for (const SpecialPoint& sp : frc.continuation.special_points)
-    if (sp.type == "LP" && sp.located && !lp) lp = &sp;
+    if (sp.type == SpecialPointType::limit_point && sp.located && !lp) lp = &sp;
   ASSERT_NE(lp, nullptr) << "the Duffing NFRC has limit points";
 
   const ParameterValues values = hbm.parameter_values();

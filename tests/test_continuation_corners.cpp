@@ -140,7 +140,7 @@ TEST(ContinuationCorners, FollowsLimitPointsAtCorners) {
   EXPECT_NEAR(r.points.back().u(0), 3.0, 1e-9);
   std::vector<double> folds;
   for (const SpecialPoint& sp : r.special_points) {
-    EXPECT_EQ(sp.type, "LP");
+    EXPECT_EQ(sp.type, SpecialPointType::limit_point);
     folds.push_back(sp.lambda);
   }
   ASSERT_EQ(folds.size(), 2u);

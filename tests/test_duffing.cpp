@@ -95,7 +95,7 @@ TEST(Duffing, SevenHarmonicPeakDiffersOnlyByTheHigherHarmonics) {
   EXPECT_NEAR(p.omega, omega_peak, 0.01);
   // Two limit points bracket the unstable middle branch.
   ASSERT_EQ(r.continuation.special_points.size(), 2u);
-  EXPECT_EQ(r.continuation.special_points[0].type, "LP");
+  EXPECT_EQ(r.continuation.special_points[0].type, SpecialPointType::limit_point);
   EXPECT_GT(r.continuation.special_points[0].lambda, r.continuation.special_points[1].lambda);
 }
 

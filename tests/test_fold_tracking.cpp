@@ -41,7 +41,7 @@ struct Duffing {
     o.stability.method = StabilityMethod::none;
     std::vector<SpecialPoint> lps;
     for (const SpecialPoint& sp : compute_nfrc(hbm, o, {}).continuation.special_points)
-      if (sp.type == "LP" && sp.located) lps.push_back(sp);
+      if (sp.type == SpecialPointType::limit_point && sp.located) lps.push_back(sp);
     return lps;
   }
   FoldTrackingResult track(const SpecialPoint& lp, double lo, double hi, const std::string& method) {
@@ -176,7 +176,7 @@ TEST(FoldTracking, DuffingCurvePassesThroughTheLimitPointsOfSeparateNfrcsAndEnds
   ASSERT_TRUE(r.success()) << r.legs.back().stop_reason;
   ASSERT_EQ(r.extrema.size(), 1u);
   const FoldExtremum& cusp = r.extrema[0];
-  EXPECT_EQ(cusp.type, "min");
+  EXPECT_EQ(cusp.type, CurveExtremumType::parameter_min);
   EXPECT_TRUE(cusp.located);
   // The curve's two ends at amplitude 1.8 are the two LPs of the NFRC computed at 1.8.
   Duffing at(1.8);

@@ -204,9 +204,9 @@ TEST(HarmonicSelection, OddHarmonicDuffingEqualsTheFullBasis) {
   const NfrcResult full_nfrc = compute_nfrc(full, full_case.nfrc, full_case.outputs);
   std::vector<double> odd_lps, full_lps;
   for (const auto& sp : odd_nfrc.continuation.special_points)
-    if (sp.type == "LP") odd_lps.push_back(sp.lambda);
+    if (sp.type == SpecialPointType::limit_point) odd_lps.push_back(sp.lambda);
   for (const auto& sp : full_nfrc.continuation.special_points)
-    if (sp.type == "LP") full_lps.push_back(sp.lambda);
+    if (sp.type == SpecialPointType::limit_point) full_lps.push_back(sp.lambda);
   ASSERT_EQ(odd_lps.size(), 2u);
   ASSERT_EQ(full_lps.size(), odd_lps.size());
   for (size_t i = 0; i < odd_lps.size(); ++i) EXPECT_NEAR(odd_lps[i], full_lps[i], 1e-8);

@@ -41,7 +41,7 @@ constexpr double kChange = 4.3;
 class StepMonitor final : public BranchMonitor {
  public:
   explicit StepMonitor(bool lazy) : lazy_(lazy) {}
-  std::vector<std::string> types() const override { return {"PD"}; }
+  std::vector<SpecialPointType> types() const override { return {SpecialPointType::period_doubling}; }
   std::vector<double> test_functions(const BranchPoint& p) override {
     ++evaluations;
     return {std::tanh((p.lambda - kChange) / 1e-3)};

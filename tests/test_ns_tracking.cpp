@@ -55,7 +55,7 @@ struct Absorber {
   std::vector<SpecialPoint> ns_points() {
     std::vector<SpecialPoint> ns;
     for (const SpecialPoint& sp : compute_nfrc(hbm, c.nfrc, {}).continuation.special_points)
-      if (sp.type == "NS" && sp.located) ns.push_back(sp);
+      if (sp.type == SpecialPointType::neimark_sacker && sp.located) ns.push_back(sp);
     std::sort(ns.begin(), ns.end(), [](const SpecialPoint& a, const SpecialPoint& b) { return a.lambda < b.lambda; });
     return ns;
   }
@@ -149,13 +149,13 @@ TEST(NeimarkSackerTracking, AbsorberCurvePassesThroughTheNsPointsOfSeparateNfrcs
   int minima = 0, resonances = 0;
   for (const FoldExtremum& e : r.extrema) {
     EXPECT_TRUE(e.located) << e.type;
-    if (e.type == "min") {
+    if (e.type == CurveExtremumType::parameter_min) {
       ++minima;
       EXPECT_NEAR(e.parameter, 0.0988, 1e-4);
       EXPECT_NEAR(e.omega, 1.1353, 1e-4);
       EXPECT_GT(e.critical_frequency, 0.05);  // a genuine NS point, multipliers well off +1
     }
-    if (e.type == "resonance_1_1") {
+    if (e.type == CurveExtremumType::resonance_1_1) {
       ++resonances;
       // Located on the zero of sin(pi nu / w): nu to the secant's 1e-12 of the bracket.
       EXPECT_LT(e.critical_frequency, 1e-8);
@@ -231,7 +231,7 @@ const std::vector<std::string> kPdWindow{"elements[0].type=\"regularized_contact
 std::vector<SpecialPoint> band_pds(const CaseDefinition& c, HarmonicBalance& hbm) {
   std::vector<SpecialPoint> pds;
   for (const SpecialPoint& sp : compute_nfrc(hbm, c.nfrc, {}).continuation.special_points)
-    if (sp.type == "PD" && sp.located) pds.push_back(sp);
+    if (sp.type == SpecialPointType::period_doubling && sp.located) pds.push_back(sp);
   return pds;
 }
 
@@ -250,7 +250,7 @@ TEST(PeriodDoublingTracking, ContactBandCurvePassesThroughThePdPointsOfSeparateN
   ASSERT_TRUE(r.success()) << to_string(r.stop_reason());
   // One minimum in A: where the band is born (both PDs of the band lie on this one curve).
   ASSERT_EQ(r.extrema.size(), 1u);
-  EXPECT_EQ(r.extrema[0].type, "min");
+  EXPECT_EQ(r.extrema[0].type, CurveExtremumType::parameter_min);
   EXPECT_NEAR(r.extrema[0].parameter, 0.9482, 1e-3);
   EXPECT_NEAR(r.extrema[0].omega, 1.6170, 1e-3);
   // The PD exponent's frequency is w/2 up to Hill's truncation (3e-6 rad/s here).

@@ -78,7 +78,7 @@ TEST(ParameterContinuation, LocatesBothFoldsOfTheAmplitudeSCurveOnTheOneTermOnes
   ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   std::vector<double> found;
   for (const SpecialPoint& sp : r.continuation.special_points)
-    if (sp.type == "LP") {
+    if (sp.type == SpecialPointType::limit_point) {
       EXPECT_TRUE(sp.located);
       found.push_back(sp.lambda);
     }

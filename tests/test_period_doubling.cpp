@@ -63,7 +63,7 @@ PeriodDoubledRun* compute_run(int harmonics) {
   r->nfrc = compute_nfrc(*r->hbm, r->c.nfrc, r->c.outputs,
                          [](const BranchPoint& p, const RecordedPoint&, int) { return p.lambda < kExactPd1 + 2e-3; });
   for (const SpecialPoint& sp : r->nfrc.continuation.special_points)
-    if (sp.type == "PD" && std::abs(sp.lambda - kExactPd1) < 1e-3) r->pd = &sp;
+    if (sp.type == SpecialPointType::period_doubling && std::abs(sp.lambda - kExactPd1) < 1e-3) r->pd = &sp;
   if (!r->pd) return r;
   const auto& points = r->nfrc.continuation.points;
   const size_t i = static_cast<size_t>(r->pd->index);
@@ -84,7 +84,7 @@ const PeriodDoubledRun& run() {
 // Each leg's end, located where its odd harmonics vanish (a located PD special point).
 const SpecialPoint* located_end(const NfrcResult& leg) {
   for (const SpecialPoint& sp : leg.continuation.special_points)
-    if (sp.type == "PD" && sp.located) return &sp;
+    if (sp.type == SpecialPointType::period_doubling && sp.located) return &sp;
   return nullptr;
 }
 

@@ -205,7 +205,7 @@ TEST(Stability, PeriodDoublingFoundWhereTheMonodromyMultipliersShowIt) {
   }
   std::vector<const SpecialPoint*> detected;
   for (const SpecialPoint& sp : r.continuation.special_points)
-    if (sp.type == "PD") detected.push_back(&sp);
+    if (sp.type == SpecialPointType::period_doubling) detected.push_back(&sp);
   ASSERT_GE(monodromy_pd.size(), 2u);
   ASSERT_EQ(detected.size(), monodromy_pd.size());
   for (size_t k = 0; k < detected.size(); ++k) {
@@ -223,7 +223,7 @@ TEST(Stability, SymmetryBreakingBranchPointsOfCoupledOscillators) {
   ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   int branch_points = 0;
   for (const SpecialPoint& sp : r.continuation.special_points) {
-    if (sp.type != "BP") continue;
+    if (sp.type != SpecialPointType::branch_point) continue;
     ++branch_points;
     ASSERT_TRUE(sp.located);
     // The response is symmetric (x1 = x2) and the Jacobian's null vector antisymmetric. The

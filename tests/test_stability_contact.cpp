@@ -88,7 +88,7 @@ void expect_same_special_points(const ContactRun& run, const Reference& ref, dou
   const auto& found = run.r.continuation.special_points;
   ASSERT_EQ(found.size(), ref.special.size()) << "special points";
   for (size_t i = 0; i < found.size(); ++i) {
-    EXPECT_EQ(found[i].type, ref.special[i].type) << "special point " << i << " at " << found[i].lambda;
+    EXPECT_EQ(to_string(found[i].type), ref.special[i].type) << "special point " << i << " at " << found[i].lambda;
     EXPECT_TRUE(found[i].located) << "special point " << i;
     EXPECT_NEAR(found[i].lambda, ref.special[i].omega, tolerance * ref.special[i].omega) << found[i].type << " " << i;
   }
@@ -139,7 +139,7 @@ TEST(StabilityContact, NlvibTwoDofMatchesExactShooting) {
   expect_same_special_points(run, ref, 1e-4);
   expect_same_flags(run, ref, 0, 2e-3);
   for (const SpecialPoint& sp : run.r.continuation.special_points)
-    if (sp.type == "PD" || sp.type == "NS") {
+    if (sp.type == SpecialPointType::period_doubling || sp.type == SpecialPointType::neimark_sacker) {
       EXPECT_EQ(sp.decided_by, "shooting");
     }
 }
@@ -166,7 +166,8 @@ TEST(StabilityContact, TwoDofContactPeriodDoublesByDefault) {
     int band_pds = 0;
     for (const SpecialPoint& sp : run.r.continuation.special_points)
       for (const ReferencePoint& e : ref.special)
-        if (sp.type == "PD" && e.type == "PD" && e.omega > 0.76 && e.omega < 0.77 && std::abs(sp.lambda - e.omega) < 1e-4 * e.omega)
+        if (sp.type == SpecialPointType::period_doubling && e.type == "PD" && e.omega > 0.76 && e.omega < 0.77 &&
+            std::abs(sp.lambda - e.omega) < 1e-4 * e.omega)
           ++band_pds;
     EXPECT_EQ(band_pds, 2) << "the band's two PDs";
   }
@@ -261,7 +262,7 @@ TEST(StabilityContact, HillAloneFindsEveryReferencePointWithItsType) {
     const Reference ref = load_reference(reference);
     expect_same_special_points(run, ref, 1.5e-3);
     for (const SpecialPoint& sp : run.r.continuation.special_points)
-      if (sp.type == "PD" || sp.type == "NS") {
+      if (sp.type == SpecialPointType::period_doubling || sp.type == SpecialPointType::neimark_sacker) {
         EXPECT_EQ(sp.decided_by, "hill");
       }
   }

@@ -40,7 +40,7 @@ ContactPoint compute_upper_branch_point(double target_omega) {
   // Without stability the engine's LP/BP test alone marks points: the fold is the first LP.
   int first_fold = -1;
   for (const SpecialPoint& sp : nfrc.continuation.special_points)
-    if (sp.type == "LP" && first_fold < 0) first_fold = sp.index;
+    if (sp.type == SpecialPointType::limit_point && first_fold < 0) first_fold = sp.index;
   EXPECT_GT(first_fold, 0);
   // The upper branch ends at the first limit point; take its point nearest to the target.
   int best = 0;

@@ -59,7 +59,7 @@ TEST_P(DuffingTimeIntegration, LeavesAnUnstableMiddleBranchSolutionForAStableOne
   // middle branch to the second one, then goes on along the lower branch.
   std::vector<int> folds;
   for (const SpecialPoint& sp : nfrc.continuation.special_points)
-    if (sp.type == "LP") folds.push_back(sp.index);
+    if (sp.type == SpecialPointType::limit_point) folds.push_back(sp.index);
   ASSERT_EQ(folds.size(), 2u);
   const int first_fold = folds[0], second_fold = folds[1];
   ASSERT_GT(second_fold - first_fold, 2);

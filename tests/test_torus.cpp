@@ -37,7 +37,7 @@ struct Absorber {
   std::vector<SpecialPoint> ns_points() {
     std::vector<SpecialPoint> ns;
     for (const SpecialPoint& sp : compute_nfrc(hbm, c.nfrc, {}).continuation.special_points)
-      if (sp.type == "NS" && sp.located) ns.push_back(sp);
+      if (sp.type == SpecialPointType::neimark_sacker && sp.located) ns.push_back(sp);
     std::sort(ns.begin(), ns.end(), [](const SpecialPoint& a, const SpecialPoint& b) { return a.lambda < b.lambda; });
     return ns;
   }

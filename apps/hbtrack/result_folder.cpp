@@ -11,6 +11,7 @@
 
 #include "hbtrack/io/json_file.hpp"
 #include "hbtrack/results/state_columns.hpp"
+#include "hbtrack/runs/special_point_start.hpp"
 
 namespace hbtrack::cli {
 
@@ -119,15 +120,8 @@ Eigen::VectorXd read_unknowns(const CsvTable& table, size_t row, size_t first, c
   }
 }
 
-std::vector<size_t> limit_point_rows(const nlohmann::json& special_points) { return special_point_rows(special_points, "LP"); }
-
-std::vector<size_t> special_point_rows(const nlohmann::json& special_points, const std::string& type) {
-  std::vector<size_t> rows;
-  for (size_t i = 0; i < special_points.size(); ++i)
-    if (special_points[i].value("type", "") == type) rows.push_back(i);
-  const auto omega = [&](size_t row) { return special_points[row].value("omega", 0.0); };
-  std::stable_sort(rows.begin(), rows.end(), [&](size_t a, size_t b) { return omega(a) < omega(b); });
-  return rows;
+std::vector<size_t> limit_point_rows(const nlohmann::json& special_points) {
+  return runs::special_point_rows(special_points, SpecialPointType::limit_point);
 }
 
 std::vector<std::string> hbm_overrides(const std::string& dir, const CaseDefinition& plain) {

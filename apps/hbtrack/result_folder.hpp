@@ -27,11 +27,8 @@ CsvTable read_csv_table(const std::string& path);
 nlohmann::json read_summary(const std::string& dir);
 
 // The rows of summary.json's special_points that are limit points, in increasing omega: LP K is
-// rows[K - 1], the numbering of the figures, the paper and `track --lp K`, whatever order the
-// continuation met them in (a downward sweep meets them from the highest omega).
+// rows[K - 1] (runs::special_point_rows, hbtrack/runs/special_point_start.hpp).
 std::vector<size_t> limit_point_rows(const nlohmann::json& special_points);
-// The same for the special points of `type` ("LP", "NS", "PD"): `track --ns K` and `--pd K`.
-std::vector<size_t> special_point_rows(const nlohmann::json& special_points, const std::string& type);
 
 // What an export writes of a result folder: its summary and its CSV tables (sorted by name).
 // CaseError when `dir` is not a folder, has no readable summary.json or is a sweep's folder.

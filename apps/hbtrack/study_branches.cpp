@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "cli_common.hpp"
+#include "hbtrack/runs/special_point_start.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -50,8 +51,8 @@ std::vector<BranchStep> backbone_steps(const std::vector<StudyBackbone>& backbon
 }
 
 bool switchable(const json& special_point) {
-  const std::string type = special_point.value("type", "");
-  return type == "BP" || type == "PD";
+  return runs::special_point_is(special_point, SpecialPointType::branch_point) ||
+         runs::special_point_is(special_point, SpecialPointType::period_doubling);
 }
 
 BranchStep switch_step(const std::string& case_path, const std::string& nfrc_dir, const json& special_point, int point) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hbtrack/runs/special_point_start.hpp"
 #include "result_folder.hpp"
 #include "study_plan.hpp"
 
@@ -14,11 +15,11 @@ json compare_limit_points(const json& nominal, const json& refined, const std::s
   const std::string key = "max_" + first_output;
   json rows = json::array();
   for (const auto& lp : nominal) {
-    if (lp.value("type", "") != "LP") continue;
+    if (!runs::special_point_is(lp, SpecialPointType::limit_point)) continue;
     const double omega = lp.value("omega", 0.0);
     const json* best = nullptr;
     for (const auto& other : refined)
-      if (other.value("type", "") == "LP" &&
+      if (runs::special_point_is(other, SpecialPointType::limit_point) &&
           (!best || std::abs(other.value("omega", 0.0) - omega) < std::abs(best->value("omega", 0.0) - omega)))
         best = &other;
     json row = {{"omega", omega}, {key, lp.value(key, 0.0)}};
@@ -60,11 +61,13 @@ json compare_extrema(const json& extrema, const std::vector<TrackingCurve>& refi
 
 namespace {
 
-// Within kSimulationDetuning (relative omega) of a limit point of `special_points` (entries without
-// a type are limit points): a simulation started there may leave the orbit (the header says why).
+// Within kSimulationDetuning (relative omega) of a limit point of `special_points`: a simulation
+// started there may leave the orbit (the header says why).
 bool near_a_limit_point(double omega, const json& special_points) {
   for (const auto& sp : special_points)
-    if (sp.value("type", "LP") == "LP" && std::abs(omega - sp.value("omega", 0.0)) <= kSimulationDetuning * std::abs(omega)) return true;
+    if (runs::special_point_is(sp, SpecialPointType::limit_point) &&
+        std::abs(omega - sp.value("omega", 0.0)) <= kSimulationDetuning * std::abs(omega))
+      return true;
   return false;
 }
 
@@ -116,7 +119,7 @@ json validation_against_crossings(const json& validation, const json& crossings,
   int off_the_curves = 0;
   std::vector<bool> used(crossings.size(), false);
   for (const auto& sp : validation.value("special_points", json::array())) {
-    if (sp.value("type", "") != "LP") continue;
+    if (!runs::special_point_is(sp, SpecialPointType::limit_point)) continue;
     const double omega = sp.value("omega", 0.0), output = out.empty() ? 0.0 : sp.value("max_" + out, 0.0);
     double best = 1e300;
     size_t best_k = crossings.size();

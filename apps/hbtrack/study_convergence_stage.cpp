@@ -28,8 +28,8 @@ bool Study::convergence() {
   const json refined = read_summary(dir_ + "/converged/nfrc");
   json report = {{"harmonics", h},
                  {"samples", n},
-                 {"limit_points", compare_limit_points(summary_["nfrc"]["special_points"], refined.value("special_points", json::array()),
-                                                       first_output())},
+                 {"limit_points",
+                  compare_limit_points(summary_["nfrc"]["special_points"], refined.value("special_points", json::array()), first_output())},
                  {"tracking", json::array()}};
   std::vector<Step> steps;
   std::vector<const StudyTrack*> which;
@@ -41,8 +41,8 @@ bool Study::convergence() {
       if (lp == 0) continue;
       const std::string folder = "converged/" + curve.value("folder", std::string());
       steps.push_back({folder,
-                       with_refine({"track", o_.common.case_path, "--from", dir_ + "/converged/nfrc", "--lp", std::to_string(lp),
-                                    "--param", t.parameter, "--range", number_text(t.min) + ":" + number_text(t.max), "--set",
+                       with_refine({"track", o_.common.case_path, "--from", dir_ + "/converged/nfrc", "--lp", std::to_string(lp), "--param",
+                                    t.parameter, "--range", number_text(t.min) + ":" + number_text(t.max), "--set",
                                     "continuation.max_points=" + std::to_string(c_.study.max_points)}),
                        false});
       which.push_back(&t);

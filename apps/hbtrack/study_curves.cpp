@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hbtrack/util/special_point_type.hpp"
 #include "result_folder.hpp"
 
 namespace hbtrack::cli {
@@ -23,7 +24,8 @@ TrackingCurve read_tracking_curve_folder(const std::string& dir, const std::stri
   const nlohmann::json summary = read_summary(dir);
   for (const auto& sp : summary.value("special_points", nlohmann::json::array())) {
     const std::string type = sp.value("type", "");
-    if (type != "min" && type != "max") continue;
+    // The extrema of the parameter; an NS curve's resonance ends are not births or merges.
+    if (type != to_string(CurveExtremumType::parameter_min) && type != to_string(CurveExtremumType::parameter_max)) continue;
     TrackingCurve::Extremum e;
     e.type = type;
     e.value = sp.value(parameter, 0.0);

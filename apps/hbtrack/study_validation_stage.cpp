@@ -27,8 +27,7 @@ bool Study::validation_and_simulation() {
     std::vector<double> probes = probe_values(curves_[t.parameter], t.min, t.max, kProbeOffset);
     // The case's own values (a paper's validation NFRCs), unless one is already there.
     for (double v : t.validate)
-      if (std::none_of(probes.begin(), probes.end(), [&](double p) { return std::abs(p - v) <= 1e-12 * std::abs(v); }))
-        probes.push_back(v);
+      if (std::none_of(probes.begin(), probes.end(), [&](double p) { return std::abs(p - v) <= 1e-12 * std::abs(v); })) probes.push_back(v);
     std::sort(probes.begin(), probes.end());
     for (size_t j = 0; j < probes.size(); ++j) {
       const std::string tag = t.parameter + "_" + std::to_string(j + 1), at = number_text(probes[j]);

@@ -9,6 +9,7 @@
 
 #include "cli_common.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/util/special_point_type.hpp"
 #include "hbtrack/util/stop_reason.hpp"
 #include "result_folder.hpp"
 
@@ -137,8 +138,8 @@ void write_sweep_table(const std::string& dir, const SweepGrid& grid, const std:
             const json s = read_summary(curve);
             row.insert(row.end(), {s.value("stop_reason", ""), std::to_string(s.value("points", 0L))});
             for (const auto& sp : s.value("special_points", json::array())) {
-              minima += sp.value("type", "") == "min";
-              maxima += sp.value("type", "") == "max";
+              minima += sp.value("type", "") == to_string(CurveExtremumType::parameter_min);
+              maxima += sp.value("type", "") == to_string(CurveExtremumType::parameter_max);
             }
           }
         }

@@ -14,6 +14,7 @@
 #include "folder_lock.hpp"
 #include "hbtrack/io/json_file.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/runs/special_point_start.hpp"
 #include "hbtrack/util/stop_reason.hpp"
 #include "result_folder.hpp"
 #include "resume_command.hpp"
@@ -152,7 +153,8 @@ class Sweep {
     if (!tracking_) return true;
     int lp = 0;
     for (const auto& sp : read_summary(nfrc_folder(i)).value("special_points", json::array()))
-      if (sp.value("type", "") == "LP" && !finished_result(folder(i) + "/track_lp" + std::to_string(++lp))) return false;
+      if (runs::special_point_is(sp, SpecialPointType::limit_point) && !finished_result(folder(i) + "/track_lp" + std::to_string(++lp)))
+        return false;
     return true;
   }
 

@@ -9,6 +9,7 @@
 #include "cli_common.hpp"
 #include "cli_monitor.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "hbtrack/runs/special_point_start.hpp"
 #include "hbtrack/runs/switch_branch.hpp"
 #include "result_folder.hpp"
 #include "result_folder_sink.hpp"
@@ -37,30 +38,20 @@ int run_switch(const SwitchOptions& o) {
   const std::string path = o.from + "/summary.json";
   if (!from.contains("special_points") || !from["special_points"].is_array() || from.value("verb", "") != "frc")
     throw CaseError(path + ": special_points missing (is --from a frc result?)");
-  const json& special = from["special_points"];
-  if (point > static_cast<long>(special.size()))
-    throw CaseError("--point: " + std::to_string(point) + " is beyond the " + std::to_string(special.size()) + " special points of " +
-                    path);
-  const json& sp = special[static_cast<size_t>(point - 1)];
-  const std::string type = sp.value("type", "");
-  if (type != "BP" && type != "PD")
-    throw CaseError("--point: special point " + std::to_string(point) + " of " + path + " is a " + type +
-                    "; switch follows the new branch of a BP or the period-doubled branch of a PD");
-  if (type == "PD" && period_one.harmonic_balance.subharmonic != 1)
+  const long rows = static_cast<long>(read_csv_table(o.from + "/states.csv").rows.size());
+  const runs::SwitchPoint at = runs::switch_point(from["special_points"], point, static_cast<size_t>(rows), {"--point", path});
+  if (at.type == SpecialPointType::period_doubling && period_one.harmonic_balance.subharmonic != 1)
     throw CaseError("--point: " + o.from + " is already a period-doubled branch (subharmonic " +
                     std::to_string(period_one.harmonic_balance.subharmonic) + "); switch from a period-T NFRC");
-  const long row = sp.value("index", -1L);
-  const long rows = static_cast<long>(read_csv_table(o.from + "/states.csv").rows.size());
-  if (row < 0 || row >= rows) throw CaseError(path + ": special point " + std::to_string(point) + ": index out of the branch");
-  const auto state = [&](const std::string& file, long r) {
-    const HbmState s = read_hbm_state(o.from + "/" + file, r, hbm);
+  const auto state = [&](const std::string& file, size_t r) {
+    const HbmState s = read_hbm_state(o.from + "/" + file, static_cast<long>(r), hbm);
     return runs::StartPoint{s.omega, s.x, o.from + "/" + file};
   };
-  runs::SwitchOptions run{type,
+  runs::SwitchOptions run{at.type,
                           point,
-                          state("special_states.csv", point - 1),
-                          state("states.csv", std::max(row - 1, 0L)),
-                          state("states.csv", std::min(row + 1, rows - 1)),
+                          state("special_states.csv", at.special_row),
+                          state("states.csv", at.before_row),
+                          state("states.csv", at.after_row),
                           {{"from", o.from}}};
   ResultFolderSink sink(o.common.out_dir);
   Progress progress(o.common.quiet);

@@ -47,7 +47,7 @@ int run_torus(const TorusCliOptions& o) {
     run.n2 = static_cast<int>(n2);
   }
   const CaseDefinition c = case_as_in(o.common, o.from);
-  const HbmState start = starting_point(o.from, "NS", "--ns", k, make_system(c));
+  const HbmState start = starting_point(o.from, SpecialPointType::neimark_sacker, "--ns", k, make_system(c));
   run.start = runs::StartPoint{start.omega, start.x, o.from + "/special_states.csv"};
   run.origin = {{"from", o.from}, {"ns", k}, {"ns_order", "omega"}};
   ResultFolderSink sink(o.common.out_dir);

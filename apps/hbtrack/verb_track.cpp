@@ -63,16 +63,16 @@ struct IsolaOptions {
   bool locate_only = false;
 };
 
-// Which of --lp, --ns, --pd was given (exactly one): its flag, special-point type and value.
+// Which of --lp, --ns, --pd was given (exactly one): its flag, value and what it tracks.
 struct StartFlag {
-  std::string flag, type, value;
+  std::string flag, value;
   TrackedPoint tracked;
 };
 StartFlag start_flag(const TrackOptions& o) {
   std::vector<StartFlag> given;
-  if (!o.lp.empty()) given.push_back({"--lp", "LP", o.lp, TrackedPoint::limit_point});
-  if (!o.ns.empty()) given.push_back({"--ns", "NS", o.ns, TrackedPoint::neimark_sacker});
-  if (!o.pd.empty()) given.push_back({"--pd", "PD", o.pd, TrackedPoint::period_doubling});
+  if (!o.lp.empty()) given.push_back({"--lp", o.lp, TrackedPoint::limit_point});
+  if (!o.ns.empty()) given.push_back({"--ns", o.ns, TrackedPoint::neimark_sacker});
+  if (!o.pd.empty()) given.push_back({"--pd", o.pd, TrackedPoint::period_doubling});
   if (given.empty()) throw CaseError("--lp, --ns or --pd is required (or --resume DIR)");
   if (given.size() > 1) throw CaseError(given[0].flag + " and " + given[1].flag + ": give one point to track");
   return given.front();
@@ -108,7 +108,7 @@ int run_track(TrackOptions o) {
   run.parameter_max = tracking_max;
   run.method = method;
   run.tracked = point.tracked;
-  const HbmState start = starting_point(o.from, point.type, point.flag, k, make_system(c));
+  const HbmState start = starting_point(o.from, special_point_type(point.tracked), point.flag, k, make_system(c));
   run.start = runs::StartPoint{start.omega, start.x, o.from + "/special_states.csv"};
   const std::string key = point.flag.substr(2);  // lp, ns, pd
   run.origin = {{"from", o.from}, {key, k}, {key + "_order", "omega"}};
@@ -165,7 +165,8 @@ int run_isolas(const IsolaOptions& o) {
         s.contains("options") && s["options"].contains("tracking") ? s["options"]["tracking"].value("parameter", "") : "";
     if (name.empty()) throw CaseError(dir + "/summary.json: options.tracking.parameter missing (is --from a track result?)");
     // An NS (PD) curve's points are not limit points: no branch goes through them as a fold.
-    if (const std::string point = s["options"]["tracking"].value("point", "LP"); point != "LP")
+    const std::string point = s["options"]["tracking"].value("point", to_string(SpecialPointType::limit_point));
+    if (parse_tracked_point(point, dir + "/summary.json: options.tracking.point") != TrackedPoint::limit_point)
       throw CaseError("--from: " + dir + " is a curve of " + point + " points; isolas takes limit-point curves (track --lp K)");
     if (!parameter_name.empty() && name != parameter_name)
       throw CaseError("--from: " + dir + " tracks '" + name + "', " + o.from.front() + " tracks '" + parameter_name + "'");

@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     for (const hbtrack::RecordedPoint& p : r.recorded)
       if (!p.outputs.empty() && p.outputs[0].max > peak) peak = p.outputs[0].max, omega_at_peak = p.omega;
     int limit_points = 0;
-    for (const auto& sp : r.continuation.special_points) limit_points += sp.type == "LP";
+    for (const auto& sp : r.continuation.special_points) limit_points += sp.type == hbtrack::SpecialPointType::limit_point;
     std::printf("points %zu peak %.6g at omega %.6g limit_points %d stop %s\n", r.recorded.size(), peak, omega_at_peak, limit_points,
                 hbtrack::to_string(r.continuation.summary.stop_reason).c_str());
     return r.continuation.success() ? 0 : 1;

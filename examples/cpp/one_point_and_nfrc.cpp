@@ -25,6 +25,7 @@ int main() {
       });
   std::printf("frc: %zu points (%d observed), %s\n", nfrc.recorded.size(), seen,
               hbtrack::to_string(nfrc.continuation.summary.stop_reason).c_str());
-  for (const hbtrack::SpecialPoint& sp : nfrc.continuation.special_points) std::printf("  %s at omega %.6f\n", sp.type.c_str(), sp.lambda);
+  for (const hbtrack::SpecialPoint& sp : nfrc.continuation.special_points)
+    std::printf("  %s at omega %.6f\n", hbtrack::to_string(sp.type).c_str(), sp.lambda);
   return nfrc.continuation.success() ? 0 : 1;
 }

@@ -24,6 +24,7 @@ from ._core import require_core
 from .cases import toml_value
 from .progress import checked_progress
 from .settings import case_with, settings_overrides
+from .special_points import SpecialPointType
 from .starts import result_overrides, start_state
 
 # The case's own check of the range, which a start at omega_end breaks.
@@ -305,23 +306,15 @@ def switch(case, start, *, point, progress=None, **settings):
         raise ValueError("start: expected an frc result (from hbtrack.frc, or read_result of an frc folder)")
     if isinstance(point, bool) or not isinstance(point, (int, np.integer)) or point < 1:
         raise ValueError(f"point: must be an integer >= 1, got {point!r}")
-    special = start["special_points"]
-    if point > len(special):
-        raise ValueError(f"point: {point} is beyond the {len(special)} special points of the frc result")
-    sp = special[point - 1]
-    if sp["type"] not in ("BP", "PD"):
-        raise ValueError(f"point: special point {point} is a {sp['type']}; switch follows the new branch of a BP or the "
-                         "period-doubled branch of a PD")
     states = np.asarray(start["states"])
-    row = int(sp.get("index", -1))
-    if not 0 <= row < len(states):
-        raise ValueError(f"point: special point {point}: index {row} is outside the frc result's states")
-    bp = np.asarray(start["special_states"])[point - 1]
-    before, after = states[max(row - 1, 0)], states[min(row + 1, len(states) - 1)]
+    # The point and its neighbours chosen as switch --point chooses them (the library's code).
+    at = require_core().switch_point(start["special_points"], int(point), len(states), "point", "the frc result")
+    bp = np.asarray(start["special_states"])[at["special_row"]]
+    before, after = states[at["before_row"]], states[at["after_row"]]
     progress = checked_progress(progress)
     # As switch --from: the frc result's parameters and harmonic balance, then the caller's.
     run_case = case_with(case, result_overrides(start) + settings_overrides(**settings), "switch")
-    result = require_core().switch(run_case, sp["type"], int(point), bp[0], bp[1:], before[0], before[1:], after[0], after[1:],
+    result = require_core().switch(run_case, at["type"], int(point), bp[0], bp[1:], before[0], before[1:], after[0], after[1:],
                                    progress)
     result["kind"] = "switch"
     return result
@@ -349,28 +342,24 @@ def limit_point(result, lp):
     >>> state = hbtrack.limit_point(nfrc, 1)
     >>> omega, x = state[0], state[1:]
     """
-    return _special_point_state(result, "LP", lp)
+    return _special_point_state(result, SpecialPointType.LIMIT_POINT, lp)
 
 
-# What each of track's keywords starts from, and how its errors name those points.
-_TRACKED = {"lp": ("LP", "limit points"), "ns": ("NS", "NS points"), "pd": ("PD", "PD points")}
+# What each of track's keywords starts from.
+_TRACKED = {"lp": SpecialPointType.LIMIT_POINT, "ns": SpecialPointType.NEIMARK_SACKER, "pd": SpecialPointType.PERIOD_DOUBLING}
 
 
 def _special_point_state(result, kind, k):
-    """The row [omega, x0, ...] of the k-th special point of type `kind` ("LP", "NS", "PD") of an
-    frc result, counted from 1 in increasing omega; ValueError naming the keyword otherwise."""
-    keyword = {v[0]: name for name, v in _TRACKED.items()}[kind]
+    """The row [omega, x0, ...] of the k-th special point of type `kind` (LP, NS, PD) of an frc
+    result, counted from 1 in increasing omega; ValueError naming the keyword otherwise. The
+    library chooses the point, as for the CLI's --lp, --ns and --pd."""
+    keyword = next(name for name, tracked in _TRACKED.items() if tracked == kind)
     if not isinstance(result, dict) or "special_points" not in result or "special_states" not in result:
         raise ValueError("start: expected an frc result (from hbtrack.frc, or read_result of an frc folder)")
     if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
         raise ValueError(f"{keyword}: must be an integer >= 1, got {k!r}")
-    rows = [i for i, sp in enumerate(result["special_points"]) if sp["type"] == kind]
-    rows.sort(key=lambda i: result["special_points"][i]["omega"])  # stable: ties keep their order
-    if not rows and kind != "LP":
-        raise ValueError(f"{keyword}: the frc result has no {_TRACKED[keyword][1]} (an NFRC computed with stability finds them)")
-    if k > len(rows):
-        raise ValueError(f"{keyword}: {k} is beyond the {len(rows)} {_TRACKED[keyword][1]} of the frc result")
-    return result["special_states"][rows[k - 1]]
+    row = require_core().special_point_index(result["special_points"], kind.value, int(k), keyword, "the frc result")
+    return result["special_states"][row]
 
 
 def track(case, start, *, lp=None, ns=None, pd=None, param, range, method="bordered", progress=None, **settings):  # noqa: A002 - the CLI's --range
@@ -426,7 +415,7 @@ def track(case, start, *, lp=None, ns=None, pd=None, param, range, method="borde
     if len(given) != 1:
         raise ValueError("lp, ns or pd: give exactly one point to track" + (f", got {', '.join(n for n, _ in given)}" if given else ""))
     keyword, k = given[0]
-    point = _TRACKED[keyword][0]
+    point = _TRACKED[keyword]
     state = _special_point_state(start, point, k)
     try:
         low, high = (float(v) for v in range)
@@ -435,9 +424,9 @@ def track(case, start, *, lp=None, ns=None, pd=None, param, range, method="borde
     progress = checked_progress(progress)
     # As track --from: the frc result's parameters and harmonic balance, then the caller's.
     run_case = case_with(case, result_overrides(start) + settings_overrides(**settings), "track")
-    if point != "LP" and method != "bordered":
+    if point != SpecialPointType.LIMIT_POINT and method != "bordered":
         raise ValueError(f"method: {keyword} tracks on the bordered Hill pencil only, got {method!r}")
-    result = require_core().track(run_case, state[1:], state[0], param, low, high, method, progress, point)
+    result = require_core().track(run_case, state[1:], state[0], param, low, high, method, progress, point.value)
     result["summary"]["options"]["tracking"].update({keyword: k, f"{keyword}_order": "omega"})
     result["kind"] = "track"
     return result
@@ -487,8 +476,8 @@ def isolas(case, tracks, *, at, progress=None, **settings):
         if not isinstance(t, dict) or "states" not in t or "tracking" not in t.get("summary", {}).get("options", {}):
             raise ValueError("tracks: expected track results (from hbtrack.track, or read_result of a track folder)")
     for t in tracks:  # an NS (PD) curve's points are not limit points: no branch through them
-        point = t["summary"]["options"]["tracking"].get("point", "LP")
-        if point != "LP":
+        point = t["summary"]["options"]["tracking"].get("point", SpecialPointType.LIMIT_POINT.value)
+        if point != SpecialPointType.LIMIT_POINT:
             raise ValueError(f"tracks: a curve of {point} points; isolas takes limit-point curves (track with lp=K)")
     names = {t["summary"]["options"]["tracking"]["parameter"] for t in tracks}
     if len(names) != 1:

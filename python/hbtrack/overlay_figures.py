@@ -11,12 +11,15 @@ import numpy as np
 
 from .figure_style import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
 from .results import output_names, tracking_curve
+from .special_points import CurveExtremumType, SpecialPointType
 
 # Marker of each special point type (LP, BP, PD, NS on branches; min, max of the parameter on
 # limit-point curves), and its legend text.
-SPECIAL_MARKERS = {"LP": ("o", "LP (fold)"), "BP": ("s", "BP (branch point)"), "PD": ("D", "PD (period doubling)"),
-                   "NS": ("P", "NS (Neimark-Sacker)"), "min": ("v", "min of the tracked parameter"),
-                   "max": ("^", "max of the tracked parameter")}
+SPECIAL_MARKERS = {SpecialPointType.LIMIT_POINT: ("o", "LP (fold)"), SpecialPointType.BRANCH_POINT: ("s", "BP (branch point)"),
+                   SpecialPointType.PERIOD_DOUBLING: ("D", "PD (period doubling)"),
+                   SpecialPointType.NEIMARK_SACKER: ("P", "NS (Neimark-Sacker)"),
+                   CurveExtremumType.PARAMETER_MIN: ("v", "min of the tracked parameter"),
+                   CurveExtremumType.PARAMETER_MAX: ("^", "max of the tracked parameter")}
 # Results whose parameter values the legend does not give (they vary one, or have no forcing).
 NO_PARAMETER_VALUE = ("continue", "track", "backbone")
 # Results that live in the (omega, output) plane.
@@ -48,7 +51,7 @@ def describe(result):
         what = f"backbone of mode {options['backbone']['mode']}"
     elif kind == "switch":
         s = options["switch"]
-        what = (f"period-doubled branch of the PD at ω = {s['omega']:.5g}" if s["type"] == "PD"
+        what = (f"period-doubled branch of the PD at ω = {s['omega']:.5g}" if s["type"] == SpecialPointType.PERIOD_DOUBLING
                 else f"branch switched at the {s['type']} at ω = {s['omega']:.5g}")
     elif kind == "continue":
         c = options["continue"]

@@ -16,7 +16,7 @@ import os
 import sys
 
 from .results import read_result, tracking_curve
-from .special_points import numbered_limit_points, tracked_limit_point_label
+from .special_points import CurveExtremumType, numbered_limit_points, tracked_limit_point_label
 
 
 def _load(path):
@@ -63,10 +63,10 @@ def nfrc_table(paper, nfrc, w1b, label):
 def events_table(paper, entry, w1b, w1b_paper):
     """Births (minima of the amplitude along the tracking curves) and merges (maxima)."""
     rows = ["| event | source | omega (rad/s) | omega / omega_1B | A |", "|---|---|---|---|---|"]
-    for kind, name in (("min", "birth"), ("max", "merge")):
+    for kind, name in ((CurveExtremumType.PARAMETER_MIN, "birth"), (CurveExtremumType.PARAMETER_MAX, "merge")):
         for e in sorted((e for e in entry.get("extrema", []) if e["type"] == kind), key=lambda e: e["value"]):
             rows.append(f"| {name} | this model | {e['omega']:.2f} | {e['omega'] / w1b:.4f} | {e['value']:.2f} |")
-        for e in paper["table3_births" if kind == "min" else "table4_merges"]:
+        for e in paper["table3_births" if kind == CurveExtremumType.PARAMETER_MIN else "table4_merges"]:
             rows.append(f"| {name} {e['family']} | paper | {e['omega']:.2f} | {e['omega'] / w1b_paper:.4f} | {e['amplitude']:.2f} |")
     return rows
 
@@ -173,7 +173,7 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
                 label = tracked_limit_point_label(nfrc["summary"].get("special_points", []), track["summary"]["options"]["tracking"])
                 ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=f"{label} tracked")
         for e in entry.get("extrema", []):
-            ax.plot(e["omega"] / w1b, e["value"], "v" if e["type"] == "min" else "^", color="k", ms=6)
+            ax.plot(e["omega"] / w1b, e["value"], "v" if e["type"] == CurveExtremumType.PARAMETER_MIN else "^", color="k", ms=6)
         w_paper = paper["table2_rad_s"]["1B"]
         for key, marker, label in (("table3_births", "v", "paper, births (Table 3)"), ("table4_merges", "^", "paper, merges (Table 4)")):
             pts = paper[key]

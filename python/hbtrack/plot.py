@@ -31,6 +31,7 @@ from . import analysis_figures, branch_figures, plots
 from .output_descriptions import parse_labels
 from .overlay_figures import describe, overlay_figure
 from .results import output_names, read_result
+from .special_points import SpecialPointType
 from .sweep_figures import sweep_figure
 from .torus_figures import torus_figure
 from .units import length_factor, scale_lengths
@@ -67,7 +68,7 @@ def _switched_figures(result, length_unit, factor):
     options = result["summary"]["options"]["switch"]
     origin = _related(result["folder"], options.get("from", ""), factor) if result.get("folder") else None
     origin = origin if origin and origin["kind"] == "frc" else None
-    if options.get("type") == "PD":
+    if options.get("type") == SpecialPointType.PERIOD_DOUBLING:
         return {"period_doubled": analysis_figures.period_doubled_figure(result, origin, length_unit)}
     if not origin or not len(result["branch"]["omega"]):
         return {}

@@ -18,7 +18,7 @@ from .figure_style import (  # noqa: F401 (the names plots has always offered)
     save_figure,
 )
 from .results import output_names, tracking_curve
-from .special_points import tracked_limit_point_label
+from .special_points import CurveExtremumType, SpecialPointType, tracked_limit_point_label
 from .view_angle import least_hidden_view
 
 
@@ -72,17 +72,20 @@ def _tracking_parameter(track):
 
 
 def _extrema(track):
-    return [sp for sp in track.get("special_points", []) if sp["type"] in ("min", "max")]
+    return [sp for sp in track.get("special_points", [])
+            if sp["type"] in (CurveExtremumType.PARAMETER_MIN, CurveExtremumType.PARAMETER_MAX)]
 
 
 def _tracked_type(track):
-    """"LP", "NS" or "PD": what a track result follows (written since NS/PD tracking; LP before)."""
-    return track["summary"]["options"]["tracking"].get("point", "LP")
+    """LP, NS or PD (a SpecialPointType): what a track result follows (written since NS/PD
+    tracking; LP before)."""
+    return SpecialPointType(track["summary"]["options"]["tracking"].get("point", SpecialPointType.LIMIT_POINT))
 
 
 def _resonance_ends(track):
     """The ends of an NS curve where its frequency reaches 0 (1:1) or w/2 (1:2)."""
-    return [sp for sp in track.get("special_points", []) if sp["type"].startswith("resonance_")]
+    return [sp for sp in track.get("special_points", [])
+            if sp["type"] in (CurveExtremumType.RESONANCE_1_1, CurveExtremumType.RESONANCE_1_2)]
 
 
 def _curve_name(track, i, nfrc_special_points):
@@ -90,7 +93,7 @@ def _curve_name(track, i, nfrc_special_points):
     special points are given; else by track's --lp, "limit point 1 tracked"; "NS point 1
     tracked" for an NS (PD) curve."""
     options = track["summary"]["options"]["tracking"]
-    if _tracked_type(track) != "LP":
+    if _tracked_type(track) != SpecialPointType.LIMIT_POINT:
         key = _tracked_type(track).lower()
         return f"{_tracked_type(track)} point {options.get(key, i + 1)} tracked"
     lp = options.get("lp", i + 1)
@@ -143,7 +146,7 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
         drawn.append((curve["omega"], curve[param], _response(curve, name, norm)))
         ax.plot(*drawn[-1], color=f"C{i}", lw=1.4, label=_curve_name(track, i, nfrc_special_points))
         for sp in _extrema(track):
-            ax.scatter([sp["omega"]], [sp[param]], [_response(sp, name, norm)], marker="v" if sp["type"] == "min" else "^", color="k", s=30)
+            ax.scatter([sp["omega"]], [sp[param]], [_response(sp, name, norm)], marker="v" if sp["type"] == CurveExtremumType.PARAMETER_MIN else "^", color="k", s=30)
     for j, nfrc in enumerate(validations):
         value = nfrc["summary"]["options"]["parameters"][param]
         branch = nfrc["branch"]
@@ -204,7 +207,7 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
         if start:
             ax.plot([start["omega"]], [start[param]], "o", color=f"C{i}", ms=5)
         for sp in _extrema(track):
-            ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == "min" else "^", color="k", ms=7, zorder=5)
+            ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == CurveExtremumType.PARAMETER_MIN else "^", color="k", ms=7, zorder=5)
             coordinates.append((sp["omega"], sp[param], f"({sp['omega']:.6g}, {sp[param]:.4g})"))
             kinds.add(sp["type"])
         for sp in _resonance_ends(track):
@@ -218,19 +221,20 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
         ax.axhline(at, color="0.5", lw=0.8, ls=":", label=f"{param} = {at:g}")
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
-    ax.set_title("limit-point tracking (o: start)" if tracked == ["LP"] else f"{', '.join(tracked)} tracking (o: start)", fontsize=10)
+    ax.set_title("limit-point tracking (o: start)" if tracked == [SpecialPointType.LIMIT_POINT] else f"{', '.join(tracked)} tracking (o: start)", fontsize=10)
     ax.grid(alpha=0.3)
     # The paper's Fig. 7: a minimum of the parameter along a curve is where a pair of limit points
     # is born (an isola appears, or a fold on the main branch), a maximum where a pair vanishes
     # (an isola merges).
     from matplotlib.lines import Line2D
-    meaning = {"min": ("v", f"min of {param}: a pair of limit points born"), "max": ("^", f"max of {param}: a pair merges")}
-    if tracked != ["LP"]:  # on an NS (PD) curve a pair of NS (PD) points, the edges of an unstable band
-        points = "limit (NS, PD) points" if "LP" in tracked else f"{'/'.join(tracked)} points: an unstable band"
-        meaning = {"min": ("v", f"min of {param}: a pair of {points} born"), "max": ("^", f"max of {param}: a pair merges")}
+    born, merged = CurveExtremumType.PARAMETER_MIN, CurveExtremumType.PARAMETER_MAX
+    meaning = {born: ("v", f"min of {param}: a pair of limit points born"), merged: ("^", f"max of {param}: a pair merges")}
+    if tracked != [SpecialPointType.LIMIT_POINT]:  # on an NS (PD) curve a pair of NS (PD) points, the edges of an unstable band
+        points = "limit (NS, PD) points" if SpecialPointType.LIMIT_POINT in tracked else f"{'/'.join(tracked)} points: an unstable band"
+        meaning = {born: ("v", f"min of {param}: a pair of {points} born"), merged: ("^", f"max of {param}: a pair merges")}
     meaning["resonance"] = ("s", "NS curve ends on a fold (NS frequency 0)")
     extra = [Line2D([], [], marker=meaning[k][0], color="k", ls="none", mfc="none" if k == "resonance" else "k", ms=7, label=meaning[k][1])
-             for k in ("min", "max", "resonance") if k in kinds]
+             for k in (born, merged, "resonance") if k in kinds]
     handles, labels = ax.get_legend_handles_labels()
     ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=8)
     fig.tight_layout()

@@ -8,6 +8,7 @@ from ._core import require_core
 from .analysis import _special_point_state
 from .progress import checked_progress
 from .settings import case_with, settings_overrides
+from .special_points import SpecialPointType
 from .starts import result_overrides
 
 
@@ -69,7 +70,7 @@ def torus(case, start, *, ns, range, harmonics=None, samples=None, progress=None
     >>> band = hbtrack.torus(case, nfrc, ns=1, range=(1.0, 1.3))
     >>> band["branch"]["max_x2"].max()                       # the largest absorber motion on the torus
     """
-    state = _special_point_state(start, "NS", ns)
+    state = _special_point_state(start, SpecialPointType.NEIMARK_SACKER, ns)
     try:
         low, high = (float(v) for v in range)
     except (TypeError, ValueError):

@@ -1,10 +1,76 @@
-"""The names of special points, one numbering for every figure and table: per type, in increasing
+"""The special points' types, named once (SpecialPointType, CurveExtremumType: the names
+summary.json writes), and their labels, one numbering for every figure and table: per type, in increasing
 omega (LP1 is the limit point of lowest frequency, as the paper numbers them), whatever order
 the continuation met them in. summary.json lists them in that order, which is reversed on a
 sweep downward (rotor 67). `hbtrack track --lp K` counts in omega order too (its summary says
 options.tracking.lp_order = "omega"); tracking results written before that counted in
 summary.json's order, which limit_point_label translates.
 """
+
+import enum
+
+
+class SpecialPointType(enum.StrEnum):
+    """A special point of a branch, by the name summary.json gives it (the C++ table's,
+    include/hbtrack/util/special_point_type.hpp; python/tests/test_special_point_names.py checks
+    they agree). Members are str: ``sp["type"] == SpecialPointType.LIMIT_POINT``.
+
+    Examples
+    --------
+    >>> SpecialPointType("NS") is SpecialPointType.NEIMARK_SACKER
+    True
+    """
+
+    LIMIT_POINT = "LP"
+    BRANCH_POINT = "BP"
+    PERIOD_DOUBLING = "PD"
+    NEIMARK_SACKER = "NS"
+    RESONANCE_1_1 = "R1"  # where an NS curve's frequency reaches 0: ends a tracking leg
+    RESONANCE_1_2 = "R2"  # ... reaches w/2
+
+
+class CurveExtremumType(enum.StrEnum):
+    """A special point of a tracking curve (track's special_points), by its summary.json name.
+
+    Examples
+    --------
+    >>> CurveExtremumType("min") is CurveExtremumType.PARAMETER_MIN
+    True
+    """
+
+    PARAMETER_MIN = "min"  # a pair of special points is born
+    PARAMETER_MAX = "max"  # a pair merges
+    RESONANCE_1_1 = "resonance_1_1"  # an NS curve ends on a fold curve
+    RESONANCE_1_2 = "resonance_1_2"  # an NS curve ends on a PD curve
+
+
+def parse_special_point_type(name, field="special point type"):
+    """The SpecialPointType named `name`, as the C++ parser reads it.
+
+    Parameters
+    ----------
+    name : str
+        A name of summary.json's special_points[].type.
+    field : str, optional
+        Where it was read, for the error.
+
+    Returns
+    -------
+    SpecialPointType
+        The type; ValueError "FIELD: must be LP, BP, PD, NS, R1 or R2, got 'x'" (the C++
+        message) for another name.
+
+    Examples
+    --------
+    >>> parse_special_point_type("BP")
+    <SpecialPointType.BRANCH_POINT: 'BP'>
+    """
+    try:
+        return SpecialPointType(name)
+    except ValueError:
+        names = [t.value for t in SpecialPointType]
+        raise ValueError(f"{field}: must be {', '.join(names[:-1])} or {names[-1]}, got '{name}'") from None
+
 
 
 def numbered_special_points(special_points):
@@ -49,7 +115,7 @@ def numbered_limit_points(special_points):
     >>> numbered_limit_points([{"type": "LP", "omega": 2.0}, {"type": "BP", "omega": 1.5}, {"type": "LP", "omega": 1.0}])
     [('LP1', {'type': 'LP', 'omega': 1.0}), ('LP2', {'type': 'LP', 'omega': 2.0})]
     """
-    return [(label, sp) for label, sp in numbered_special_points(special_points) if sp["type"] == "LP"]
+    return [(label, sp) for label, sp in numbered_special_points(special_points) if sp["type"] == SpecialPointType.LIMIT_POINT]
 
 
 def limit_point_label(special_points, lp, lp_order="summary"):
@@ -78,7 +144,7 @@ def limit_point_label(special_points, lp, lp_order="summary"):
     >>> limit_point_label([{"type": "LP", "omega": 2.0}, {"type": "LP", "omega": 1.0}], 1, "omega")
     'LP1'
     """
-    lps = [sp for sp in special_points if sp["type"] == "LP"]
+    lps = [sp for sp in special_points if sp["type"] == SpecialPointType.LIMIT_POINT]
     if not 1 <= lp <= len(lps):
         return "LP?"
     if lp_order == "omega":

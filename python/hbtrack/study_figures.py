@@ -22,6 +22,7 @@ from .analysis_figures import period_doubled_figure
 from .overlay_figures import overlay_figure
 from .plot import figures_for
 from .results import read_result
+from .special_points import SpecialPointType
 from .study_paper_figures import nfrc_isolas_simulation_figure
 from .units import length_factor, scale_lengths
 
@@ -39,7 +40,7 @@ def _nfrc_figures(study_dir, summary, length_unit, read=read_result):
                                       title="nominal NFRC and the branches beside it (solid: stable, dashed: unstable)")}
     for result in beside:
         options = result["summary"]["options"]
-        if result["kind"] == "switch" and options["switch"]["type"] == "PD" and len(result["branch"]["omega"]):
+        if result["kind"] == "switch" and options["switch"]["type"] == SpecialPointType.PERIOD_DOUBLING and len(result["branch"]["omega"]):
             figures[f"period_doubled_{options['switch']['point']}"] = period_doubled_figure(result, nfrc, length_unit)
     return figures
 

@@ -5,6 +5,7 @@ python/plot_torus.py, docs/analyses.md)."""
 import numpy as np
 
 from .plots import OMEGA_LABEL, length_label, plt
+from .special_points import SpecialPointType
 
 
 def simulated_max(simulation, name):
@@ -45,7 +46,7 @@ def _draw_nfrc(axes, nfrc, name):
             start = i
     axes.plot([], [], color="tab:blue", label="NFRC, stable")
     axes.plot([], [], color="tab:blue", linestyle="--", label="NFRC, unstable")
-    ns = [p for p in nfrc.get("special_points", []) if p["type"] == "NS"]
+    ns = [p for p in nfrc.get("special_points", []) if p["type"] == SpecialPointType.NEIMARK_SACKER]
     axes.plot([p["omega"] for p in ns], [p["max_" + name] for p in ns], "o", color="black", markerfacecolor="white", markersize=7,
               label="NS points", zorder=4)
 

@@ -44,17 +44,12 @@ py::dict modes(const CaseDefinition& c, int count) {
   return out;
 }
 
-// `hbtrack track` from a limit point (point "LP"; "NS", "PD": a Neimark-Sacker or
+// `hbtrack track` from a limit point (point LP; NS, PD: a Neimark-Sacker or
 // period-doubling point) (x, omega) of an NFRC of the same case.
 py::dict track(const CaseDefinition& c, const Eigen::VectorXd& x, double omega, const std::string& param, double parameter_min,
                double parameter_max, TrackingMethod method, const py::object& progress, const std::string& point) {
   runs::TrackOptions options;
-  if (point == "NS")
-    options.tracked = TrackedPoint::neimark_sacker;
-  else if (point == "PD")
-    options.tracked = TrackedPoint::period_doubling;
-  else if (point != "LP")
-    throw CaseError("point: must be LP, NS or PD, got '" + point + "'");
+  options.tracked = parse_tracked_point(point, "point");
   options.parameter = param;
   options.parameter_min = parameter_min;
   options.parameter_max = parameter_max;
@@ -123,8 +118,8 @@ void bind_analysis(py::module_& m) {
   m.def("solve", &solve, py::arg("case"), py::arg("omega"), "one periodic solution at omega: {branch, states, dof_states, summary}");
   m.def("modes", &modes, py::arg("case"), py::arg("count") = 10, "the lowest natural frequencies of the case's model: {summary}");
   m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
-        py::arg("parameter_max"), py::arg("method") = "bordered", py::arg("progress") = py::none(), py::arg("point") = "LP",
-        "limit point (NS, PD point) (x, omega) tracked in param");
+        py::arg("parameter_max"), py::arg("method") = "bordered", py::arg("progress") = py::none(),
+        py::arg("point") = to_string(SpecialPointType::limit_point), "limit point (NS, PD point) (x, omega) tracked in param");
   m.def("torus", &torus, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("omega_min"), py::arg("omega_max"), py::arg("h1") = 0,
         py::arg("h2") = 4, py::arg("n1") = 0, py::arg("n2") = 0, py::arg("progress") = py::none(),
         "the torus branch born at the NS point (x, omega), continued in omega within [omega_min, omega_max]");

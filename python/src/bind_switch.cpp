@@ -12,9 +12,9 @@ namespace hbtrack::python {
 
 namespace {
 
-// type: "BP" or "PD"; (omega, x) the point; before/after its neighbours on the NFRC.
+// type: "BP" or "PD" (the caster parses the name); (omega, x) the point; before/after its neighbours on the NFRC.
 // progress(fraction, point, omega): each of the two legs counts for half.
-py::dict switch_branch(const CaseDefinition& period_one, const std::string& type, int point, double omega, const Eigen::VectorXd& x,
+py::dict switch_branch(const CaseDefinition& period_one, SpecialPointType type, int point, double omega, const Eigen::VectorXd& x,
                        double omega_before, const Eigen::VectorXd& x_before, double omega_after, const Eigen::VectorXd& x_after,
                        const py::object& progress) {
   const runs::SwitchOptions options{type, point, {omega, x, "start"}, {omega_before, x_before, "start"}, {omega_after, x_after, "start"}};

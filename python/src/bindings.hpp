@@ -26,6 +26,7 @@ void bind_timeint(py::module_& m);
 void bind_model(py::module_& m);
 void bind_continuation(py::module_& m);
 void bind_switch(py::module_& m);
+void bind_special_points(py::module_& m);
 void bind_elements(py::module_& m);
 // On the Case class: `continuation` (the case file's [continuation] section), the deprecated
 // `nfrc`, and with_overrides.
@@ -33,6 +34,9 @@ void bind_case_settings(py::module_& m, py::class_<CaseDefinition>& case_class);
 
 // summary.json as the Python json module would read it (same keys, same numbers).
 py::object to_python(const nlohmann::json& document);
+// A Python object of JSON types (a result's special_points, as to_python gives them or
+// read_result reads them) as a JSON document; numpy scalars count as numbers.
+nlohmann::json from_python(const py::handle& object);
 
 // A table the CLI writes as CSV, kept in memory: header and rows.
 struct Table {

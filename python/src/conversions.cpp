@@ -12,6 +12,12 @@ py::object to_python(const nlohmann::json& document) {
   return py::module_::import("json").attr("loads")(document.dump());
 }
 
+nlohmann::json from_python(const py::handle& object) {
+  const py::object as_number = py::module_::import("builtins").attr("float");
+  const std::string text = py::module_::import("json").attr("dumps")(object, py::arg("default") = as_number).cast<std::string>();
+  return nlohmann::json::parse(text);
+}
+
 py::dict Table::columns() const {
   py::dict out;
   for (size_t j = 0; j < header.size(); ++j) {

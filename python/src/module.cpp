@@ -27,5 +27,6 @@ PYBIND11_MODULE(_hbtrack, m) {
   hbtrack::python::bind_model(m);
   hbtrack::python::bind_continuation(m);
   hbtrack::python::bind_switch(m);
+  hbtrack::python::bind_special_points(m);
   hbtrack::python::bind_elements(m);
 }

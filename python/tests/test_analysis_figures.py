@@ -173,5 +173,5 @@ def test_switch_from_python_equals_the_cli(coupled_study):
     assert api["kind"] == "switch" and api["summary"]["stop_reason"] == "completed"
     assert_same_columns(api["branch"], cli["branch"])
     assert_same_special_points(api["special_points"], cli["special_points"])
-    with pytest.raises(ValueError, match="special point 1 is a LP"):
+    with pytest.raises(ValueError, match="special point 1 of the frc result is a LP"):
         hbtrack.switch(case, read_result(coupled_study["nfrc"]), point=1)

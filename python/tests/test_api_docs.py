@@ -24,7 +24,7 @@ SELF_CONTAINED = ["hbtrack.arrays.is_sparse", "hbtrack.arrays.as_matrix", "hbtra
                   "hbtrack.figure_style.length_label", "hbtrack.figure_style.parameter_label", "hbtrack.plots.harmonic_signal",
                   "hbtrack.plots.harmonic_amplitudes", "hbtrack.overlay_figures.describe",
                   "hbtrack.special_points.numbered_special_points", "hbtrack.special_points.numbered_limit_points",
-                  "hbtrack.special_points.limit_point_label",
+                  "hbtrack.special_points.limit_point_label", "hbtrack.special_points.parse_special_point_type",
                   "hbtrack.settings.settings_overrides", "hbtrack.starts.result_overrides", "hbtrack.starts.start_state",
                   "hbtrack.progress.checked_progress", "hbtrack.results.harmonic_label"]
 # The computations: each takes progress= and the case's settings as keywords, documented.

@@ -1,5 +1,7 @@
 """Options are Python classes named as the C++ fields, the case keys and the CLI flags; they
 round-trip through attributes, keywords and repr, and a Case's options are live references."""
+import re
+
 import pytest
 
 import hbtrack
@@ -35,6 +37,25 @@ def test_names_are_the_case_file_keys(duffing_frc):
     nfrc_only = {"omega_start", "omega_end", "length_scale"}
     assert sorted(hbtrack.ContinuationOptions.fields) == sorted(k for k in written if k not in nfrc_only)
     assert sorted(hbtrack.StabilityOptions.fields) == sorted(duffing_frc["summary"]["options"]["stability"])
+
+
+def reader_keys(section):
+    """The case-file reader's keys of a section (the source of truth of the option names), from
+    its message for a key nowhere near a valid one."""
+    with pytest.raises(ValueError) as error:
+        hbtrack.load_case(DUFFING, set={f"{section}.qqqqqqqqqqqqqqqqqqqqqqqq": 1})
+    return set(re.search(r"expected one of: ([^)]*)\)", str(error.value)).group(1).split(", "))
+
+
+@pytest.mark.parametrize("section, fields", [
+    ("continuation", set(hbtrack.ContinuationOptions.fields) | set(hbtrack.NfrcOptions.fields) - {"continuation", "stability"}),
+    ("continuation", set(hbtrack.ContinuationSection.fields)),  # case.continuation, python/src/bind_case_settings.cpp
+    ("stability", set(hbtrack.StabilityOptions.fields)),
+    ("harmonic_balance", set(hbtrack.HarmonicBalanceOptions.fields))])
+def test_option_classes_bind_every_key_the_reader_accepts(section, fields):
+    # A key added to the reader and not to the binders (or the reverse) fails here;
+    # tests/test_option_lists.cpp checks summary.json's and with_overrides' lists the same way.
+    assert fields == reader_keys(section)
 
 
 def test_overrides_and_case_options_round_trip():

@@ -38,6 +38,29 @@ StopReason FoldTrackingResult::stop_reason() const {
   return closed ? StopReason::closed : capped ? StopReason::max_points : StopReason::completed;
 }
 
+SpecialPointType special_point_type(TrackedPoint tracked) {
+  switch (tracked) {
+    case TrackedPoint::neimark_sacker:
+      return SpecialPointType::neimark_sacker;
+    case TrackedPoint::period_doubling:
+      return SpecialPointType::period_doubling;
+    case TrackedPoint::limit_point:
+      break;
+  }
+  return SpecialPointType::limit_point;
+}
+
+TrackedPoint parse_tracked_point(const std::string& name, std::string_view field) {
+  constexpr TrackedPoint trackable[] = {TrackedPoint::limit_point, TrackedPoint::neimark_sacker, TrackedPoint::period_doubling};
+  std::string names[std::size(trackable)];
+  for (size_t i = 0; i < std::size(trackable); ++i) {
+    names[i] = to_string(special_point_type(trackable[i]));
+    if (names[i] == name) return trackable[i];
+  }
+  const std::string_view views[] = {names[0], names[1], names[2]};
+  throw_unknown_choice(field, views, name);
+}
+
 bool FoldTrackingResult::success() const {
   const StopReason reason = stop_reason();
   return reason == StopReason::closed || reason == StopReason::max_points || reason == StopReason::completed;
@@ -67,9 +90,9 @@ std::string size_misfit(const std::string& field, Eigen::Index size, Eigen::Inde
 class ResonanceMonitor final : public BranchMonitor {
  public:
   explicit ResonanceMonitor(const CriticalExponentSystem& system) : system_(system) {}
-  std::vector<std::string> types() const override { return {"R1", "R2"}; }
+  std::vector<SpecialPointType> types() const override { return {SpecialPointType::resonance_1_1, SpecialPointType::resonance_1_2}; }
   std::vector<double> test_functions(const BranchPoint& p) override { return system_.resonance_tests(p.u); }
-  std::string classify(const std::string& type, const BranchPoint&, bool, std::string& decided_by) override {
+  std::optional<SpecialPointType> classify(SpecialPointType type, const BranchPoint&, bool, std::string& decided_by) override {
     decided_by = "hill";
     ended = true;
     return type;
@@ -84,12 +107,12 @@ class ResonanceMonitor final : public BranchMonitor {
 // along the leg just before it. The bracket is the pair of neighbours whose tangents' lambda
 // components (`slopes`, one per leg point) differ in sign (the engine reports the nearer of the
 // two as `index`).
-std::string extremum_type(const std::vector<double>& slopes, int index) {
+CurveExtremumType extremum_type(const std::vector<double>& slopes, int index) {
   auto rising = [&](int k) { return slopes[static_cast<size_t>(k)] > 0; };
   const int last = static_cast<int>(slopes.size()) - 1;
   int before = index;
   if (index + 1 > last || rising(index) == rising(index + 1)) before = std::max(index - 1, 0);
-  return rising(before) ? "max" : "min";
+  return rising(before) ? CurveExtremumType::parameter_max : CurveExtremumType::parameter_min;
 }
 
 }  // namespace
@@ -205,9 +228,9 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
           return add_point(p.u, p.lambda);
         },
         resonance.get(), leg_restart);
-    const auto extremum_at = [&](const SpecialPoint& sp, std::string type, int index) {
+    const auto extremum_at = [&](const SpecialPoint& sp, CurveExtremumType type, int index) {
       FoldExtremum e;
-      e.type = std::move(type);
+      e.type = type;
       e.located = sp.located;
       e.x = system->harmonics(sp.u);
       e.omega = system->omega(sp.u);
@@ -221,7 +244,9 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
     // The located resonance is the leg's last point (its bracket's far end is not kept).
     const SpecialPoint* end = nullptr;
     for (const SpecialPoint& sp : c.special_points)
-      if (!end && resonance && resonance->ended && (sp.type == "R1" || sp.type == "R2")) end = &sp;
+      if (!end && resonance && resonance->ended &&
+          (sp.type == SpecialPointType::resonance_1_1 || sp.type == SpecialPointType::resonance_1_2))
+        end = &sp;
     if (end) {
       c.summary.stop_reason = StopReason::strong_resonance;
       if (!stopped) add_point(end->u, end->lambda);
@@ -232,11 +257,14 @@ FoldTrackingResult track_fold(const HarmonicBalance& hbm, int parameter, const V
     const auto at_end = [&](const SpecialPoint& sp) { return end && sp.index >= end->index - 1; };
     result.legs.push_back(c.summary);
     for (const SpecialPoint& sp : c.special_points) {
-      if (sp.type != "LP" || at_end(sp)) continue;  // the extrema of gamma; the engine's BP is not a fold event
+      if (sp.type != SpecialPointType::limit_point || at_end(sp)) continue;  // the extrema of gamma; the engine's BP is not a fold event
       result.extrema.push_back(extremum_at(sp, extremum_type(slopes, sp.index),
                                            leg == 2 && sp.index == 0 ? 0 : std::max(0, offset + sp.index)));  // leg 2 starts at point 0
     }
-    if (end) result.extrema.push_back(extremum_at(*end, end->type == "R1" ? "resonance_1_1" : "resonance_1_2", result.curve_points() - 1));
+    if (end)
+      result.extrema.push_back(extremum_at(
+          *end, end->type == SpecialPointType::resonance_1_1 ? CurveExtremumType::resonance_1_1 : CurveExtremumType::resonance_1_2,
+          result.curve_points() - 1));
     if (c.summary.stop_reason == StopReason::closed) {
       result.closed = true;
       break;
@@ -286,7 +314,7 @@ std::vector<IsolaCandidate> compute_isolas(const HarmonicBalance& caller, int pa
         if (other.status == "duplicate" || other.status == "failed") continue;
         if (same_fold(cand.start.x, cand.start.omega, other.start.x, other.start.omega)) cand.same_as = static_cast<int>(k);
         for (const SpecialPoint& sp : other.branch.continuation.special_points)
-          if (sp.type == "LP" && sp.located && same_fold(cand.start.x, cand.start.omega, sp.u, sp.lambda))
+          if (sp.type == SpecialPointType::limit_point && sp.located && same_fold(cand.start.x, cand.start.omega, sp.u, sp.lambda))
             cand.same_as = static_cast<int>(k);
       }
       if (cand.same_as >= 0) {

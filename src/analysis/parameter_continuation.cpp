@@ -38,13 +38,13 @@ class ParameterFloquetMonitor final : public BranchMonitor {
  public:
   ParameterFloquetMonitor(const HarmonicBalance& hbm, int parameter, double omega, StabilityOptions options)
       : hbm_(hbm), parameter_(parameter), omega_(omega), options_(std::move(options)) {}
-  std::vector<std::string> types() const override { return {"PD", "NS"}; }
+  std::vector<SpecialPointType> types() const override { return {SpecialPointType::period_doubling, SpecialPointType::neimark_sacker}; }
   std::vector<double> test_functions(const BranchPoint& p) override {
     const FloquetResult& r = result_for(p);
     return {period_doubling_test(r.multipliers), neimark_sacker_test(r.multipliers)};
   }
   // Tolerances of FloquetMonitor::confirm (stability_monitor.hpp).
-  bool confirm(const std::string& type, const BranchPoint& p, bool located) override {
+  bool confirm(SpecialPointType type, const BranchPoint& p, bool located) override {
     return has_multiplier_on_unit_circle(result_for(p).multipliers, type, located ? 1e-3 : 0.05);
   }
   const FloquetResult& result_for(const BranchPoint& p) {

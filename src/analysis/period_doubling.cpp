@@ -66,7 +66,7 @@ bool locate_rejoin(HarmonicBalance& doubled, const BranchPoint& last, double lar
   const FourierBasis& b = doubled.basis();
   const Eigen::VectorXd odd = odd_harmonics_of(b, q, last.u);
   const double a_end = 1e-3 * largest_odd;
-  end.type = "PD";
+  end.type = SpecialPointType::period_doubling;
   end.located = true;
   end.u = last.u;
   end.lambda = last.lambda;

@@ -85,11 +85,12 @@ const FloquetResult& FloquetMonitor::result_for(const BranchPoint& p) {
   return recent_.back().result;
 }
 
-bool FloquetMonitor::confirm(const std::string& type, const BranchPoint& p, bool located) {
+bool FloquetMonitor::confirm(SpecialPointType type, const BranchPoint& p, bool located) {
   return has_multiplier_on_unit_circle(result_for(p).multipliers, type, located ? 1e-3 : 0.05);
 }
 
-std::string FloquetMonitor::classify(const std::string& /*type*/, const BranchPoint& p, bool located, std::string& decided_by) {
+std::optional<SpecialPointType> FloquetMonitor::classify(SpecialPointType /*type*/, const BranchPoint& p, bool located,
+                                                         std::string& decided_by) {
   const FloquetResult& r = result_for(p);
   decided_by = to_string(r.method);
   // Hill's truncation merges the two real multipliers of a period-doubling family into a pair
@@ -97,11 +98,12 @@ std::string FloquetMonitor::classify(const std::string& /*type*/, const BranchPo
   // Neimark-Sacker pair that close to -1 would be the 1:2 strong resonance, where the two meet.
   // The monodromy matrix and shooting are real: their real eigenvalues are real to round-off.
   const double real_tolerance = r.method == StabilityMethod::hill ? 0.02 : 1e-6;
-  std::string type = crossing_type(r.multipliers, located ? 1e-3 : 0.05, real_tolerance);
+  std::optional<SpecialPointType> type = crossing_type(r.multipliers, located ? 1e-3 : 0.05, real_tolerance);
   // On a sampled C0 law the test function jumps a little between samples, and the secant may
   // stop a few 1e-3 off the circle: the bracket's tolerance still tells which multiplier crossed.
-  if (type.empty() && located) type = crossing_type(r.multipliers, 0.05, real_tolerance);
-  return type == "LP" ? "" : type;  // a multiplier through +1 is the engine's LP/BP test's
+  if (!type && located) type = crossing_type(r.multipliers, 0.05, real_tolerance);
+  if (type == SpecialPointType::limit_point) return std::nullopt;  // a multiplier through +1 is the engine's LP/BP test's
+  return type;
 }
 
 int FloquetMonitor::verdict(const BranchPoint& p) {

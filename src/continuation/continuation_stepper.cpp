@@ -351,7 +351,7 @@ void ContinuationStepper::record_engine_special_points(const VectorXd& y, const 
     if (options_.locate && locator_.locate(k, x_, t_, f0, y, f1, previous_.bp_log_det, located, located_tan)) {
       const double along = t_.dot(located - x_) / std::max(t_.dot(y - x_), 1e-300);
       sp = {types_[k], along < 0.5 ? index_new - 1 : index_new, true, s_.parameter(located), s_.unknowns(located), located_tan.t, ""};
-    } else if (types_[k] == "LP") {
+    } else if (types_[k] == SpecialPointType::limit_point) {
       // Unlocated: the point where lambda is extreme.
       const bool was_rising = t_(m) > 0;
       if (was_rising ? s_.parameter(x_) > s_.parameter(y) : s_.parameter(x_) < s_.parameter(y))
@@ -374,10 +374,13 @@ void ContinuationStepper::record_monitor_special_points(const MonitoredPoint& a,
       const double along = ta.dot(located - xa) / std::max(ta.dot(xb - xa), 1e-300);
       sp = {types_[k], along < 0.5 ? a.index : b.index, true, s_.parameter(located), s_.unknowns(located), located_tan.t, ""};
     }
-    sp.type = monitor_->classify(types_[k], BranchPoint{sp.u, sp.lambda, sp.tangent, 0, 0}, sp.located, sp.decided_by);
+    const std::optional<SpecialPointType> type =
+        monitor_->classify(types_[k], BranchPoint{sp.u, sp.lambda, sp.tangent, 0, 0}, sp.located, sp.decided_by);
+    if (!type) continue;
+    sp.type = *type;
     // Two test functions may flip for one crossing (a nearly real pair): record it once.
     const auto same = [&](const SpecialPoint& q) { return q.type == sp.type && q.index == sp.index; };
-    if (sp.type.empty() || std::any_of(special_points_.begin(), special_points_.end(), same)) continue;
+    if (std::any_of(special_points_.begin(), special_points_.end(), same)) continue;
     special_points_.push_back(sp);
   }
 }

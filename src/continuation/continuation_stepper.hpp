@@ -72,11 +72,11 @@ class ContinuationStepper {
   const ContinuationOptions& options_;
   BranchMonitor* monitor_;
   Locator locator_;
-  std::vector<std::string> types_{"LP", "BP"};  // then the monitor's
-  double direction_ = 1;                        // +1: lambda increasing at the start
-  double lambda_end_ = 0, lambda_back_ = 0;     // the bound headed for first ("reached_end") and the other one ("left_range")
-  bool corners_ = false;                        // the problem's residual has corners
-  bool lazy_ = false;                           // the monitor may skip points
+  std::vector<SpecialPointType> types_{SpecialPointType::limit_point, SpecialPointType::branch_point};  // then the monitor's
+  double direction_ = 1;                     // +1: lambda increasing at the start
+  double lambda_end_ = 0, lambda_back_ = 0;  // the bound headed for first ("reached_end") and the other one ("left_range")
+  bool corners_ = false;                     // the problem's residual has corners
+  bool lazy_ = false;                        // the monitor may skip points
 
   // The state a checkpoint saves (ContinuationState).
   int points_ = 0;

@@ -53,8 +53,8 @@ void add_backbone_summary(json& summary, const CaseDefinition& c, HarmonicBalanc
   json special = json::array();
   for (const auto& sp : r.continuation.special_points) {
     const BackbonePoint p = backbone_point(hbm, sp.u, sp.lambda, c.outputs);
-    json j = {{"type", sp.type},          {"index", sp.index}, {"located", sp.located},
-              {"amplitude", p.amplitude}, {"omega", p.omega},  {"damping_ratio", p.damping_ratio}};
+    json j = {{"type", to_string(sp.type)}, {"index", sp.index}, {"located", sp.located},
+              {"amplitude", p.amplitude},   {"omega", p.omega},  {"damping_ratio", p.damping_ratio}};
     add_outputs(j, c, p.recorded);
     special.push_back(j);
   }

@@ -42,7 +42,7 @@ json state_json(const ContinuationState& state) {
   json special = json::array();
   for (const SpecialPoint& sp : state.special_points) {
     json j = point_json(sp.u, sp.lambda, sp.tangent);
-    j["type"] = sp.type;
+    j["type"] = to_string(sp.type);
     j["index"] = sp.index;
     j["located"] = sp.located;
     j["decided_by"] = sp.decided_by;
@@ -85,6 +85,17 @@ ContinuationSummary summary_from_json(const json& summary) {
   return s;
 }
 
+// The named value (a stop reason, a special point's type) at object[key]; an unknown name is a
+// std::runtime_error naming `where` (read_checkpoint prefixes it with the path).
+template <NamedChoice Choice>
+Choice choice_from_json(const json& object, const char* key, const std::string& where) {
+  try {
+    return parse_choice<Choice>(object.at(key).get<std::string>(), where + "." + key);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(e.what());
+  }
+}
+
 ContinuationState state_from_json(const json& j) {
   ContinuationState s;
   s.points = j.at("points").get<int>();
@@ -110,9 +121,10 @@ ContinuationState state_from_json(const json& j) {
   s.first_scale = json_vector(j.at("first_scale"));
   s.first_parameter_scale = j.at("first_parameter_scale").get<double>();
   for (const json& sp : j.at("special_points"))
-    s.special_points.push_back(SpecialPoint{sp.at("type").get<std::string>(), sp.at("index").get<int>(), sp.at("located").get<bool>(),
-                                            sp.at("lambda").get<double>(), json_vector(sp.at("u")), json_vector(sp.at("tangent")),
-                                            sp.value("decided_by", std::string())});
+    s.special_points.push_back(SpecialPoint{
+        choice_from_json<SpecialPointType>(sp, "type", "state.special_points[" + std::to_string(s.special_points.size()) + "]"),
+        sp.at("index").get<int>(), sp.at("located").get<bool>(), sp.at("lambda").get<double>(), json_vector(sp.at("u")),
+        json_vector(sp.at("tangent")), sp.value("decided_by", std::string())});
   s.summary = summary_from_json(j.at("summary"));
   if (s.points < 1 || s.x.size() < 1 || s.x.size() != s.tangent.size() || s.unknown_scale.size() + 1 != s.x.size())
     throw std::runtime_error("inconsistent state");
@@ -122,11 +134,7 @@ ContinuationState state_from_json(const json& j) {
 // The leg's stop_reason, one of the names; another is bad input naming the field (a
 // std::runtime_error, which read_checkpoint prefixes with the path).
 StopReason stop_reason_from_json(const json& leg, const std::string& where) {
-  try {
-    return parse_stop_reason(leg.at("stop_reason").get<std::string>(), where + ".stop_reason");
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(e.what());
-  }
+  return choice_from_json<StopReason>(leg, "stop_reason", where);
 }
 
 // Parses path as a checkpoint of `format`; read(document) builds the result. Errors name the path.
@@ -173,7 +181,7 @@ void write_tracking_state(const std::string& path, const FoldTrackingState& stat
   }
   json extrema = json::array();
   for (const FoldExtremum& e : state.extrema)
-    extrema.push_back({{"type", e.type},
+    extrema.push_back({{"type", to_string(e.type)},
                        {"located", e.located},
                        {"x", vector_json(e.x)},
                        {"omega", e.omega},
@@ -205,7 +213,7 @@ SavedTracking read_tracking_state(const std::string& path) {
     }
     for (const json& e : t.at("extrema")) {
       FoldExtremum x;
-      x.type = e.at("type").get<std::string>();
+      x.type = choice_from_json<CurveExtremumType>(e, "type", "tracking.extrema[" + std::to_string(s.extrema.size()) + "]");
       x.located = e.at("located").get<bool>();
       x.x = json_vector(e.at("x"));
       x.omega = e.at("omega").get<double>();

@@ -35,7 +35,7 @@ void add_parameter_branch_summary(json& summary, const CaseDefinition& c, const 
   HarmonicBalance at_point(hbm);  // the outputs of each point at its own value
   json special = json::array();
   for (const auto& sp : r.continuation.special_points) {
-    json j = {{"type", sp.type}, {"index", sp.index}, {"omega", omega}, {name, sp.lambda}, {"located", sp.located}};
+    json j = {{"type", to_string(sp.type)}, {"index", sp.index}, {"omega", omega}, {name, sp.lambda}, {"located", sp.located}};
     j["parameters"] = summary["options"]["parameters"];
     j["parameters"][name] = sp.lambda;
     at_point.set_parameter(parameter, sp.lambda);

@@ -201,7 +201,7 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
   summary["outputs"] = outputs_json(c);
   json special = json::array();
   for (const auto& sp : r.continuation.special_points) {
-    json j = {{"type", sp.type}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
+    json j = {{"type", to_string(sp.type)}, {"index", sp.index}, {"omega", sp.lambda}, {"located", sp.located}};
     if (!sp.decided_by.empty()) j["stability_method"] = sp.decided_by;
     j["parameters"] = summary["options"]["parameters"];
     // Outputs of the special point itself (a located one lies between two rows of branch.csv).
@@ -236,18 +236,6 @@ std::vector<double> tracking_row(const FoldCurvePoint& p, TrackedPoint tracked) 
   return row;
 }
 
-std::string tracked_type(TrackedPoint tracked) {
-  switch (tracked) {
-    case TrackedPoint::neimark_sacker:
-      return "NS";
-    case TrackedPoint::period_doubling:
-      return "PD";
-    case TrackedPoint::limit_point:
-      break;
-  }
-  return "LP";
-}
-
 void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter) {
   json legs = json::array();
   int newton = 0, jacobians = 0, residuals = 0, factorizations = 0, chords = 0;
@@ -272,7 +260,7 @@ void add_tracking_summary(json& summary, const CaseDefinition& c, const FoldTrac
   }
   json special = json::array();
   for (const FoldExtremum& e : r.extrema) {
-    json j = {{"type", e.type}, {"index", e.index}, {"omega", e.omega}, {parameter, e.parameter}, {"located", e.located}};
+    json j = {{"type", to_string(e.type)}, {"index", e.index}, {"omega", e.omega}, {parameter, e.parameter}, {"located", e.located}};
     if (std::isfinite(e.critical_frequency)) j["ns_frequency"] = e.critical_frequency;
     add_outputs(j, c, e.recorded);
     special.push_back(j);

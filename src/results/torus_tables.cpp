@@ -54,9 +54,12 @@ void add_torus_summary(json& summary, const CaseDefinition& c, const TorusBranch
   summary["stability"] = "not decided (the torus' Lyapunov exponents are not computed)";
   json special = json::array();
   for (const SpecialPoint& sp : r.special_points) {
-    if (sp.type != "LP") continue;  // a fold in omega; the engine's other tests mean nothing here
-    special.push_back(
-        {{"type", sp.type}, {"index", sp.index + 1}, {"omega", sp.lambda}, {"located", sp.located}, {"omega2", sp.u(sp.u.size() - 1)}});
+    if (sp.type != SpecialPointType::limit_point) continue;  // a fold in omega; the engine's other tests mean nothing here
+    special.push_back({{"type", to_string(sp.type)},
+                       {"index", sp.index + 1},
+                       {"omega", sp.lambda},
+                       {"located", sp.located},
+                       {"omega2", sp.u(sp.u.size() - 1)}});
   }
   summary["special_points"] = special;
 }

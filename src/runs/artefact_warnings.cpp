@@ -15,7 +15,7 @@ constexpr double kClusterSpacing = 1e-3;
 
 std::string describe(const std::vector<const SpecialPoint*>& cluster) {
   std::map<std::string, int> by_type;
-  for (const SpecialPoint* p : cluster) ++by_type[p->type];
+  for (const SpecialPoint* p : cluster) ++by_type[to_string(p->type)];  // by name: the message lists them alphabetically
   std::string types;
   for (const auto& [type, count] : by_type) types += (types.empty() ? "" : ", ") + std::to_string(count) + " " + type;
   char range[96];
@@ -30,7 +30,7 @@ std::string describe(const std::vector<const SpecialPoint*>& cluster) {
 std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>& points, double omega_range) {
   std::vector<const SpecialPoint*> sorted;
   for (const SpecialPoint& p : points)
-    if (p.type != "BP") sorted.push_back(&p);
+    if (p.type != SpecialPointType::branch_point) sorted.push_back(&p);
   std::sort(sorted.begin(), sorted.end(), [](const SpecialPoint* a, const SpecialPoint* b) { return a->lambda < b->lambda; });
   std::vector<std::string> warnings;
   std::vector<const SpecialPoint*> cluster;
@@ -50,7 +50,8 @@ std::vector<std::string> extremum_pairs_below_resolution(const std::vector<FoldE
                                                          double parameter_range, double omega_span) {
   std::vector<const FoldExtremum*> along;
   for (const FoldExtremum& e : extrema)
-    if (e.type == "min" || e.type == "max") along.push_back(&e);  // not an NS curve's resonance ends
+    if (e.type == CurveExtremumType::parameter_min || e.type == CurveExtremumType::parameter_max)
+      along.push_back(&e);  // not an NS curve's resonance ends
   std::sort(along.begin(), along.end(), [](const FoldExtremum* a, const FoldExtremum* b) { return a->index < b->index; });
   int pairs = 0;
   std::string listed;
@@ -88,9 +89,9 @@ std::vector<std::string> unconfirmed_hill_bifurcations(const std::vector<Special
   std::string listed;
   int count = 0;
   for (const SpecialPoint& p : points) {
-    if (p.decided_by != "hill" || (p.type != "PD" && p.type != "NS")) continue;
+    if (p.decided_by != "hill" || (p.type != SpecialPointType::period_doubling && p.type != SpecialPointType::neimark_sacker)) continue;
     char at[64];
-    std::snprintf(at, sizeof at, "%s%s at omega = %.6g", count ? ", " : "", p.type.c_str(), p.lambda);
+    std::snprintf(at, sizeof at, "%s%s at omega = %.6g", count ? ", " : "", to_string(p.type).c_str(), p.lambda);
     listed += at;
     ++count;
   }

@@ -17,14 +17,16 @@ using nlohmann::json;
 
 RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o, ResultSink& sink, RunMonitor& monitor) {
   const auto t0 = RunClock::now();
-  if (o.type != "BP" && o.type != "PD") throw CaseError("--point: a BP or a PD, got a " + o.type);
-  if (o.type == "PD" && period_one.harmonic_balance.subharmonic != 1)
+  if (o.type != SpecialPointType::branch_point && o.type != SpecialPointType::period_doubling)
+    throw CaseError("--point: a BP or a PD, got a " + to_string(o.type));
+  if (o.type == SpecialPointType::period_doubling && period_one.harmonic_balance.subharmonic != 1)
     throw CaseError("--point: already a period-doubled branch (subharmonic " + std::to_string(period_one.harmonic_balance.subharmonic) +
                     "); switch from a period-T NFRC");
   HarmonicBalance hbm = make_system(period_one);
   for (const StartPoint* p : {&o.at, &o.before, &o.after}) p->require_unknowns(hbm.unknowns());
   CaseDefinition c = period_one;
-  if (o.type == "PD") c.harmonic_balance = period_doubled_options(period_one.harmonic_balance);  // the branch at omega / 2
+  if (o.type == SpecialPointType::period_doubling)
+    c.harmonic_balance = period_doubled_options(period_one.harmonic_balance);  // the branch at omega / 2
   HarmonicBalance system = make_system(c);
   Eigen::VectorXd known(hbm.unknowns() + 1);
   known.head(hbm.unknowns()) = o.after.x - o.before.x;
@@ -32,7 +34,7 @@ RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o
   sink.open();
   json summary = {{"verb", "switch"}, {"options", options_json(c, system)}, {"stop_reason", to_string(StopReason::running)}};
   json& options = summary["options"]["switch"] = o.origin;
-  options.update({{"point", o.point}, {"type", o.type}, {"omega", o.at.omega}});
+  options.update({{"point", o.point}, {"type", to_string(o.type)}, {"omega", o.at.omega}});
   sink.summary(summary);
 
   // Each of the two legs counts for half, by the part of the omega range between the point and
@@ -51,8 +53,9 @@ RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o
   };
   SwitchedBranch s;
   try {
-    s = o.type == "PD" ? switch_at_period_doubling(system, hbm.basis(), c.nfrc, c.outputs, o.at.x, omega, known, observer)
-                       : switch_at_branch_point(system, c.nfrc, c.outputs, o.at.x, omega, known, true, false, observer);
+    s = o.type == SpecialPointType::period_doubling
+            ? switch_at_period_doubling(system, hbm.basis(), c.nfrc, c.outputs, o.at.x, omega, known, observer)
+            : switch_at_branch_point(system, c.nfrc, c.outputs, o.at.x, omega, known, true, false, observer);
   } catch (const WriteFailed&) {
     throw;  // the disk, not the continuation: no summary can be written either
   } catch (const std::runtime_error&) {
@@ -71,7 +74,7 @@ RunReport switch_branch(const CaseDefinition& period_one, const SwitchOptions& o
   std::vector<SpecialPoint> special;
   for (const auto* leg : {&s.through, &s.away})
     for (const auto& p : leg->continuation.special_points) {
-      json j = {{"type", p.type},
+      json j = {{"type", to_string(p.type)},
                 {"index", leg == &s.through ? through - 1 - p.index : shift + p.index},
                 {"omega", p.lambda},
                 {"located", p.located}};

@@ -54,8 +54,9 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   const int parameter = parameter_index(hbm.parameters(), o.parameter, o.parameter_name);
   const double start_value = hbm.parameters().value(parameter);
   if (!(o.parameter_min <= start_value && start_value <= o.parameter_max))
-    throw CaseError(o.range_name + ": must contain " + o.parameter + " = " + std::to_string(start_value) + " of the " +
-                    (o.tracked == TrackedPoint::limit_point ? std::string("limit point") : tracked_type(o.tracked) + " point"));
+    throw CaseError(
+        o.range_name + ": must contain " + o.parameter + " = " + std::to_string(start_value) + " of the " +
+        (o.tracked == TrackedPoint::limit_point ? std::string("limit point") : to_string(special_point_type(o.tracked)) + " point"));
   o.start.require_unknowns(hbm.unknowns());
   FoldTrackingOptions tracking;
   tracking.parameter_min = o.parameter_min;
@@ -68,7 +69,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
   json& options = summary["options"]["tracking"] = o.origin;
   options["parameter"] = o.parameter;
   options["method"] = to_string(o.method);
-  options["point"] = tracked_type(o.tracked);
+  options["point"] = to_string(special_point_type(o.tracked));
   options["range"] = {o.parameter_min, o.parameter_max};
   const json settings = branch_settings(summary["options"]);
   std::optional<SavedTracking> resumed;

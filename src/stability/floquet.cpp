@@ -46,26 +46,26 @@ double neimark_sacker_test(const Eigen::VectorXcd& mu) {
       mu, [](std::complex<double> m) { return !is_real(m); }, 2);
 }
 
-std::string crossing_type(const Eigen::VectorXcd& mu, double tolerance, double real_tolerance) {
+std::optional<SpecialPointType> crossing_type(const Eigen::VectorXcd& mu, double tolerance, double real_tolerance) {
   // The multiplier nearest the circle among those within `tolerance` of it decides; a real one
   // (or a nearly real pair) at -1 is a period doubling even when the NS test function flipped.
   double nearest = tolerance;
-  std::string type;
+  std::optional<SpecialPointType> type;
   for (Eigen::Index i = 0; i < mu.size(); ++i) {
     const double distance = std::abs(std::abs(mu(i)) - 1.0);
     if (distance > nearest) continue;
     const bool real = std::abs(mu(i).imag()) <= real_tolerance * std::abs(mu(i));
     nearest = distance;
-    type = !real ? "NS" : mu(i).real() < 0 ? "PD" : "LP";
+    type = !real ? SpecialPointType::neimark_sacker : mu(i).real() < 0 ? SpecialPointType::period_doubling : SpecialPointType::limit_point;
   }
   return type;
 }
 
-bool has_multiplier_on_unit_circle(const Eigen::VectorXcd& mu, const std::string& type, double tolerance) {
+bool has_multiplier_on_unit_circle(const Eigen::VectorXcd& mu, SpecialPointType type, double tolerance) {
   for (Eigen::Index i = 0; i < mu.size(); ++i) {
-    if (type == "PD" && std::abs(mu(i) + 1.0) <= tolerance) return true;
-    if (type == "LP" && std::abs(mu(i) - 1.0) <= tolerance) return true;
-    if (type == "NS" && !is_real(mu(i)) && std::abs(std::abs(mu(i)) - 1.0) <= tolerance) return true;
+    if (type == SpecialPointType::period_doubling && std::abs(mu(i) + 1.0) <= tolerance) return true;
+    if (type == SpecialPointType::limit_point && std::abs(mu(i) - 1.0) <= tolerance) return true;
+    if (type == SpecialPointType::neimark_sacker && !is_real(mu(i)) && std::abs(std::abs(mu(i)) - 1.0) <= tolerance) return true;
   }
   return false;
 }

@@ -10,12 +10,17 @@
 #include "hbtrack/analysis/fold_systems.hpp"
 #include "hbtrack/analysis/nfrc.hpp"
 #include "hbtrack/util/choices.hpp"
+#include "hbtrack/util/special_point_type.hpp"
 
 namespace hbtrack {
 
 // What a tracking run follows: a limit point (fold), or a Floquet exponent on the imaginary
 // axis (critical_exponent_system.hpp): a Neimark-Sacker or a period-doubling point.
 enum class TrackedPoint { limit_point, neimark_sacker, period_doubling };
+// Its special-point type (named so in summary.json's options.tracking.point), and back from the
+// name: another name throws std::invalid_argument "FIELD: must be LP, NS or PD, got 'x'".
+SpecialPointType special_point_type(TrackedPoint tracked);
+TrackedPoint parse_tracked_point(const std::string& name, std::string_view field);
 
 struct FoldTrackingOptions {
   TrackedPoint tracked = TrackedPoint::limit_point;
@@ -39,7 +44,7 @@ struct FoldCurvePoint {
 // is born (an isolated branch appears, or the main branch starts to fold), a maximum where a pair
 // disappears (an isola merges with another branch, or a fold vanishes).
 struct FoldExtremum {
-  std::string type;  // "min" | "max"
+  CurveExtremumType type = CurveExtremumType::parameter_min;
   bool located = false;
   Eigen::VectorXd x;
   double omega = 0, parameter = 0;

@@ -39,14 +39,14 @@ bool hill_needs_cross_check(const HarmonicBalance& hbm, const FloquetResult& hil
 class FloquetMonitor final : public BranchMonitor {
  public:
   FloquetMonitor(HarmonicBalance& hbm, StabilityOptions options);
-  std::vector<std::string> types() const override { return {"PD", "NS"}; }
+  std::vector<SpecialPointType> types() const override { return {SpecialPointType::period_doubling, SpecialPointType::neimark_sacker}; }
   std::vector<double> test_functions(const BranchPoint& p) override;
   // A located PD/NS point must have its multiplier on the unit circle (to 1e-3, what Hill's
   // truncation leaves on a nonsmooth law); a bracketed one within 0.05 (the multipliers move by
   // about that between accepted points).
-  bool confirm(const std::string& type, const BranchPoint& p, bool located) override;
+  bool confirm(SpecialPointType type, const BranchPoint& p, bool located) override;
   // The type read from the multipliers at p (crossing_type), whichever test function flipped.
-  std::string classify(const std::string& type, const BranchPoint& p, bool located, std::string& decided_by) override;
+  std::optional<SpecialPointType> classify(SpecialPointType type, const BranchPoint& p, bool located, std::string& decided_by) override;
   // With every_point false, on models where Hill's method alone decides (more dofs than the
   // time-domain cross-check takes): there it costs as much as the continuation. On small models
   // it costs little, and their bands can be one point wide (the two-dof contact example's PD band

@@ -5,10 +5,12 @@
 // that the parameter and the unknowns weigh alike.
 #include <Eigen/Dense>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "hbtrack/util/choices.hpp"
+#include "hbtrack/util/special_point_type.hpp"
 #include "hbtrack/util/stop_reason.hpp"
 
 namespace hbtrack {
@@ -74,7 +76,7 @@ struct BranchPoint {
 };
 
 struct SpecialPoint {
-  std::string type;      // LP, BP, PD, NS, ...
+  SpecialPointType type = SpecialPointType::limit_point;
   int index = 0;         // the branch point nearest to it
   bool located = false;  // true when refined onto the zero of its test function
   double lambda = 0;
@@ -115,17 +117,18 @@ using PointObserver = std::function<bool(const BranchPoint&, int)>;
 class BranchMonitor {
  public:
   virtual ~BranchMonitor() = default;
-  virtual std::vector<std::string> types() const = 0;  // e.g. {"PD", "NS"}
+  virtual std::vector<SpecialPointType> types() const = 0;  // e.g. {period_doubling, neimark_sacker}
   // Called at every accepted point (before the observer) and at trial points while locating.
   virtual std::vector<double> test_functions(const BranchPoint& p) = 0;
   // Whether a sign change of one of these test functions is a real special point: called at
   // the located point (located = true) or, when location failed, at the bracketing point.
-  virtual bool confirm(const std::string& /*type*/, const BranchPoint& /*p*/, bool /*located*/) { return true; }
+  virtual bool confirm(SpecialPointType /*type*/, const BranchPoint& /*p*/, bool /*located*/) { return true; }
   // What a sign change of test function `type` is, read at the point (a PD test may flip
-  // because a multiplier pair crossed elsewhere): the type to record, "" to drop it. `decided_by`
-  // names what decided. Default: confirm() keeps the type.
-  virtual std::string classify(const std::string& type, const BranchPoint& p, bool located, std::string& /*decided_by*/) {
-    return confirm(type, p, located) ? type : "";
+  // because a multiplier pair crossed elsewhere): the type to record, nullopt to drop it.
+  // `decided_by` names what decided. Default: confirm() keeps the type.
+  virtual std::optional<SpecialPointType> classify(SpecialPointType type, const BranchPoint& p, bool located, std::string& /*decided_by*/) {
+    if (confirm(type, p, located)) return type;
+    return std::nullopt;
   }
   // True when the monitor is costly and may be evaluated at some points only: where its test
   // functions, extrapolated from the last two evaluations, could change sign, where the engine's

@@ -47,8 +47,6 @@ void add_nfrc_summary(nlohmann::json& summary, const CaseDefinition& c, Harmonic
 std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter,
                                          TrackedPoint tracked = TrackedPoint::limit_point);
 std::vector<double> tracking_row(const FoldCurvePoint& p, TrackedPoint tracked = TrackedPoint::limit_point);
-// "LP", "NS" or "PD": the special-point type a tracking run follows, as summary.json names it.
-std::string tracked_type(TrackedPoint tracked);
 // What `track` adds to summary.json: stop_reason, closed, legs, counts, special_points (extrema).
 void add_tracking_summary(nlohmann::json& summary, const CaseDefinition& c, const FoldTrackingResult& r, const std::string& parameter);
 

@@ -12,15 +12,16 @@
 #include "hbtrack/runs/run_monitor.hpp"
 #include "hbtrack/runs/run_report.hpp"
 #include "hbtrack/runs/start_point.hpp"
+#include "hbtrack/util/special_point_type.hpp"
 
 namespace hbtrack::runs {
 
 struct SwitchOptions {
-  std::string type;                                  // "BP" or "PD"
-  long point = 0;                                    // its number among the NFRC's special points (from 1), for the summary
-  StartPoint at;                                     // the BP or PD itself
-  StartPoint before, after;                          // its neighbours on the NFRC: the direction the NFRC goes through it
-  nlohmann::json origin = nlohmann::json::object();  // fields added to options.switch (from)
+  SpecialPointType type = SpecialPointType::branch_point;  // or period_doubling
+  long point = 0;                                          // its number among the NFRC's special points (from 1), for the summary
+  StartPoint at;                                           // the BP or PD itself
+  StartPoint before, after;                                // its neighbours on the NFRC: the direction the NFRC goes through it
+  nlohmann::json origin = nlohmann::json::object();        // fields added to options.switch (from)
 };
 
 // `period_one`: the case the NFRC was computed with (at a PD the run halves its frequency).

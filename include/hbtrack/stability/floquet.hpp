@@ -3,9 +3,10 @@
 // exponents l (n dofs) with multipliers mu = exp(l T). The solution is stable when every
 // multiplier lies inside the unit circle (every exponent has a negative real part).
 #include <Eigen/Dense>
-#include <string>
+#include <optional>
 
 #include "hbtrack/util/choices.hpp"
+#include "hbtrack/util/special_point_type.hpp"
 
 namespace hbtrack {
 
@@ -34,10 +35,10 @@ double neimark_sacker_test(const Eigen::VectorXcd& multipliers);
 // Whether a multiplier sits where a bifurcation of `type` puts it: PD a real one at -1, NS a
 // complex one on the unit circle, LP a real one at +1, within `tolerance`.
 // The type of the bifurcation whose multiplier sits on the unit circle (within `tolerance`), read
-// from the multipliers rather than from which test function flipped: "PD" a real multiplier at -1,
-// "NS" a complex pair (Hill's split of a real pair near -1, |Im mu| <= `real_tolerance` |mu|,
-// counts as real), "LP" a real one at +1, "" none.
-std::string crossing_type(const Eigen::VectorXcd& multipliers, double tolerance, double real_tolerance);
-bool has_multiplier_on_unit_circle(const Eigen::VectorXcd& multipliers, const std::string& type, double tolerance);
+// from the multipliers rather than from which test function flipped: PD a real multiplier at -1,
+// NS a complex pair (Hill's split of a real pair near -1, |Im mu| <= `real_tolerance` |mu|,
+// counts as real), LP a real one at +1, nullopt none.
+std::optional<SpecialPointType> crossing_type(const Eigen::VectorXcd& multipliers, double tolerance, double real_tolerance);
+bool has_multiplier_on_unit_circle(const Eigen::VectorXcd& multipliers, SpecialPointType type, double tolerance);
 
 }  // namespace hbtrack
