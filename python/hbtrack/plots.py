@@ -91,7 +91,10 @@ def _resonance_ends(track):
 def _curve_name(track, i, nfrc_special_points):
     """"LP2 tracked" as the NFRC figure numbers its limit points (omega order) when the NFRC's
     special points are given; else by track's --lp, "limit point 1 tracked"; "NS point 1
-    tracked" for an NS (PD) curve."""
+    tracked" for an NS (PD) curve; a result's own "label" (the study names the curves it started
+    from a validation NFRC by that NFRC's folder and limit point) before any of these."""
+    if track.get("label"):
+        return track["label"]
     options = track["summary"]["options"]["tracking"]
     if _tracked_type(track) != SpecialPointType.LIMIT_POINT:
         key = _tracked_type(track).lower()

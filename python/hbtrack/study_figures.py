@@ -45,6 +45,16 @@ def _nfrc_figures(study_dir, summary, length_unit, read=read_result):
     return figures
 
 
+def _study_curve(read, study_dir, curve):
+    """A tracking curve of the study's summary, read; one the study started from a validation
+    NFRC's limit point (its "from", e.g. "validate_mu_1 LP2") is labelled by it: the nominal
+    NFRC's numbering does not apply to it."""
+    track = read(os.path.join(study_dir, curve["folder"]))
+    if curve.get("from"):
+        track["label"] = f"{curve['from']} tracked"
+    return track
+
+
 def study_figures(study_dir, length_unit=None, model_unit=None):
     """The figures of a study folder.
 
@@ -82,7 +92,7 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
         nominal_points = read_result(os.path.join(study_dir, "nfrc"))["special_points"]
     for entry in summary.get("tracking", []):
         param = entry["parameter"]
-        tracks = [read(os.path.join(study_dir, c["folder"])) for c in entry["curves"] if "folder" in c]
+        tracks = [_study_curve(read, study_dir, c) for c in entry["curves"] if "folder" in c]
         if not tracks:
             continue
         nfrcs = [read(os.path.join(study_dir, v["folder"])) for v in entry.get("validations", [])]

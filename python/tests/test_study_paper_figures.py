@@ -89,3 +89,19 @@ def test_study_figures_include_fig12_and_convert_to_mm(small_study):
     labels = [t.get_text() for t in in_mm["tracking_3d_amplitude"].get_axes()[0].get_legend().get_texts()]
     assert "isolated branches" in labels
     plt.close("all")
+
+
+def test_a_curve_the_study_started_from_a_validation_nfrc_is_named_by_it(small_study, tmp_path):
+    # Its limit point is that NFRC's, not the nominal one's: "LP1 tracked" would name the wrong point.
+    import shutil
+    study = str(tmp_path / "study")
+    shutil.copytree(small_study, study)
+    with open(f"{study}/summary.json") as f:
+        summary = json.load(f)
+    summary["tracking"][0]["curves"].append({"lp": 0, "folder": "track_amplitude_lp1", "from": "validate_amplitude_2 LP3"})
+    with open(f"{study}/summary.json", "w") as f:
+        json.dump(summary, f)
+    figure = study_figures(study)["tracking_amplitude"]
+    labels = [t.get_text() for t in figure.get_axes()[0].get_legend().get_texts()]
+    assert "LP1 tracked" in labels and "validate_amplitude_2 LP3 tracked" in labels
+    plt.close("all")
