@@ -41,29 +41,32 @@ TEST(StudyComparisons, ALimitPointBeyondTheCaseRangeIsMatchedWithTheCrossingLoca
   EXPECT_EQ(far["lps_off_the_curves"], 1);
 }
 
-TEST(StudyComparisons, TheIsolaPointToSimulateKeepsAwayFromTheIsolasFolds) {
+TEST(StudyComparisons, TheIsolaPointToSimulateIsTheMiddleOfTheStableStretchOfItsLargestResponse) {
   // Rows: omega, max_le, stable. The largest stable output (row 0) is 5e-4 from the fold at 1000;
-  // row 2 is the largest at least kSimulationDetuning (2e-3) from it. Row 1 is unstable.
+  // row 2 is the largest at least kSimulationDetuning (2e-3) from it, in the stable stretch of rows
+  // 2-5 (997 to 985 rad/s), whose middle in omega is row 4 (5 rad/s from 985, 7 from 997).
   const fs::path dir = fs::temp_directory_path() / ("hbtrack_isola_point_" + std::to_string(getpid()));
   fs::create_directories(dir / "isolas_mu_1" / "isola_1");
   std::ofstream(dir / "isolas_mu_1" / "isola_1" / "branch.csv") << "omega,max_le,stable\n"
                                                                    "999.5,5.0,1\n"
                                                                    "995.0,4.8,0\n"
                                                                    "997.0,4.5,1\n"
-                                                                   "990.0,4.0,1\n";
-  auto tracking_with_folds = [](const json& folds) {
+                                                                   "993.0,4.3,1\n"
+                                                                   "990.0,4.0,1\n"
+                                                                   "985.0,3.8,1\n"
+                                                                   "984.0,3.0,0\n";
+  auto tracking_with = [](const json& special_points) {
     return json::array(
         {{{"validations",
-           json::array({{{"isola_branches", json::array({{{"folder", "isolas_mu_1/isola_1"}, {"special_points", folds}}})}}})}}});
+           json::array({{{"isola_branches", json::array({{{"folder", "isolas_mu_1/isola_1"}, {"special_points", special_points}}})}}})}}});
   };
-  const auto away =
-      hbtrack::cli::stable_isola_point(dir.string(), tracking_with_folds(json::array({{{"type", "LP"}, {"omega", 1000.0}}})), "le");
-  ASSERT_TRUE(away.has_value());
-  EXPECT_EQ(away->folder, "isolas_mu_1/isola_1");
-  EXPECT_EQ(away->point, 2);
-  // An NS point is no fold: only limit points keep the simulation away.
-  const auto ns =
-      hbtrack::cli::stable_isola_point(dir.string(), tracking_with_folds(json::array({{{"type", "NS"}, {"omega", 1000.0}}})), "le");
+  const auto middle =
+      hbtrack::cli::stable_isola_point(dir.string(), tracking_with(json::array({{{"type", "LP"}, {"omega", 1000.0}}})), "le");
+  ASSERT_TRUE(middle.has_value());
+  EXPECT_EQ(middle->folder, "isolas_mu_1/isola_1");
+  EXPECT_EQ(middle->point, 4);
+  // An NS point is no fold: row 0 is then allowed, a stretch of one row.
+  const auto ns = hbtrack::cli::stable_isola_point(dir.string(), tracking_with(json::array({{{"type", "NS"}, {"omega", 1000.0}}})), "le");
   ASSERT_TRUE(ns.has_value());
   EXPECT_EQ(ns->point, 0);
   fs::remove_all(dir);

@@ -71,6 +71,22 @@ bool near_a_limit_point(double omega, const json& special_points) {
   return false;
 }
 
+// The row of the stable stretch (contiguous stable rows) around row i farthest in omega from both
+// of the stretch's ends, where the verdict changes at a fold or an NS point.
+size_t middle_of_stable_stretch(const CsvTable& b, size_t stable, size_t i) {
+  size_t lo = i, hi = i;
+  while (lo > 0 && b.rows[lo - 1][stable] == 1.0) --lo;
+  while (hi + 1 < b.rows.size() && b.rows[hi + 1][stable] == 1.0) ++hi;
+  size_t middle = i;
+  double margin = -1;
+  for (size_t k = lo; k <= hi; ++k) {
+    const double omega = b.rows[k][0];
+    const double m = std::min(std::abs(omega - b.rows[lo][0]), std::abs(omega - b.rows[hi][0]));
+    if (m > margin) margin = m, middle = k;
+  }
+  return middle;
+}
+
 }  // namespace
 
 std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, const json& tracking, const std::string& first_output) {
@@ -88,7 +104,7 @@ std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, cons
         const json folds = isola.value("special_points", json::array());
         for (size_t i = 0; i < b.rows.size(); ++i)
           if (b.rows[i][stable] == 1.0 && !near_a_limit_point(b.rows[i][0], folds) && b.rows[i][column] > best_output)
-            best_output = b.rows[i][column], best = BranchPoint{folder, static_cast<long>(i)};
+            best_output = b.rows[i][column], best = BranchPoint{folder, static_cast<long>(middle_of_stable_stretch(b, stable, i))};
       }
   return best;
 }
