@@ -137,11 +137,59 @@ TEST(StudyCli, BadStudyInputGivesOneLineErrors) {
   const CliRun range = run_cli("study " + kSmallBlade + " --set amplitude=70 -o " + dir.string());
   EXPECT_EQ(range.exit_code, 2);
   EXPECT_NE(range.err.find("study.track[0].range: must contain the case's amplitude"), std::string::npos) << range.err;
-  for (const CliRun& run : {no_study, only, range}) EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  const CliRun ns_pd = run_cli("study " + kSmallBlade + " --set study.track_ns_pd=1 -o " + dir.string());
+  EXPECT_EQ(ns_pd.exit_code, 2);
+  EXPECT_NE(ns_pd.err.find("study.track_ns_pd: expected true or false"), std::string::npos) << ns_pd.err;
+  for (const CliRun& run : {no_study, only, range, ns_pd}) EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
   fs::remove_all(dir);
 }
 
 }  // namespace
+
+TEST(StudyCli, WithTrackNsPdTheStudyFollowsEveryNsPointAndListsItsCurves) {
+  // The nonlinear absorber (examples/nltva.toml) has two NS points on its nominal NFRC. Each is
+  // followed in the amplitude from that very point, to both ends of its curve on a fold (NS
+  // frequency 0, as `track --ns` alone: tests/test_ns_tracking.cpp), and listed on the page; the
+  // limit points' validations still all pass (NS curves start no validation or isola search).
+  const fs::path dir = absent_dir("hbtrack_study_ns_pd");
+  fs::create_directories(dir);
+  {
+    std::ifstream nltva(hbtrack::test::source_path("examples/nltva.toml"));
+    std::ofstream out(dir / "case.toml");
+    out << nltva.rdbuf()
+        << "\n[study]\ntrack = [ { parameter = \"amplitude\", range = [0.05, 0.35] } ]\nsimulate_periods = 0\ntrack_ns_pd = true\n";
+  }
+  const CliRun r = run_cli("study " + (dir / "case.toml").string() + " -q -o " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json s = read_json(dir / "out" / "summary.json");
+  const json nfrc = read_json(dir / "out" / "nfrc" / "summary.json");
+  std::vector<double> ns_omegas;
+  for (const auto& sp : nfrc["special_points"])
+    if (sp["type"] == "NS") ns_omegas.push_back(sp["omega"].get<double>());
+  std::sort(ns_omegas.begin(), ns_omegas.end());
+  ASSERT_EQ(ns_omegas.size(), 2u);
+  std::ifstream page(dir / "out" / "index.md");
+  std::stringstream text;
+  text << page.rdbuf();
+  for (size_t k = 0; k < 2; ++k) {
+    const std::string name = "NS" + std::to_string(k + 1), folder = "track_amplitude_ns" + std::to_string(k + 1);
+    const auto& curves = s["tracking"][0]["curves"];
+    const auto curve = std::find_if(curves.begin(), curves.end(), [&](const json& c) { return c.value("point", "") == name; });
+    ASSERT_NE(curve, curves.end()) << name;
+    EXPECT_EQ((*curve)["folder"], folder);
+    EXPECT_EQ((*curve)["stop_reason"], "completed");
+    const auto branch = hbtrack::test::csv_records(dir / "out" / folder / "branch.csv");
+    EXPECT_NEAR(branch.front().at("omega"), ns_omegas[k], 1e-12 * ns_omegas[k]);  // started on the NFRC's own NS point
+    EXPECT_EQ(branch.front().at("amplitude"), 0.12);
+    int ends_on_a_fold = 0;
+    const json track = read_json(dir / "out" / folder / "summary.json");
+    for (const auto& sp : track["special_points"])
+      ends_on_a_fold += sp["type"] == "resonance_1_1";
+    EXPECT_EQ(ends_on_a_fold, 2) << name;
+    EXPECT_NE(text.str().find("| " + name + " |"), std::string::npos) << name;
+  }
+  fs::remove_all(dir);
+}
 
 TEST(StudyCli, AStudyWhoseValidationFailsExitsOneAndSaysSoFirst) {
   // The Duffing oscillator's limit points tracked in the amplitude with at most 4 points a leg:

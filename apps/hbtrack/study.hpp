@@ -59,6 +59,11 @@ class Study {
 
   void add_curve(const StudyTrack& t, size_t lp, double omega, const std::string& folder);
 
+  // With [study] track_ns_pd: every NS and PD point of the nominal NFRC followed in every
+  // parameter (`track_P_nsK/`, `track_P_pdK/`), listed with the curves but kept out of the
+  // validation and isola searches, which are about limit points.
+  bool ns_pd_tracking();
+
   // NFRCs from the linear solution next to every extremum (or at both ends of a range without
   // one), the tracking curves' limit points located at the same values, and the time
   // integration: all independent of each other.

@@ -36,7 +36,7 @@ bool Study::convergence() {
   for (const StudyTrack& t : tracked_)
     for (const auto& curve : entries_[t.parameter]["curves"]) {
       if (!curve.contains("folder")) continue;
-      if (curve.value("lp", 0) == 0) continue;  // an added family's: started from a validation NFRC
+      if (curve.value("lp", 0) == 0) continue;  // an added family's (started from a validation NFRC), an NS or PD curve
       const size_t lp = nearest_limit_point(refined.value("special_points", json::array()), curve.value("omega", 0.0));
       if (lp == 0) continue;
       const std::string folder = "converged/" + curve.value("folder", std::string());

@@ -110,8 +110,10 @@ void tracking_section(std::ostream& out, const json& s) {
   for (const auto& t : s["tracking"])
     for (const auto& c : t["curves"]) {
       out << "| " << t["parameter"].get<std::string>() << " | " << num(t["range"][0]) << " to " << num(t["range"][1]) << " | "
-          << (c.contains("from") ? c.value("from", "") : std::to_string(c.value("lp", 0))) << " | " << num(c.value("omega", 0.0), "%.2f")
-          << " | ";
+          << (c.contains("from")    ? c.value("from", "")
+              : c.contains("point") ? c.value("point", "")  // an NS or PD point's curve
+                                    : std::to_string(c.value("lp", 0)))
+          << " | " << num(c.value("omega", 0.0), "%.2f") << " | ";
       if (c.value("same_curve_as_earlier_lp", false))
         out << "on an earlier LP's curve | | |\n";
       else

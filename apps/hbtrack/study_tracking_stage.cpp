@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cli_common.hpp"
+#include "hbtrack/runs/special_point_start.hpp"
 #include "result_folder.hpp"
 #include "study.hpp"
 #include "study_comparisons.hpp"
@@ -79,6 +80,42 @@ void Study::add_curve(const StudyTrack& t, size_t lp, double omega, const std::s
     if (!already_listed(entry["extrema"], e))
       entry["extrema"].push_back(
           {{"type", e.type}, {"value", e.value}, {"omega", e.omega}, {"max_" + out, e.first_output}, {"curve", folder}});
+}
+
+bool Study::ns_pd_tracking() {
+  if (!c_.study.track_ns_pd) return true;
+  stage_ = kTracking;
+  const json points = summary_["nfrc"]["special_points"];
+  std::vector<Step> steps;
+  std::vector<json> entries;  // the curves table's row of each step, and its parameter
+  for (const SpecialPointType type : {SpecialPointType::neimark_sacker, SpecialPointType::period_doubling}) {
+    const std::string name = to_string(type), flag = type == SpecialPointType::neimark_sacker ? "--ns" : "--pd";
+    const std::vector<size_t> rows = runs::special_point_rows(points, type);  // K in omega order, as `track --ns K`
+    for (size_t k = 0; k < rows.size(); ++k)
+      for (const StudyTrack& t : tracked_) {
+        const std::string K = std::to_string(k + 1);
+        steps.push_back(
+            {"track_" + t.parameter + "_" + flag.substr(2) + K,
+             {"track", o_.common.case_path, "--from", dir_ + "/nfrc", flag, K, "--param", t.parameter, "--range",
+              number_text(t.min) + ":" + number_text(t.max), "--set", "continuation.max_points=" + std::to_string(c_.study.max_points)},
+             false});
+        entries.push_back({{"parameter", t.parameter}, {"point", name + K}, {"omega", points[rows[k]].value("omega", 0.0)}});
+      }
+  }
+  if (!run_steps(steps)) return false;
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const json s = read_summary(dir_ + "/" + steps[i].folder);
+    json curve = entries[i];
+    const std::string parameter = curve["parameter"];
+    curve.erase("parameter");
+    curve.update({{"folder", steps[i].folder},
+                  {"points", s.value("points", 0)},
+                  {"stop_reason", s.value("stop_reason", "")},
+                  {"closed", s.value("closed", false)},
+                  {"wall_s", s["timings"].value("wall_s", 0.0)}});
+    entries_[parameter]["curves"].push_back(curve);
+  }
+  return true;
 }
 
 // A validation NFRC's limit point on no tracking curve belongs to a family no limit point of the

@@ -359,7 +359,8 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
   const toml::value* st = in.find(root, "study");
   if (!st) return;
   in.table(*st, "study");
-  in.check_keys(*st, "study", {"track", "backbone", "switch", "max_points", "simulate_periods", "max_added_curves", "convergence"});
+  in.check_keys(*st, "study",
+                {"track", "backbone", "switch", "max_points", "simulate_periods", "max_added_curves", "track_ns_pd", "convergence"});
   StudySettings& study = c.study;
   study.max_points = in.integer_or(*st, "max_points", "study.max_points", study.max_points);
   if (study.max_points < 2) in.fail(&st->at("max_points"), "study.max_points", "must be >= 2");
@@ -368,6 +369,10 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
   study.max_added_curves = in.integer_or(*st, "max_added_curves", "study.max_added_curves", study.max_added_curves);
   if (study.max_added_curves < 0 || study.max_added_curves > 100)
     in.fail(&st->at("max_added_curves"), "study.max_added_curves", "must be in [0, 100]");
+  if (const toml::value* ns = in.find(*st, "track_ns_pd")) {
+    if (!ns->is_boolean()) in.fail(ns, "study.track_ns_pd", "expected true or false (follow every NS and PD point of the nominal NFRC)");
+    study.track_ns_pd = ns->as_boolean();
+  }
   if (const toml::value* conv = in.find(*st, "convergence")) {
     in.table(*conv, "study.convergence");
     in.check_keys(*conv, "study.convergence", {"harmonics", "samples"});

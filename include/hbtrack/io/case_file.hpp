@@ -44,6 +44,10 @@ struct StudySettings {
   // A validation NFRC's limit point on no tracking curve starts one of its own: at most this many
   // such curves per tracked parameter (0: none).
   int max_added_curves = 4;
+  // Follow every NS and PD point of the nominal NFRC in each tracked parameter too (`track --ns K`,
+  // `--pd K`): their curves are drawn and listed with the limit points', but no validation NFRC
+  // or isola search starts from them.
+  bool track_ns_pd = false;
   // The convergence check: the nominal NFRC and the tracking curves recomputed with these
   // harmonics and samples (0: no check), their limit points and extrema compared.
   int convergence_harmonics = 0, convergence_samples = 0;
