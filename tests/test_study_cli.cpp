@@ -144,6 +144,14 @@ TEST(StudyCli, BadStudyInputGivesOneLineErrors) {
   fs::remove_all(dir);
 }
 
+// DIR/case.toml: the example's case with a [study] section of these lines.
+void write_example_with_study(const fs::path& dir, const std::string& example, const std::string& study_lines) {
+  fs::create_directories(dir);
+  std::ifstream in(hbtrack::test::source_path(example));
+  std::ofstream out(dir / "case.toml");
+  out << in.rdbuf() << "\n[study]\n" << study_lines;
+}
+
 }  // namespace
 
 TEST(StudyCli, WithTrackNsPdTheStudyFollowsEveryNsPointAndListsItsCurves) {
@@ -152,13 +160,8 @@ TEST(StudyCli, WithTrackNsPdTheStudyFollowsEveryNsPointAndListsItsCurves) {
   // frequency 0, as `track --ns` alone: tests/test_ns_tracking.cpp), and listed on the page; the
   // limit points' validations still all pass (NS curves start no validation or isola search).
   const fs::path dir = absent_dir("hbtrack_study_ns_pd");
-  fs::create_directories(dir);
-  {
-    std::ifstream nltva(hbtrack::test::source_path("examples/nltva.toml"));
-    std::ofstream out(dir / "case.toml");
-    out << nltva.rdbuf()
-        << "\n[study]\ntrack = [ { parameter = \"amplitude\", range = [0.05, 0.35] } ]\nsimulate_periods = 0\ntrack_ns_pd = true\n";
-  }
+  write_example_with_study(dir, "examples/nltva.toml",
+                           "track = [ { parameter = \"amplitude\", range = [0.05, 0.35] } ]\nsimulate_periods = 0\ntrack_ns_pd = true\n");
   const CliRun r = run_cli("study " + (dir / "case.toml").string() + " -q -o " + (dir / "out").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json s = read_json(dir / "out" / "summary.json");
@@ -183,8 +186,7 @@ TEST(StudyCli, WithTrackNsPdTheStudyFollowsEveryNsPointAndListsItsCurves) {
     EXPECT_EQ(branch.front().at("amplitude"), 0.12);
     int ends_on_a_fold = 0;
     const json track = read_json(dir / "out" / folder / "summary.json");
-    for (const auto& sp : track["special_points"])
-      ends_on_a_fold += sp["type"] == "resonance_1_1";
+    for (const auto& sp : track["special_points"]) ends_on_a_fold += sp["type"] == "resonance_1_1";
     EXPECT_EQ(ends_on_a_fold, 2) << name;
     EXPECT_NE(text.str().find("| " + name + " |"), std::string::npos) << name;
   }
@@ -197,14 +199,9 @@ TEST(StudyCli, AStudyWhoseValidationFailsExitsOneAndSaysSoFirst) {
   // `validate`) has limit points on no tracking curve, and none may start a curve of its own
   // (max_added_curves = 0). The study must not say "completed".
   const fs::path dir = absent_dir("hbtrack_study_failing");
-  fs::create_directories(dir);
-  {
-    std::ifstream duffing(hbtrack::test::source_path("examples/duffing.toml"));
-    std::ofstream out(dir / "case.toml");
-    out << duffing.rdbuf()
-        << "\n[study]\ntrack = [ { parameter = \"amplitude\", range = [0.5, 3.0], validate = [2.5] } ]\nmax_points = 4\nsimulate_periods = "
-           "0\nmax_added_curves = 0\n";
-  }
+  write_example_with_study(dir, "examples/duffing.toml",
+                           "track = [ { parameter = \"amplitude\", range = [0.5, 3.0], validate = [2.5] } ]\nmax_points = 4\n"
+                           "simulate_periods = 0\nmax_added_curves = 0\n");
   const CliRun r = run_cli("study " + (dir / "case.toml").string() + " -q -o " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("check(s) failed"), std::string::npos) << r.err;
