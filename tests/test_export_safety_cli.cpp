@@ -104,6 +104,30 @@ TEST(ExportSafety, ADeeplyNestedOrMalformedSummaryIsBadInput) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// A summary.json that is valid JSON but no object (an array, a number, a string, null) was
+// exported as if it were a result, exit 0 (issue 39's hostile rerun); `track --from` read it by key.
+TEST(ExportSafety, ASummaryThatIsNotAnObjectIsBadInput) {
+  const fs::path dir = hbtrack::test::fresh_temp_dir("hbtrack_export_safety_not_an_object", true);
+  const std::string duffing = hbtrack::test::source_path("examples/duffing.toml");
+  for (const std::string text : {"[]", "1", "\"frc\"", "null"}) {
+    std::ofstream(dir / "summary.json") << text;
+    for (const std::string format : {"mat", "h5"}) {
+      const CliRun r = run_cli("export " + dir.string() + " -q --format " + format);
+      EXPECT_EQ(r.exit_code, 2) << text << ": " << r.err;
+      EXPECT_NE(r.err.find((dir / "summary.json").string() + ": not a result summary of hbtrack (a JSON object expected"),
+                std::string::npos)
+          << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_FALSE(fs::exists(dir / ("results." + format))) << text;
+    }
+    const CliRun track = run_cli("track " + duffing + " -q --from " + dir.string() + " --lp 1 --param amplitude --range 0.1:2 -o " +
+                                 (dir / "track").string());
+    EXPECT_EQ(track.exit_code, 2) << text << ": " << track.err;
+    EXPECT_EQ(std::count(track.err.begin(), track.err.end(), '\n'), 1) << track.err;
+    EXPECT_FALSE(fs::exists(dir / "track"));
+  }
+}
+
 // A sweep folder: export read sweep.csv's text column `status` as a number and stopped at its first
 // cell ("'max_points' is not a finite number"). Now one line says why, names the task folders
 // that export does take, and nothing is written; a task's folder exports.

@@ -67,6 +67,17 @@ TEST(InputNames, ParameterNamesThatWouldBreakACsvHeaderAreRefused) {
   expect_bad_input(run_cli("frc " + path.string() + " -q -o " + out.string()), out, "parameter name 'k,2' holds a comma");
 }
 
+// A name an element, a forcing or an output refers to is quoted in the reason: a newline or tab
+// in it split the one-line reason in two ("unknown dof 'a", "b'"; issue 39's hostile rerun).
+TEST(InputNames, AControlCharacterInAQuotedNameStaysOnOneLine) {
+  const fs::path out = temp_dir() / "quoted_out";
+  const fs::path path = temp_dir() / "quoted.toml";
+  std::ofstream(path) << "[model]\ndofs = [\"a\", \"b\"]\nM = [[1.0, 0.0], [0.0, 1.0]]\nK = [[2.0, -1.0], [-1.0, 2.0]]\n"
+                         "[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"a\\nb\\t\\u0001\"]\ncubic_stiffness = 0.1\n"
+                         "[continuation]\nomega_start = 0.5\nomega_end = 2.0\n";
+  expect_bad_input(run_cli("frc " + path.string() + " -q -o " + out.string()), out, "unknown dof 'a\\nb\\t\\x01'");
+}
+
 // A names file saved by a Windows editor starts with a byte-order mark, which became part of
 // the first name ("unknown dof" for an output naming it).
 TEST(InputNames, AByteOrderMarkIsNotPartOfTheFirstName) {

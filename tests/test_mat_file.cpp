@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 #include <matio.h>
+#include <zlib.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -109,6 +110,17 @@ std::string v5_header() {
 
 class MatFileTest : public TempDirTest {
  protected:
+  // The bytes of a v5 file holding `matrix` as the sparse variable K, as libmatio writes it.
+  std::string sparse_file_bytes(const std::string& filename, const Eigen::SparseMatrix<double>& matrix) const {
+    const std::string path = path_for(filename);
+    {
+      MatWriter writer(path);
+      writer.sparse("K", matrix);
+    }
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+
   // A v5 file of a dense `rows` x `cols` variable K whose dims sub-element (tag miINT32 = 5, 8
   // bytes, then int32 rows, cols) gets `replacement` written at `offset` from the tag's start.
   std::string mat_with_patched_dims(const std::string& filename, int rows, int cols, std::size_t offset,
@@ -296,13 +308,7 @@ TEST_F(MatFileTest, SparseIndexArrayOfUnknownTypeOrPartialSizeIsRejected) {
   Eigen::SparseMatrix<double> matrix(2, 2);
   matrix.insert(0, 0) = 2.0;
   matrix.insert(1, 1) = -1.0;
-  const std::string clean_path = path_for("sparse_clean.mat");
-  {
-    MatWriter writer(clean_path);
-    writer.sparse("K", matrix);
-  }
-  std::ifstream in(clean_path, std::ios::binary);
-  const std::string clean((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string clean = sparse_file_bytes("sparse_clean.mat", matrix);
   // The row-index tag (libmatio writes uint32) follows the dims (2 x 2, int32) and the name 'K' (one small element).
   const std::string dims("\x05\0\0\0\x08\0\0\0\x02\0\0\0\x02\0\0\0", 16);
   const std::size_t dims_at = clean.find(dims);
@@ -463,6 +469,81 @@ TEST_F(MatFileTest, VariableTooShortForItsHeaderIsRejectedBeforeMatio) {
   const std::string path = write_text("empty_variable.mat", header + elements);
   expect_error([&] { hbtrack::read_mat_variable_sparse(path, "K"); }, path,
                "corrupt MAT file: the variable at byte 128 claims 0 bytes, fewer than the 40 of its array flags, dimensions and name");
+}
+
+// Fuzzing finding (oom-9354...): a sparse variable whose row indices are stored as miINT16.
+// libmatio reads N / 4 of them for an N-byte array and steps on by the 8 bytes it read, so it
+// took the indices' last bytes (0xffffffff) as the column starts' size and called calloc for
+// 4 GB. The 264-byte file as the fuzzer wrote it (fuzz/seeds/mat_file/regression-v5-sparse-int16-indices.mat).
+TEST_F(MatFileTest, SparseIndicesOfOtherThan32BitsAreRejectedBeforeMatio) {
+  const std::string elements(
+      "\x0e\x00\x00\x00\x80\x00\x00\x00\x06\x00\x00\x00\x08\x00\x00\x00\x05\x00\x00\x00\x04\x00\x00\x00"
+      "\x05\x00\x00\x00\x08\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\x00\x01\x00\x4b\x00\x00\x00"
+      "\x03\x00\x00\x00\x10\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00\x00\x04\x00\x00\x00\xff\xff\xff\xff"
+      "\x03\x00\x00\x00\x0c\x00\x00\x00\x00\x00\x00\x00\x02\x00\x00\x00\xff\xff\xff\xff\xff\xff\xff\xff"
+      "\x01\x00\x00\x00\x20\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x40\x00\x00\x00\x00\x00\x00\xf0\xbf"
+      "\x00\x00\x00\x00\x00\x00\xf0\xbf\x00\x00\x00\x00\x00\x00\x00\x40",
+      136);
+  const std::string path = write_text("sparse_int16_indices.mat", v5_header() + elements);
+  for (const bool dense : {false, true})
+    expect_error([&] { dense ? (void)hbtrack::read_mat_variable(path, "K") : (void)hbtrack::read_mat_variable_sparse(path, "K"); }, path,
+                 "corrupt MAT file: the row indices of the sparse matrix at byte 128 are of type 3; the format stores them as 32-bit "
+                 "integers, miINT32 (5) or miUINT32 (6)");
+}
+
+// The same rule inside a compressed (v7) variable, and the arrays libmatio reads wherever they
+// follow: a sparse matrix cut short before its values would have it read the next element's.
+TEST_F(MatFileTest, SparseArraysAreCheckedWhenCompressedAndMustAllBeThere) {
+  Eigen::SparseMatrix<double> matrix(3, 3);
+  matrix.insert(0, 0) = 2.0;
+  matrix.insert(2, 1) = -1.0;
+  const std::string matio_compressed_path = path_for("sparse_matio_compressed.mat");
+  {
+    MatWriter writer(matio_compressed_path, MAT_FT_MAT5, MAT_COMPRESSION_ZLIB);
+    writer.sparse("K", matrix);
+  }
+  EXPECT_EQ(hbtrack::read_mat_variable_sparse(matio_compressed_path, "K").nonZeros(), 2) << "a valid compressed sparse variable loads";
+
+  const std::string clean = sparse_file_bytes("sparse_whole.mat", matrix);
+  const std::string row_indices("\x06\0\0\0\x08\0\0\0\0\0\0\0\x02\0\0\0", 16);                        // 0 2 as uint32
+  const std::string column_starts("\x06\0\0\0\x10\0\0\0\0\0\0\0\x01\0\0\0\x02\0\0\0\x02\0\0\0", 24);  // 0 1 2 2
+  const std::size_t row_indices_at = clean.find(row_indices), column_starts_at = clean.find(column_starts);
+  ASSERT_NE(row_indices_at, std::string::npos);
+  ASSERT_NE(column_starts_at, std::string::npos);
+
+  // The variable (after the 128-byte header) deflated into one miCOMPRESSED element.
+  const auto compressed = [&](const std::string& file_bytes) {
+    const std::string variable = file_bytes.substr(128);
+    uLongf packed_size = compressBound(static_cast<uLong>(variable.size()));
+    std::string packed(packed_size, '\0');
+    EXPECT_EQ(compress2(reinterpret_cast<Bytef*>(packed.data()), &packed_size, reinterpret_cast<const Bytef*>(variable.data()),
+                        static_cast<uLong>(variable.size()), Z_BEST_COMPRESSION),
+              Z_OK);
+    const std::uint32_t tag[2] = {15, static_cast<std::uint32_t>(packed_size)};
+    return file_bytes.substr(0, 128) + std::string(reinterpret_cast<const char*>(tag), 8) + packed.substr(0, packed_size);
+  };
+  const std::string deflated_path = write_text("sparse_deflated.mat", compressed(clean));
+  EXPECT_EQ(hbtrack::read_mat_variable_sparse(deflated_path, "K").nonZeros(), 2) << "the hand-deflated variable loads";
+
+  std::string int16_rows = clean;
+  int16_rows[row_indices_at] = '\x03';
+  const std::string compressed_int16_path = write_text("sparse_compressed_int16_rows.mat", compressed(int16_rows));
+  expect_error([&] { hbtrack::read_mat_variable_sparse(compressed_int16_path, "K"); }, compressed_int16_path,
+               "corrupt MAT file: the row indices of the sparse matrix at byte 0 of the compressed element at byte 128 are of type 3");
+
+  std::string int16_starts = clean;
+  int16_starts[column_starts_at] = '\x03';
+  const std::string int16_path = write_text("sparse_int16_starts.mat", int16_starts);
+  expect_error([&] { hbtrack::read_mat_variable_sparse(int16_path, "K"); }, int16_path,
+               "the column starts of the sparse matrix at byte 128 are of type 3");
+
+  std::string cut = clean.substr(0, column_starts_at + column_starts.size());
+  const auto cut_bytes = static_cast<std::uint32_t>(cut.size() - 136);  // after the header (128) and the variable's tag
+  cut.replace(132, 4, std::string(reinterpret_cast<const char*>(&cut_bytes), 4));
+  const std::string cut_path = write_text("sparse_without_values.mat", cut);
+  expect_error([&] { hbtrack::read_mat_variable_sparse(cut_path, "K"); }, cut_path,
+               "corrupt MAT file: the sparse matrix at byte 128 ends before its values (the format stores array flags, dimensions, name, "
+               "row indices, column starts and values)");
 }
 
 TEST_F(MatFileTest, TruncatedFileNeverCrashes) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
+#include <string>
 
 #include "cli_common.hpp"
 #include "resume_command.hpp"
@@ -11,6 +12,30 @@
 namespace hbtrack::cli {
 void on_signal(int);
 }
+
+namespace {
+// A reason quotes what the user wrote (a dof name, a --set value), which may hold a newline or
+// another control character: escaped, the reason stays one line (a dof name "a\nb" in an
+// element gave a two-line "unknown dof", issue 39's hostile rerun).
+std::string one_line(const std::string& reason) {
+  std::string line;
+  for (const char c : reason) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      line += "\\n";
+    } else if (c == '\t') {
+      line += "\\t";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      line += escaped;
+    } else {
+      line += c;
+    }
+  }
+  return line;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace hbtrack::cli;
@@ -38,14 +63,14 @@ int main(int argc, char** argv) {
     for (const Verb& v : verbs)
       if (v.command->parsed()) return v.run();
   } catch (const RunFailed& e) {
-    std::fprintf(stderr, "hbtrack: %s\n", e.reason.c_str());
+    std::fprintf(stderr, "hbtrack: %s\n", one_line(e.reason).c_str());
     if (!e.next_step.empty()) std::fprintf(stderr, "%s\n", e.next_step.c_str());
     return 1;
   } catch (const hbtrack::CaseError& e) {
-    std::fprintf(stderr, "hbtrack: %s\n", e.what());
+    std::fprintf(stderr, "hbtrack: %s\n", one_line(e.what()).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "hbtrack: %s\n", e.what());
+    std::fprintf(stderr, "hbtrack: %s\n", one_line(e.what()).c_str());
     return 3;
   }
   return 0;

@@ -87,7 +87,12 @@ ResultFolderContents list_result_folder(const std::string& dir) {
 nlohmann::json read_summary(const std::string& dir) {
   const std::string path = dir + "/summary.json";
   if (!std::ifstream(path)) throw CaseError(path + ": cannot read (is " + dir + " a result folder of hbtrack?)");
-  return read_json_file(path, "a result summary");
+  nlohmann::json summary = read_json_file(path, "a result summary");
+  // Every verb writes an object; an array or a number was exported as if it were a result
+  // (exit 0), and its readers index it by key.
+  if (!summary.is_object())
+    throw CaseError(path + ": not a result summary of hbtrack (a JSON object expected, found " + std::string(summary.type_name()) + ")");
+  return summary;
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "matrix_file_limits.hpp"
 
@@ -51,6 +52,72 @@ unsigned v5_type_width(std::uint32_t type) {
   }
 }
 
+// The inflated bytes of a compressed element, read forward from its start in pieces: a sparse
+// variable's index-array tags can lie megabytes in, and only those few bytes are needed.
+class InflatedElement {
+ public:
+  InflatedElement(std::ifstream& in, std::uint64_t begin, std::uint32_t packed_bytes)
+      : in_(in), next_packed_(begin), packed_end_(begin + packed_bytes) {
+    ok_ = inflateInit(&z_) == Z_OK;
+  }
+  ~InflatedElement() {
+    if (ok_) inflateEnd(&z_);
+  }
+  InflatedElement(const InflatedElement&) = delete;
+  InflatedElement& operator=(const InflatedElement&) = delete;
+
+  // The n bytes at `offset` of the inflated stream; offsets must not go back before an earlier
+  // read's. False past the stream's end or on a corrupt stream.
+  bool read(std::uint64_t offset, unsigned char* out, std::size_t n) {
+    if (offset < window_start_) return false;
+    while (offset + n > window_start_ + window_.size()) {
+      if (offset > window_start_ + window_.size()) {  // nothing before `offset` is needed again
+        window_start_ += window_.size();
+        window_.clear();
+      }
+      if (!inflate_more()) return false;
+    }
+    std::memcpy(out, window_.data() + (offset - window_start_), n);
+    const std::size_t done = static_cast<std::size_t>(offset - window_start_);
+    window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(done));
+    window_start_ = offset;
+    return true;
+  }
+
+ private:
+  bool inflate_more() {
+    if (!ok_ || finished_) return false;
+    if (z_.avail_in == 0) {
+      const std::uint64_t take = std::min<std::uint64_t>(packed_.size(), packed_end_ - next_packed_);
+      if (take == 0) return false;
+      in_.clear();
+      in_.seekg(static_cast<std::streamoff>(next_packed_));
+      in_.read(reinterpret_cast<char*>(packed_.data()), static_cast<std::streamsize>(take));
+      if (static_cast<std::uint64_t>(in_.gcount()) != take) return false;
+      next_packed_ += take;
+      z_.next_in = packed_.data();
+      z_.avail_in = static_cast<uInt>(take);
+    }
+    unsigned char plain[1 << 14];
+    z_.next_out = plain;
+    z_.avail_out = sizeof plain;
+    const int status = inflate(&z_, Z_SYNC_FLUSH);
+    if (status != Z_OK && status != Z_STREAM_END && status != Z_BUF_ERROR) return false;
+    finished_ = status == Z_STREAM_END;
+    const std::size_t have = sizeof plain - z_.avail_out;
+    window_.insert(window_.end(), plain, plain + have);
+    return have > 0 || z_.avail_in == 0;
+  }
+
+  std::ifstream& in_;
+  std::uint64_t next_packed_, packed_end_;
+  z_stream z_{};
+  bool ok_ = false, finished_ = false;
+  std::vector<unsigned char> packed_ = std::vector<unsigned char>(1 << 16);
+  std::vector<unsigned char> window_;
+  std::uint64_t window_start_ = 0;
+};
+
 // libmatio allocates what a header claims before checking it against the file: a v5 dims tag
 // of 4 GB made Mat_VarReadInfo ask for 8 GB, a v4 name length of 1.7 GB as much, a tag inside
 // a compressed (v7) element 2.5 GB. So the headers are walked first and a size claiming more
@@ -79,6 +146,8 @@ class MatHeaderCheck {
   static constexpr std::uint32_t kCompressed = 15;
   static constexpr std::uint32_t kMinVariableBytes = 40;  // array flags 16, dims tag and 2 dims 16, name tag 8
   static constexpr std::uint64_t kMaxZlibRatio = 1032;
+  static constexpr std::uint32_t kInt32 = 5, kUint32 = 6;
+  static constexpr std::uint32_t kSparseClass = 5, kComplexFlag = 0x0800;
   // From a matrix element's tag: its tag (8), the array flags (8 + 8), the dims tag's type (4).
   static constexpr std::size_t kDimsSizeAt = 28;
 
@@ -120,6 +189,12 @@ class MatHeaderCheck {
       if (sub_bytes > matrix_bytes - (at - 8)) fail_compressed(begin, sub_bytes, matrix_bytes - (at - 8));
       at += 8 + (sub_bytes + 7u) / 8u * 8u;
     }
+    if (matrix_bytes >= 16 && have >= 24 && (word32(plain + 16) & 0xffu) == kSparseClass) {
+      InflatedElement inflated(in_, begin, bytes);
+      check_sparse_arrays("byte 0 of the compressed element at byte " + std::to_string(begin - 8), matrix_bytes,
+                          (word32(plain + 16) & kComplexFlag) != 0,
+                          [&](std::uint64_t offset, unsigned char* out) { return inflated.read(8 + offset, out, 8); });
+    }
   }
   // libmatio steps over a sub-element by its element count times its type's width, not by its
   // padded size: a type without a width, or a size that is no whole number of elements, puts
@@ -140,6 +215,31 @@ class MatHeaderCheck {
     if (type != 6 || bytes != 8)
       fail(path_, "corrupt MAT file: the array flags at " + where + " are of type " + std::to_string(type & 0xffffu) + " and " +
                       std::to_string(type >> 16 ? type >> 16 : bytes) + " bytes; the format requires miUINT32 (6) of 8 bytes");
+  }
+  // libmatio reads a sparse matrix's row indices and column starts as N / 4 elements of the type
+  // their tag names (N its bytes) and steps on by what it read, so only 4-byte integers keep it on
+  // the file's layout: 16-bit row indices left it inside them, where it took 0xffffffff as the
+  // column starts' size and asked calloc for 4 GB (fuzzing, issue 39). It reads them, and the
+  // values, wherever they follow, so all must be inside the matrix. `tag_at(offset, tag)` reads
+  // the 8-byte tag `offset` bytes after the matrix's own tag.
+  template <class TagAt>
+  void check_sparse_arrays(const std::string& where, std::uint64_t matrix_bytes, bool complex, TagAt tag_at) const {
+    static constexpr const char* kParts[] = {"array flags",   "dimensions", "name",           "row indices",
+                                             "column starts", "values",     "imaginary parts"};
+    const unsigned parts = complex ? 7 : 6;
+    std::uint64_t offset = 0;
+    for (unsigned part = 0; part < parts; ++part) {
+      unsigned char tag[8];
+      if (offset + 8 > matrix_bytes || !tag_at(offset, tag))
+        fail(path_, "corrupt MAT file: the sparse matrix at " + where + " ends before its " + kParts[part] + " (the format stores " +
+                        (complex ? "array flags, dimensions, name, row indices, column starts, values and imaginary parts)"
+                                 : "array flags, dimensions, name, row indices, column starts and values)"));
+      const std::uint32_t type = word32(tag), data_type = type & 0xffffu, small_bytes = type >> 16;
+      if ((part == 3 || part == 4) && data_type != kInt32 && data_type != kUint32)
+        fail(path_, "corrupt MAT file: the " + std::string(kParts[part]) + " of the sparse matrix at " + where + " are of type " +
+                        std::to_string(data_type) + "; the format stores them as 32-bit integers, miINT32 (5) or miUINT32 (6)");
+      offset += small_bytes ? 8 : 8 + (std::uint64_t{word32(tag + 4)} + 7u) / 8u * 8u;
+    }
   }
   [[noreturn]] void fail_compressed(std::uint64_t begin, std::uint64_t claimed, std::uint64_t room) const {
     fail(path_, "corrupt MAT file: the compressed element at byte " + std::to_string(begin - 8) + " holds a tag of " +
@@ -190,6 +290,10 @@ class MatHeaderCheck {
           fail(path_, "corrupt MAT file: the matrix at byte " + std::to_string(at) + " claims dims of " +
                           std::to_string(word32(dims_size)) + " bytes in " + std::to_string(bytes));
         check_elements(at + 8, at + 8 + bytes, depth + 1);
+        unsigned char flags[4];
+        if (bytes >= 16 && read_at(at + 16, flags, 4) && (word32(flags) & 0xffu) == kSparseClass)
+          check_sparse_arrays("byte " + std::to_string(at), bytes, (word32(flags) & kComplexFlag) != 0,
+                              [&](std::uint64_t offset, unsigned char* out) { return read_at(at + 8 + offset, out, 8); });
       }
       if (type == kCompressed && depth == 0) check_compressed(at + 8, bytes);
       // Sub-elements are padded to 8 bytes; top-level elements (compressed ones) are not.
