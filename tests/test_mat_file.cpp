@@ -289,7 +289,10 @@ TEST_F(MatFileTest, NonFiniteValueIsRejected) {
 TEST_F(MatFileTest, ImplausibleSizeInHeaderIsRejected) {
   const std::string four_million("\x00\x09\x3d\x00", 4);  // 4'000'000 little-endian, within the dimension limit
   const std::string path = mat_with_patched_dims("corrupt_dims.mat", 2, 3, 12, four_million);
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "variable 'K': header claims 2 x 4000000");
+  // Refused by the header check, before libmatio allocates from those dims (its 96 bytes cannot
+  // hold 8e6 elements), rather than after it by the reader's "header claims 2 x 4000000".
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "the dimensions of the matrix at byte 128 make more elements than its 96 bytes can hold");
 }
 
 // Fuzzing finding (build-fuzz/findings/mat_file/oom-1145...): a dims tag claiming 4 GB made
@@ -353,7 +356,10 @@ TEST_F(MatFileTest, ArrayFlagsOfAnotherSizeThanTheFormatsAreRejected) {
 // for over 30 s under the sanitizers; the dimension limit is now 5e6.
 TEST_F(MatFileTest, DimensionAboveTheLimitIsRejected) {
   const std::string path = mat_with_patched_dims("wide.mat", 2, 3, 12, std::string("\x00\xe1\xf5\x05", 4));  // 100'000'000
-  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path, "size 2 x 100000000 exceeds the limit of 5000000 per dimension");
+  // The header check refuses it first (96 bytes cannot hold 2e8 elements); the reader's limit
+  // of 5e6 per dimension stays for files large enough to hold what their dims claim.
+  expect_error([&] { hbtrack::read_mat_variable(path, "K"); }, path,
+               "the dimensions of the matrix at byte 128 make more elements than its 96 bytes can hold");
 }
 
 // Fuzzing finding (oom-0338...): inside a compressed (v7) element, a tag claiming 2.5 GB that
@@ -489,6 +495,24 @@ TEST_F(MatFileTest, SparseIndicesOfOtherThan32BitsAreRejectedBeforeMatio) {
     expect_error([&] { dense ? (void)hbtrack::read_mat_variable(path, "K") : (void)hbtrack::read_mat_variable_sparse(path, "K"); }, path,
                  "corrupt MAT file: the row indices of the sparse matrix at byte 128 are of type 3; the format stores them as 32-bit "
                  "integers, miINT32 (5) or miUINT32 (6)");
+}
+
+// A double matrix of 2 x 1493172226 in 80 bytes: libmatio's Mat_VarReadInfo asked calloc for
+// 24 GB before reading its data (fuzzing, issue 39; the fuzzer's input is
+// fuzz/seeds/mat_file/regression-v5-dims-of-24-gb.mat). Each element takes a byte at least.
+TEST_F(MatFileTest, DimensionsBeyondTheVariablesBytesAreRejectedBeforeMatio) {
+  const std::string elements = std::string(
+                                   "\x0e\x00\x00\x00\x50\x00\x00\x00\x06\x00\x00\x00\x08\x00\x00\x00"
+                                   "\x06\x00\x00\x00\x00\x00\x00\x00\x05\x00\x00\x00\x08\x00\x00\x00"
+                                   "\x02\x00\x00\x00\x02\x00\x00\x59\x01\x00\x01\x00\x4b\x00\x00\x00"
+                                   "\x09\x00\x00\x00\x20\x00\x00\x00",
+                                   56) +
+                               std::string(32, '\0');
+  const std::string path = write_text("dims_of_24_gb.mat", v5_header() + elements);
+  for (const bool dense : {false, true})
+    expect_error([&] { dense ? (void)hbtrack::read_mat_variable(path, "K") : (void)hbtrack::read_mat_variable_sparse(path, "K"); }, path,
+                 "corrupt MAT file: the dimensions of the matrix at byte 128 make more elements than its 80 bytes can hold (each element "
+                 "takes at least one byte)");
 }
 
 // The same rule inside a compressed (v7) variable, and the arrays libmatio reads wherever they

@@ -177,6 +177,7 @@ class MatHeaderCheck {
       fail_compressed(begin, word32(plain + kDimsSizeAt), matrix_bytes);
     if (matrix_bytes > 0 && have >= 16)
       check_array_flags("byte 8 of the compressed element at byte " + std::to_string(begin - 8), word32(plain + 8), word32(plain + 12));
+    check_dims_product("byte 0 of the compressed element at byte " + std::to_string(begin - 8), plain + 8, have - 8, matrix_bytes);
     for (std::size_t at = 8; at + 8 <= have;) {
       const std::uint32_t type = word32(plain + at), sub_bytes = word32(plain + at + 4);
       const std::string where = "byte " + std::to_string(at) + " of the compressed element at byte " + std::to_string(begin - 8);
@@ -215,6 +216,24 @@ class MatHeaderCheck {
     if (type != 6 || bytes != 8)
       fail(path_, "corrupt MAT file: the array flags at " + where + " are of type " + std::to_string(type & 0xffffu) + " and " +
                       std::to_string(type >> 16 ? type >> 16 : bytes) + " bytes; the format requires miUINT32 (6) of 8 bytes");
+  }
+  // libmatio's Mat_VarReadInfo allocates a small numeric variable's data from its dimensions
+  // before reading it: dims of 2 x 1.5e9 in a 221-byte file asked calloc for 24 GB (fuzzing,
+  // issue 39). Every element but a sparse matrix's is stored in at least one byte (a cell's or a
+  // struct's in a sub-matrix of 8 or more), so the dimensions' product cannot exceed the matrix's
+  // bytes. `header` holds the matrix's array flags tag onwards (`have` bytes of it).
+  void check_dims_product(const std::string& where, const unsigned char* header, std::size_t have, std::uint64_t matrix_bytes) const {
+    static constexpr std::size_t kDimsAt = 24, kMaxDims = 32;  // after the flags (16) and the dims tag (8)
+    if (have < kDimsAt || (word32(header + 8) & 0xffu) == kSparseClass || (word32(header + 16) >> 16) != 0) return;
+    const std::uint32_t count = word32(header + 20) / 4;
+    std::uint64_t product = 1;
+    for (std::uint32_t k = 0; k < std::min<std::uint32_t>(count, kMaxDims) && kDimsAt + 4 * (k + 1) <= have; ++k) {
+      const std::uint64_t dim = word32(header + kDimsAt + 4 * k);
+      product = dim != 0 && product > matrix_bytes / dim ? matrix_bytes + 1 : product * dim;
+    }
+    if (product > matrix_bytes)
+      fail(path_, "corrupt MAT file: the dimensions of the matrix at " + where + " make more elements than its " +
+                      std::to_string(matrix_bytes) + " bytes can hold (each element takes at least one byte)");
   }
   // libmatio reads a sparse matrix's row indices and column starts as N / 4 elements of the type
   // their tag names (N its bytes) and steps on by what it read, so only 4-byte integers keep it on
@@ -289,6 +308,9 @@ class MatHeaderCheck {
         if (bytes >= kDimsSizeAt - 4 && read_at(at + kDimsSizeAt, dims_size, 4) && word32(dims_size) > bytes)
           fail(path_, "corrupt MAT file: the matrix at byte " + std::to_string(at) + " claims dims of " +
                           std::to_string(word32(dims_size)) + " bytes in " + std::to_string(bytes));
+        unsigned char header[64];
+        const std::size_t have = std::min<std::uint64_t>(sizeof header, bytes);
+        if (read_at(at + 8, header, have)) check_dims_product("byte " + std::to_string(at), header, have, bytes);
         check_elements(at + 8, at + 8 + bytes, depth + 1);
         unsigned char flags[4];
         if (bytes >= 16 && read_at(at + 16, flags, 4) && (word32(flags) & 0xffu) == kSparseClass)
