@@ -293,9 +293,18 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None, norm=False):
     ax.set_ylabel(length_label(_response_label(name, norm) + ("" if norm else " over a period"), length_unit))
     ax.set_title("tracking curves and NFRCs (folds on the curves)", fontsize=10)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    if len(nfrcs) > _MAX_LEGEND_INSIDE:
+        # A study's two dozen NFRCs: a legend inside would cover the curves (rotor 67's clearance)
+        fig.set_size_inches(9.5, 4.8)
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), ncol=1 if len(nfrcs) <= 26 else 2, borderaxespad=0)
+    else:
+        ax.legend(fontsize=8)
     fig.tight_layout()
     return fig
+
+
+# More NFRCs than this and the validation figure's legend goes beside the axes.
+_MAX_LEGEND_INSIDE = 8
 
 
 def harmonic_signal(harmonics, omega, time):

@@ -97,10 +97,12 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
             continue
         nfrcs = [read(os.path.join(study_dir, v["folder"])) for v in entry.get("validations", [])]
         isolas = []
-        for v in entry.get("validations", []):
+        for v, nfrc in zip(entry.get("validations", []), nfrcs):
             for branch in v.get("isola_branches", []):
                 result = read(os.path.join(study_dir, branch["folder"]))
-                result["summary"].setdefault("options", {}).setdefault("parameters", {})[param] = v["value"]
+                # The validation NFRC's value, in the figures' units as read (v["value"] is the model's)
+                value = nfrc["summary"].get("options", {}).get("parameters", {}).get(param, v["value"])
+                result["summary"].setdefault("options", {}).setdefault("parameters", {})[param] = value
                 isolas.append(result)
         figures[f"tracking_{param}"] = plots.tracking_plane_figure(tracks, validations=nfrcs, length_unit=length_unit,
                                                                    nfrc_special_points=nominal_points)

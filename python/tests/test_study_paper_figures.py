@@ -105,3 +105,16 @@ def test_a_curve_the_study_started_from_a_validation_nfrc_is_named_by_it(small_s
     labels = [t.get_text() for t in figure.get_axes()[0].get_legend().get_texts()]
     assert "LP1 tracked" in labels and "validate_amplitude_2 LP3 tracked" in labels
     plt.close("all")
+
+
+def test_a_validation_figure_of_many_nfrcs_keeps_its_legend_off_the_curves(small_study):
+    # Rotor 67's study draws 23 NFRCs of the clearance: a legend inside covered the axes.
+    track = read_result(f"{small_study}/track_amplitude_lp1")
+    nfrc = read_result(f"{small_study}/nfrc")
+    figure = plots.validation_figure(track, [nfrc] * 12)
+    figure.canvas.draw()
+    (ax,) = figure.get_axes()
+    legend_box = ax.get_legend().get_window_extent()
+    assert legend_box.x0 >= ax.get_window_extent().x1  # beside the axes, not over them
+    assert legend_box.x1 <= figure.bbox.x1 and legend_box.y0 >= figure.bbox.y0  # and inside the figure
+    plt.close(figure)
