@@ -68,6 +68,26 @@ TEST(StudyChecks, AValidationThatLeftItsRangeIsJudgedWithItsContinuationBeyondIt
   EXPECT_EQ(hbtrack::cli::failed_checks(s).size(), 2u);
 }
 
+TEST(StudyChecks, ATimeIntegrationThatLeftTheHbmOrbitFailsTheStudy) {
+  // Rotor 67, friction sense reversed: from 0.22 % above its fold the full model goes to the
+  // low-amplitude branch (first harmonic 67 % below the HBM's after 200 periods). A run that has
+  // not settled but stays within 10 % (the blade's 60 periods) is a finding, not a failure.
+  json s = passing_summary();
+  s["simulation"] = {{"converged", false},
+                     {"periods", 200},
+                     {"outputs", json::array({{{"name", "max_le"}, {"relative_difference", -0.168}},
+                                              {{"name", "h1_le"}, {"relative_difference", -0.673}}})}};
+  json failed = hbtrack::cli::failed_checks(s);
+  ASSERT_EQ(failed.size(), 1u) << failed;
+  EXPECT_EQ(failed[0], "simulate: the time integration left the HBM orbit (h1_le -67 % off after 200 periods)");
+  s["simulation"]["outputs"][1]["relative_difference"] = 0.0055;
+  EXPECT_TRUE(hbtrack::cli::failed_checks(s).empty()) << hbtrack::cli::failed_checks(s);
+  s["isola_simulation"] = {{"periods", 126}, {"outputs", json::array({{{"name", "h1_te"}, {"relative_difference", 0.27}}})}};
+  failed = hbtrack::cli::failed_checks(s);
+  ASSERT_EQ(failed.size(), 1u) << failed;
+  EXPECT_NE(failed[0].get<std::string>().find("simulate_isola: the time integration left the HBM orbit (h1_te 27 %"), std::string::npos);
+}
+
 TEST(StudyChecks, ANominalNfrcThatStoppedEarlyFailsTheStudy) {
   json s = passing_summary();
   s["nfrc"] = {{"stop_reason", "max_points"}, {"points", 3}};
