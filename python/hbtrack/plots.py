@@ -159,13 +159,16 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
         value = isola["summary"]["options"]["parameters"][param]
         branch = isola["branch"]
         drawn.append((branch["omega"], np.full(len(branch["omega"]), value), _response(branch, name, norm)))
-        ax.plot(*drawn[-1], color="C3", lw=1.1, label="isolated branches" if j == 0 else None)
+        ax.plot(*drawn[-1], color="k", lw=1.1, label="isolated branches" if j == 0 else None)
     ax.view_init(*least_hidden_view(drawn, [ax.get_xlim3d(), ax.get_ylim3d(), ax.get_zlim3d()]))
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
     ax.set_zlabel(length_label(_response_label(name, norm), length_unit))
     ax.set_title("limit-point tracking (v: min, ^: max of the parameter)", fontsize=10)
-    ax.legend(fontsize=8)
+    # Beside the box: inside it, a study's legend covered the omega axis and its label
+    fig.set_size_inches(9.5, 5.5)
+    fig.subplots_adjust(left=0.0, right=0.68)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.1, 0.95), borderaxespad=0)
     return fig
 
 
