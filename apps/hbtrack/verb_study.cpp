@@ -5,11 +5,13 @@
 //   backbone_modeK/       with [study] backbone: the nonlinear mode K (study_branches.hpp)
 //   switch_bpK/, _pdK/    with [study] switch: the branch born at the NFRC's special point K
 //   track_P_lpK/          limit point K followed in parameter P (the case's [study] section)
+//   track_P_nsK/, _pdK/   with [study] track_ns_pd: NS (PD) point K followed in P
 //   validate_P_J/         an NFRC at a parameter value next to each extremum of the P curves
 //   crossings_P_J/        the limit points of the tracking curves at that value, located
 //   isolas_P_J/           the branches through the crossings no validation NFRC holds
 //   simulate/             time integration from the stable resonance point of the NFRC
-//   simulate_isola/       time integration from the stable isola point of largest output
+//   simulate_isola/       time integration from the middle of the stable stretch of the isolas'
+//                         largest stable output (study_comparisons.hpp)
 //   converged/            with [study] convergence: the NFRC and tracking curves at more H, N
 //   figures/, index.md    the figures and a page with the numbers (study_report.cpp)
 #include <algorithm>

@@ -249,6 +249,10 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
     return fig
 
 
+# More NFRCs than this and the validation figure's legend goes beside the axes.
+_MAX_LEGEND_INSIDE = 8
+
+
 def validation_figure(tracks, nfrcs, output=None, length_unit=None, norm=False):
     """Tracking curves in (omega, max of an output) with separately computed NFRCs.
 
@@ -305,9 +309,6 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None, norm=False):
     fig.tight_layout()
     return fig
 
-
-# More NFRCs than this and the validation figure's legend goes beside the axes.
-_MAX_LEGEND_INSIDE = 8
 
 
 def harmonic_signal(harmonics, omega, time):
