@@ -88,6 +88,20 @@ TEST(StudyChecks, ATimeIntegrationThatLeftTheHbmOrbitFailsTheStudy) {
   EXPECT_NE(failed[0].get<std::string>().find("simulate_isola: the time integration left the HBM orbit (h1_te 27 %"), std::string::npos);
 }
 
+TEST(StudyChecks, TheIsolasTimeIntegrationIsJudgedByTheOrbitNotBySettling) {
+  // Rotor 67 reversed: from the middle of the isola's stable stretch the integration stays within
+  // 1.2 % of the HBM but has not settled after 200 periods (exit 1), as the resonance's.
+  json s = passing_summary();
+  s["steps"].push_back({{"folder", "simulate_isola"}, {"exit_code", 1}});
+  json failed = hbtrack::cli::failed_checks(s);
+  ASSERT_EQ(failed.size(), 1u) << failed;  // no comparison: the run did not get as far
+  EXPECT_NE(failed[0].get<std::string>().find("simulate_isola: exit 1"), std::string::npos) << failed;
+  s["isola_simulation"] = {{"periods", 200}, {"outputs", json::array({{{"name", "h1_le"}, {"relative_difference", 0.012}}})}};
+  EXPECT_TRUE(hbtrack::cli::failed_checks(s).empty()) << hbtrack::cli::failed_checks(s);
+  s["steps"].back()["exit_code"] = 2;  // bad input is never a finding
+  EXPECT_EQ(hbtrack::cli::failed_checks(s).size(), 1u);
+}
+
 TEST(StudyChecks, ANominalNfrcThatStoppedEarlyFailsTheStudy) {
   json s = passing_summary();
   s["nfrc"] = {{"stop_reason", "max_points"}, {"points", 3}};

@@ -94,9 +94,10 @@ class Study {
   // isolated branches: `isolas` follows each until it closes.
   bool isolas();
 
-  long simulation_point() const;
+  // K of the nominal NFRC's LP nearest the largest stable response (0: no time integration).
+  size_t resonance_fold() const;
 
-  void compare_simulation(long point);
+  void compare_simulation();
 
   // The paper's Fig. 12: a stable point of an isolated branch, integrated in time.
   bool isola_simulation();

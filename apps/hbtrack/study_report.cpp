@@ -155,12 +155,44 @@ void tracking_section(std::ostream& out, const json& s) {
   out << "\n";
 }
 
+// Where the full model's fold lies next to the HBM's (`simulate --near-lp`), with the LP at more
+// harmonics when the convergence stage computed it.
+void fold_search_lines(std::ostream& out, const json& s) {
+  const json search = s["simulation"].value("fold_search", json::object());
+  if (search.empty()) return;
+  const double lp_omega = search.value("lp_omega", 0.0);
+  out << "Time integrations started on the HBM orbit on the stable side of LP" << search.value("lp", 0)
+      << " (omega = " << num(lp_omega, "%.2f") << " rad/s";
+  if (s.contains("convergence"))
+    for (const auto& row : s["convergence"].value("limit_points", json::array()))
+      if (row.value("omega", 0.0) == lp_omega && row.contains("refined_omega"))
+        out << "; at H = " << s["convergence"].value("harmonics", 0) << ": " << num(row.value("refined_omega", 0.0), "%.2f") << " rad/s, "
+            << num(100 * row.value("relative_difference_omega", 0.0), "%+.2f") << " %";
+  out << "), closest first ([simulate/](simulate/)):\n\n| NFRC point | omega (rad/s) | from the LP | periods | first harmonics, "
+         "largest change | orbit |\n|---|---|---|---|---|---|\n";
+  for (const auto& r : search.value("runs", json::array()))
+    out << "| " << r.value("point", 0) << " | " << num(r.value("omega", 0.0), "%.2f") << " | "
+        << num(100 * r.value("distance", 0.0), "%.2f") << " % | " << r.value("periods", 0) << " | "
+        << num(100 * r.value("departure", 0.0), "%.2f") << " % | " << (r.value("held", false) ? "held" : "left") << " |\n";
+  out << "\n";
+  if (search.contains("held"))
+    out << "The full model's periodic branch ends between "
+        << (search.contains("left") ? num(search["left"].value("omega", 0.0), "%.2f") : num(lp_omega, "%.2f")) << " and "
+        << num(search["held"].value("omega", 0.0), "%.2f")
+        << " rad/s: the comparison below is from the start closest to the fold that held.\n\n";
+  else
+    out << "No start held the orbit (a first harmonic more than " << num(100 * search.value("left_the_orbit_above", 0.0), "%.0f")
+        << " % off at the end): the comparison below is the last start's.\n\n";
+}
+
 void simulation_section(std::ostream& out, const json& s) {
   if (!s.contains("simulation")) return;
   const json& m = s["simulation"];
-  out << "## Time integration of the resonance\n\nFrom the HBM state of NFRC point " << m.value("point", 0)
-      << " (omega = " << num(m.value("omega", 0.0), "%.2f") << " rad/s), " << m.value("periods", 0) << " periods of HHT-alpha Newmark in "
-      << num(m.value("wall_s", 0.0), "%.1f") << " s ([simulate/](simulate/)).";
+  out << "## Time integration of the resonance\n\n";
+  fold_search_lines(out, s);
+  out << "From the HBM state of NFRC point " << m.value("point", 0) << " (omega = " << num(m.value("omega", 0.0), "%.2f") << " rad/s), "
+      << m.value("periods", 0) << " periods of HHT-alpha Newmark in " << num(m.value("wall_s", 0.0), "%.1f") << " s (["
+      << m.value("folder", "simulate") << "/](" << m.value("folder", "simulate") << "/)).";
   if (!m.value("converged", false))
     out << " Not periodic to `simulate`'s criterion within these periods (last period-to-period change "
         << num(m.value("last_change", 0.0), "%.1e")

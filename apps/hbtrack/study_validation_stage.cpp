@@ -39,17 +39,19 @@ bool Study::validation_and_simulation() {
       crossings.push_back(locate);
     }
   }
-  const long point = simulation_point();
-  if (point >= 0) {
+  // The resonance's time integration: from the stable side of the fold next to the largest stable
+  // response, closest first, until the full model holds the orbit (`simulate --near-lp`).
+  const size_t fold = resonance_fold();
+  if (fold > 0) {
     const int periods = c_.study.simulate_periods;
     frcs.push_back({"simulate",
-                    {"simulate", o_.common.case_path, "--from", dir_ + "/nfrc", "--point", std::to_string(point), "--max-periods",
+                    {"simulate", o_.common.case_path, "--from", dir_ + "/nfrc", "--near-lp", std::to_string(fold), "--max-periods",
                      std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods))},
                     false});
   }
   if (!run_steps(frcs) || !run_steps(crossings) || !continue_validations_beyond_the_range()) return false;
   for (const Probe& p : probes_) compare(p);
-  if (point >= 0) compare_simulation(point);
+  if (fold > 0) compare_simulation();
   return true;
 }
 
@@ -126,13 +128,26 @@ bool Study::isolas() {
   return true;
 }
 
-long Study::simulation_point() const {
-  if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return -1;
-  return resonance_simulation_point(dir_ + "/nfrc", limit_points_, first_output());
+size_t Study::resonance_fold() const {
+  if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return 0;
+  const long point = resonance_simulation_point(dir_ + "/nfrc", limit_points_, first_output());
+  if (point < 0) return 0;
+  const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
+  return nearest_limit_point(limit_points_, b.rows[static_cast<size_t>(point)][0]);
 }
 
-void Study::compare_simulation(long point) {
-  summary_["simulation"] = compare_with_simulation(dir_ + "/nfrc", point, read_summary(dir_ + "/simulate"), c_.outputs);
+// The fold search's start that held the orbit (or, when none did, its last) compared with the
+// HBM point it started from; the search itself beside it.
+void Study::compare_simulation() {
+  const json search = read_summary(dir_ + "/simulate").value("fold_search", json::object());
+  const json runs = search.value("runs", json::array());
+  if (runs.empty()) return;
+  const json& compared = search.contains("held") ? search["held"] : runs.back();
+  const std::string folder = compared.value("folder", "");
+  json& simulation = summary_["simulation"] =
+      compare_with_simulation(dir_ + "/nfrc", compared.value("point", 0L), read_summary(dir_ + "/simulate/" + folder), c_.outputs);
+  simulation["folder"] = "simulate/" + folder;
+  simulation["fold_search"] = search;
   save();
 }
 

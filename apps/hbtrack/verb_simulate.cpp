@@ -3,13 +3,18 @@
 // and whether the motion stays on them (docs/time-integration.md).
 #include <cstdio>
 #include <optional>
+#include <sstream>
 
 #include "cli_common.hpp"
+#include "hbtrack/runs/fold_search.hpp"
+#include "hbtrack/runs/special_point_start.hpp"
 #include "hbtrack/runs/simulate.hpp"
 #include "result_folder.hpp"
 #include "result_folder_sink.hpp"
 
 namespace hbtrack::cli {
+
+using nlohmann::json;
 
 namespace {
 
@@ -42,12 +47,53 @@ class PeriodLine final : public runs::RunMonitor {
 // one-line CaseError (exit 2) naming the flag.
 struct SimulateOptions {
   CommonOptions common;
-  std::string omega, from, point;
+  std::string omega, from, point, near_lp;
+  std::string distances = "0.2,0.5,1,2,3,5";  // percent of omega from the LP
   std::string method = "newmark";
   std::string steps_per_period = "256";
   std::string max_periods = "2000";
   std::string record_periods = "1";
 };
+
+// --distances: increasing percentages of omega, each > 0.
+std::vector<double> parse_distances(const std::string& text) {
+  std::vector<double> fractions;
+  std::stringstream list(text);
+  for (std::string item; std::getline(list, item, ',');) {
+    const double percent = parse_positive("--distances", item);
+    if (!fractions.empty() && percent / 100 <= fractions.back()) throw CaseError("--distances: must increase, got " + text);
+    fractions.push_back(percent / 100);
+  }
+  if (fractions.empty()) throw CaseError("--distances: give at least one percentage, got an empty list");
+  return fractions;
+}
+
+// --near-lp K: integrations from rows of the NFRC's stable side of LP K, closest first, until
+// one holds the orbit (hbtrack/runs/fold_search.hpp).
+runs::RunReport simulate_near_fold(const SimulateOptions& o, long k, const std::vector<double>& distances, const CaseDefinition& c,
+                                   const runs::SimulateOptions& run, ResultFolderSink& sink, runs::RunMonitor& monitor) {
+  const json points = read_summary(o.from).value("special_points", json::array());
+  const json& lp = points[runs::special_point_index(points, SpecialPointType::limit_point, k, {"--near-lp", o.from + "/summary.json"})];
+  const CsvTable branch = read_csv_table(o.from + "/branch.csv");
+  if (std::find(branch.header.begin(), branch.header.end(), "stable") == branch.header.end())
+    throw CaseError(branch.path + ": no column stable: --near-lp needs an NFRC computed with stability on");
+  const auto stable = static_cast<size_t>(branch.column("stable"));
+  const auto amplitude = c.outputs.empty() ? 0 : static_cast<size_t>(branch.column("h1_" + c.outputs[0].name));
+  std::vector<runs::FoldSearchRow> rows;
+  for (const auto& r : branch.rows) rows.push_back({r[0], r[stable] == 1.0, c.outputs.empty() ? 0.0 : r[amplitude]});
+  runs::FoldSearchOptions search;
+  search.simulate = run;
+  search.lp = static_cast<int>(k);
+  search.lp_omega = lp.value("omega", 0.0);
+  search.candidates = runs::fold_search_rows(rows, lp.value("index", 0L), search.lp_omega, distances, branch.path);
+  const HarmonicBalance hbm = make_system(c);
+  search.start_at = [&](long row) {
+    const HbmState s = read_hbm_state(o.from + "/states.csv", row, hbm);
+    return runs::StartPoint{s.omega, s.x, o.from + "/states.csv: point " + std::to_string(row)};
+  };
+  search.origin = {{"from", o.from}, {"near_lp", k}};
+  return runs::simulate_near_fold(c, search, sink, monitor);
+}
 
 int run_simulate(const SimulateOptions& o) {
   const auto t0 = Clock::now();
@@ -60,7 +106,12 @@ int run_simulate(const SimulateOptions& o) {
   if (steady.record_periods > steady.max_periods) throw CaseError("--record-periods: must be <= --max-periods");
   std::optional<double> omega_flag;
   if (!o.omega.empty()) omega_flag = parse_positive("--omega", o.omega);
-  if (o.from.empty() != o.point.empty()) throw CaseError(o.from.empty() ? "--point: needs --from" : "--from: needs --point");
+  if (!o.near_lp.empty() && (o.from.empty() || !o.point.empty() || !o.omega.empty()))
+    throw CaseError("--near-lp: needs --from, and neither --point nor --omega (it chooses its own points)");
+  if (o.near_lp.empty() && o.from.empty() != o.point.empty())
+    throw CaseError(o.from.empty() ? "--point: needs --from" : "--from: needs --point or --near-lp");
+  const long near_lp = o.near_lp.empty() ? 0 : parse_integer("--near-lp", o.near_lp, 1);
+  const std::vector<double> distances = parse_distances(o.distances);
   const long point = o.point.empty() ? -1 : parse_integer("--point", o.point, 0);
   if (o.from.empty() && !omega_flag) throw CaseError("--omega: required unless --from gives the point");
 
@@ -74,13 +125,16 @@ int run_simulate(const SimulateOptions& o) {
     std::vector<std::string> overrides = hbm_overrides(o.from, c);
     overrides.insert(overrides.end(), o.common.sets.begin(), o.common.sets.end());  // --set wins
     c = load_case(o.common.case_path, overrides);
+  }
+  if (!o.point.empty()) {
     const HbmState s = read_hbm_state(o.from + "/states.csv", point, make_system(c));
     run.start = runs::StartPoint{s.omega, s.x, o.from + "/states.csv: point " + o.point};
     run.origin = {{"from", o.from}, {"point", point}};
   }
   ResultFolderSink sink(o.common.out_dir);
   PeriodLine monitor(progress_style(o.common.quiet));
-  const runs::RunReport report = runs::simulate(c, run, sink, monitor);
+  const runs::RunReport report =
+      o.near_lp.empty() ? runs::simulate(c, run, sink, monitor) : simulate_near_fold(o, near_lp, distances, c, run, sink, monitor);
   monitor.finish();
   if (!report.success()) throw RunFailed{report.failure};
   if (!o.common.quiet)
@@ -95,6 +149,13 @@ void add_simulate_verbs(CLI::App& app, VerbList& verbs) {
   simulate->add_option("--omega", options.omega, "forcing frequency (rad/s); default with --from: that point's")->type_name("FLOAT");
   simulate->add_option("--from", options.from, "frc or solve result folder: start on one of its points")->type_name("DIR");
   simulate->add_option("--point", options.point, "row of DIR/branch.csv to start from (0-based), with --from")->type_name("INT");
+  simulate
+      ->add_option("--near-lp", options.near_lp,
+                   "with --from: integrate from the NFRC's stable side of its limit point K, closest first, until the orbit holds")
+      ->type_name("K");
+  simulate->add_option("--distances", options.distances, "with --near-lp: the starts' distances from the LP, in percent of omega")
+      ->type_name("LIST")
+      ->capture_default_str();
   simulate->add_option("--method", options.method, "newmark (implicit HHT-alpha) or dopri5 (adaptive explicit Dormand-Prince)")
       ->type_name("NAME")
       ->capture_default_str();

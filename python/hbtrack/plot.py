@@ -178,6 +178,14 @@ def figures_for(result, length_unit=None, model_unit=None, norm=False, zoom=0.1,
         return {"torus": torus_figure(result, nfrc=origin if origin and origin["kind"] == "frc" else None, length_unit=length_unit)}
     if kind == "sweep":
         return {"sweep_peaks": sweep_figure(result["folder"], length_unit=length_unit)}
+    if kind == "simulate" and "fold_search" in result["summary"]:
+        # `simulate --near-lp`: the figures of the start that held the orbit, else of the last one
+        search = result["summary"]["fold_search"]
+        run = search.get("held") or (search["runs"][-1] if search.get("runs") else None)
+        started = run and _related(result.get("folder", ""), os.path.join(result.get("folder", ""), run["folder"]), factor)
+        if not started:
+            raise ValueError(f"{result.get('folder', 'result')}: the fold search has no integration to draw")
+        return figures_for(started, length_unit, titles=titles, labels=labels)
     if kind == "simulate":
         figures = {"signals": plots.time_signals_figure(result, length_unit=length_unit)}
         summary = result["summary"]

@@ -23,7 +23,7 @@ from .overlay_figures import overlay_figure
 from .plot import figures_for
 from .results import read_result
 from .special_points import SpecialPointType
-from .study_paper_figures import nfrc_isolas_simulation_figure
+from .study_paper_figures import nfrc_isolas_simulation_figure, simulation_folder
 from .units import length_factor, scale_lengths
 
 
@@ -113,8 +113,9 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
             figures[f"validation_{param}"] = plots.validation_figure(tracks, nfrcs + isolas, length_unit=length_unit, norm=True)
     if summary.get("tracking") and os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
         figures["nfrc_isolas_simulation"] = nfrc_isolas_simulation_figure(study_dir, length_unit=length_unit, read=read)
-    if os.path.exists(os.path.join(study_dir, "simulate", "summary.json")):
-        for stem, figure in figures_for(read(os.path.join(study_dir, "simulate")), length_unit).items():
+    simulated = os.path.join(study_dir, simulation_folder(summary))
+    if os.path.exists(os.path.join(simulated, "signals.csv")):
+        for stem, figure in figures_for(read(simulated), length_unit).items():
             figures[f"simulation_{stem}"] = figure
     return figures
 

@@ -31,11 +31,17 @@ def _isolas_to_draw(study_dir, summary, nominal, read):
     return found
 
 
-def _simulated_points(study_dir, names, read):
-    """[(label, omega, {output: ||r||_inf})] of simulate/ and simulate_isola/ (steady or not: the
-    study's page says whether they settled)."""
+def simulation_folder(summary):
+    """The folder of the resonance's time integration the study compared: the fold search's start
+    that held the orbit (simulate/point_R), or simulate/ of a study written before the search."""
+    return (summary.get("simulation") or {}).get("folder", "simulate")
+
+
+def _simulated_points(study_dir, summary, names, read):
+    """[(label, omega, {output: ||r||_inf})] of the resonance's and the isola's time integrations
+    (steady or not: the study's page says whether they settled)."""
     points = []
-    for folder, label in (("simulate", "time integration"), ("simulate_isola", "time integration on the isola")):
+    for folder, label in ((simulation_folder(summary), "time integration"), ("simulate_isola", "time integration on the isola")):
         path = os.path.join(study_dir, folder)
         if os.path.exists(os.path.join(path, "summary.json")):
             s = read(path)["summary"]
@@ -85,7 +91,7 @@ def nfrc_isolas_simulation_figure(study_dir, outputs=None, length_unit=None, rea
             stable, unstable = _stable_masks(isola["branch"])
             _plot_split(ax, isola["branch"]["omega"], norm_of(isola["branch"], name), stable, unstable,
                         f"C{len(names) + i + j * len(names)}", label + what)
-    for k, (label, omega, values) in enumerate(_simulated_points(study_dir, names, read)):
+    for k, (label, omega, values) in enumerate(_simulated_points(study_dir, summary, names, read)):
         ax.plot([omega] * len(names), [values[n] for n in names], "o" if k == 0 else "s", color="k", ms=5, ls="none",
                 zorder=6, label=label)
     ax.set_xlabel(OMEGA_LABEL)

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import hbtrack
+from hbtrack.plot import figures_for
 from hbtrack.results import read_result
 
 from conftest import BLADE, BLADE_CHEAP, BLADE_CLEARANCE, DUFFING, assert_same_columns, run_cli, set_flags
@@ -76,6 +77,37 @@ def test_duffing_simulation_matches_cli(duffing_frc, duffing_simulate_cli):
     assert a["options"]["simulation"] == cli_settings
     for key in ("omega", "max_x", "harmonics_x"):  # the HBM orbit it started from
         np.testing.assert_allclose(a["start"][key], c["start"][key], rtol=RELATIVE, atol=0, err_msg=key)
+
+
+def test_duffing_fold_search_matches_cli(duffing_frc, duffing_frc_cli, results_dir):
+    """simulate(near_lp=K) runs the CLI's `--near-lp K` search: the same starts, the same verdicts."""
+    api = hbtrack.simulate(hbtrack.load_case(DUFFING), start=duffing_frc, near_lp=1, distances=(0.1, 1, 3), max_periods=300)
+    folder = str(results_dir / "duffing_fold")
+    run_cli("simulate", DUFFING, "--from", duffing_frc_cli["folder"], "--near-lp", "1", "--distances", "0.1,1,3", "--max-periods",
+            "300", "-o", folder)
+    cli = read_result(folder)
+    a, c = api["summary"]["fold_search"], cli["summary"]["fold_search"]
+    assert a["held"]["point"] == c["held"]["point"]
+    assert [(r["point"], r["held"], r["periods"]) for r in a["runs"]] == [(r["point"], r["held"], r["periods"]) for r in c["runs"]]
+    for x, y in zip(a["runs"], c["runs"]):
+        assert x["departure"] == pytest.approx(y["departure"], rel=1e-9, abs=1e-15)
+    held = c["held"]["folder"]
+    cli_run = read_result(f"{folder}/{held}")
+    np.testing.assert_allclose(api["branches"][held]["signals"]["x"], cli_run["signals"]["x"], rtol=RELATIVE, atol=1e-300)
+    # The figures of `hbtrack plot` on the search's folder are the held run's.
+    assert set(figures_for(cli)) == set(figures_for(cli_run))
+
+
+def test_fold_search_refuses_what_it_cannot_do(duffing_frc):
+    case = hbtrack.load_case(DUFFING)
+    with pytest.raises(ValueError, match="near_lp: needs start"):
+        hbtrack.simulate(case, near_lp=1)
+    with pytest.raises(ValueError, match="near_lp: needs start .*neither point"):
+        hbtrack.simulate(case, start=duffing_frc, point=3, near_lp=1)
+    with pytest.raises(ValueError, match="distances: must be increasing percentages > 0"):
+        hbtrack.simulate(case, start=duffing_frc, near_lp=1, distances=(1, 0.5))
+    with pytest.raises(Exception, match="near_lp: 3 is beyond the 2 limit points of start"):
+        hbtrack.simulate(case, start=duffing_frc, near_lp=3)
 
 
 def test_blade_frc_matches_cli(results_dir):

@@ -11,6 +11,12 @@
 
 namespace hbtrack::continuation_detail {
 
+namespace {
+// The unit tangent's lambda component below which a start lies on a fold (a regular start's is orders
+// of magnitude larger; a located fold's is rounding, 1e-13 and less).
+constexpr double kStartsOnAFold = 1e-8;
+}  // namespace
+
 ContinuationStepper::ContinuationStepper(ContinuationProblem& problem, const VectorXd& u_for_scale, const ParameterWindow& window,
                                          const ContinuationOptions& options, BranchMonitor* monitor)
     : s_{problem, problem.unknown_scale(u_for_scale), problem.parameter_scale(), problem.residual_scale(), problem.size(), {}, {}, {}},
@@ -46,7 +52,15 @@ bool ContinuationStepper::start(const VectorXd& u0, double lambda_start, BranchP
   VectorXd lambda_axis = VectorXd::Zero(s_.m + 1);
   lambda_axis(s_.m) = direction_;
   Tangent tan = s_.tangent(lambda_axis);
-  if (tan.t(s_.m) * direction_ < 0) tan.t = -tan.t;
+  // Started on a fold (an isola from its limit point), the tangent's lambda component is zero to
+  // rounding (1e-13 to 1e-16 on the tutorial's isola), so its sign, which the window's direction
+  // would pick, changed with the BLAS kernel: the isola ran either way round on two CPUs. There
+  // the branch leaves towards the larger response (|u| growing), a sign the whole state sets.
+  if (std::abs(tan.t(s_.m)) < kStartsOnAFold) {
+    if (x_.head(s_.m).dot(tan.t.head(s_.m)) < 0) tan.t = -tan.t;
+  } else if (tan.t(s_.m) * direction_ < 0) {
+    tan.t = -tan.t;
+  }
   t_ = tan.t;
   first_point_ = BranchPoint{u, lambda_start, t_, iterations, 0.0};
   MonitoredPoint start_point{first_point_, x_, t_, s_.su, engine_test_values(tan), 0.0, 0, 0};
