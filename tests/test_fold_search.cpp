@@ -16,9 +16,9 @@
 namespace hbtrack_tests::file_fold_search {
 
 namespace fs = std::filesystem;
+using hbtrack::runs::fold_search_rows;
 using hbtrack::runs::FoldSearchCandidate;
 using hbtrack::runs::FoldSearchRow;
-using hbtrack::runs::fold_search_rows;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
 
@@ -77,7 +77,7 @@ TEST(FoldSearchRows, NoStableSideIsACaseErrorNamingTheFile) {
 
 TEST(OrbitDeparture, IsTheLargestRelativeChangeOfAFirstHarmonic) {
   const nlohmann::json s = {{"start", {{"h1_a", 2.0}, {"h1_b", 1.0}, {"max_a", 5.0}}}, {"h1_a", 2.1}, {"h1_b", 0.7}, {"max_a", 0.0}};
-  EXPECT_NEAR(hbtrack::runs::orbit_departure(s), 0.3, 1e-12);  // h1_b; max_ is not a first harmonic
+  EXPECT_NEAR(hbtrack::runs::orbit_departure(s), 0.3, 1e-12);                     // h1_b; max_ is not a first harmonic
   EXPECT_EQ(hbtrack::runs::orbit_departure(nlohmann::json{{"h1_a", 1.0}}), 0.0);  // from rest: nothing to leave
 }
 

@@ -94,8 +94,13 @@ class Study {
   // isolated branches: `isolas` follows each until it closes.
   bool isolas();
 
-  // K of the nominal NFRC's LP nearest the largest stable response (0: no time integration).
-  size_t resonance_fold() const;
+  // Where the resonance's time integration starts: the nominal NFRC's largest stable response
+  // (point, -1: no integration) and the LP K nearest it (0 when the NFRC has no stability).
+  struct ResonanceStart {
+    size_t fold = 0;
+    long point = -1;
+  };
+  ResonanceStart resonance_start() const;
 
   void compare_simulation();
 

@@ -40,18 +40,22 @@ bool Study::validation_and_simulation() {
     }
   }
   // The resonance's time integration: from the stable side of the fold next to the largest stable
-  // response, closest first, until the full model holds the orbit (`simulate --near-lp`).
-  const size_t fold = resonance_fold();
-  if (fold > 0) {
+  // response, closest first, until the full model holds the orbit (`simulate --near-lp`); from
+  // that response itself when the NFRC has no stability to tell the fold's sides apart.
+  const ResonanceStart start = resonance_start();
+  if (start.fold > 0 || start.point >= 0) {
     const int periods = c_.study.simulate_periods;
-    frcs.push_back({"simulate",
-                    {"simulate", o_.common.case_path, "--from", dir_ + "/nfrc", "--near-lp", std::to_string(fold), "--max-periods",
-                     std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods))},
-                    false});
+    Step simulate{"simulate", {"simulate", o_.common.case_path, "--from", dir_ + "/nfrc"}, false};
+    const std::vector<std::string> where = start.fold > 0 ? std::vector<std::string>{"--near-lp", std::to_string(start.fold)}
+                                                          : std::vector<std::string>{"--point", std::to_string(start.point)};
+    simulate.args.insert(simulate.args.end(), where.begin(), where.end());
+    simulate.args.insert(simulate.args.end(),
+                         {"--max-periods", std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods))});
+    frcs.push_back(simulate);
   }
   if (!run_steps(frcs) || !run_steps(crossings) || !continue_validations_beyond_the_range()) return false;
   for (const Probe& p : probes_) compare(p);
-  if (fold > 0) compare_simulation();
+  if (start.fold > 0 || start.point >= 0) compare_simulation();
   return true;
 }
 
@@ -128,18 +132,27 @@ bool Study::isolas() {
   return true;
 }
 
-size_t Study::resonance_fold() const {
-  if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return 0;
+Study::ResonanceStart Study::resonance_start() const {
+  if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return {};
   const long point = resonance_simulation_point(dir_ + "/nfrc", limit_points_, first_output());
-  if (point < 0) return 0;
+  if (point < 0) return {};
   const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
-  return nearest_limit_point(limit_points_, b.rows[static_cast<size_t>(point)][0]);
+  const auto& header = b.header;
+  if (std::find(header.begin(), header.end(), "stable") == header.end()) return {0, point};
+  return {nearest_limit_point(limit_points_, b.rows[static_cast<size_t>(point)][0]), point};
 }
 
 // The fold search's start that held the orbit (or, when none did, its last) compared with the
-// HBM point it started from; the search itself beside it.
+// HBM point it started from, the search itself beside it; or the one integration from a point.
 void Study::compare_simulation() {
-  const json search = read_summary(dir_ + "/simulate").value("fold_search", json::object());
+  const json s = read_summary(dir_ + "/simulate");
+  if (!s.contains("fold_search")) {
+    const long point = s["options"]["simulation"].value("point", 0L);
+    summary_["simulation"] = compare_with_simulation(dir_ + "/nfrc", point, s, c_.outputs);
+    save();
+    return;
+  }
+  const json& search = s["fold_search"];
   const json runs = search.value("runs", json::array());
   if (runs.empty()) return;
   const json& compared = search.contains("held") ? search["held"] : runs.back();

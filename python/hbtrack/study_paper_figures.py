@@ -32,8 +32,24 @@ def _isolas_to_draw(study_dir, summary, nominal, read):
 
 
 def simulation_folder(summary):
-    """The folder of the resonance's time integration the study compared: the fold search's start
-    that held the orbit (simulate/point_R), or simulate/ of a study written before the search."""
+    """The folder of the resonance's time integration the study compared.
+
+    Parameters
+    ----------
+    summary : dict
+        The study's summary.json.
+
+    Returns
+    -------
+    str
+        Relative to the study's folder: the fold search's start that held the orbit
+        (``simulate/point_R``), or ``simulate`` for a study written before the search.
+
+    Examples
+    --------
+    >>> simulation_folder({"simulation": {"folder": "simulate/point_115"}})
+    'simulate/point_115'
+    """
     return (summary.get("simulation") or {}).get("folder", "simulate")
 
 

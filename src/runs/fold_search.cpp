@@ -37,7 +37,9 @@ std::vector<FoldSearchCandidate> rows_along(const std::vector<FoldSearchRow>& ro
   return picked;
 }
 
-bool side_is_stable(const std::vector<FoldSearchRow>& rows, long row) { return row >= 0 && row < static_cast<long>(rows.size()) && rows[static_cast<size_t>(row)].stable; }
+bool side_is_stable(const std::vector<FoldSearchRow>& rows, long row) {
+  return row >= 0 && row < static_cast<long>(rows.size()) && rows[static_cast<size_t>(row)].stable;
+}
 
 }  // namespace
 
@@ -89,7 +91,8 @@ RunReport simulate_near_fold(const CaseDefinition& c, const FoldSearchOptions& o
     sink.summary(summary);
     if (stopped != to_string(StopReason::converged) && stopped != to_string(StopReason::max_periods)) {
       reason = StopReason::interrupted;  // stopped by the monitor (Ctrl-C, time limit) or failed
-      if (stopped != to_string(StopReason::interrupted) && stopped != to_string(StopReason::time_limit)) reason = StopReason::integration_failure;
+      if (stopped != to_string(StopReason::interrupted) && stopped != to_string(StopReason::time_limit))
+        reason = StopReason::integration_failure;
       break;
     }
     if (held) {
