@@ -130,6 +130,28 @@ TEST(Continuation, FollowsAFoldAndFlagsBothLimitPoints) {
   }
 }
 
+TEST(Continuation, StartedOnAFoldItLeavesTowardsTheLargerStateWhateverTheWindowsDirection) {
+  // On the fold the tangent is (+-1, 0): its lambda sign is rounding, and with it which branch a
+  // window's direction picked (the tutorial's isola ran either way round on two BLAS kernels).
+  CubicFold problem;
+  ContinuationOptions o;
+  o.step = 0.02;
+  o.max_points = 3;
+  const double u_fold = 1 / std::sqrt(3.0), lp = 2.0 / (3.0 * std::sqrt(3.0));
+  for (int direction : {1, -1}) {
+    const ContinuationResult r =
+        continue_within(problem, VectorXd::Constant(1, u_fold), lp, ParameterWindow{-1.0, 1.0, direction, false}, o);
+    ASSERT_GE(r.points.size(), 2u) << direction;
+    EXPECT_GT(r.points[1].u(0), u_fold) << direction;  // |u| grows: onto the branch u > 1/sqrt(3)
+    EXPECT_LT(r.points[1].lambda, lp) << direction;
+  }
+  // Off the fold the window's direction decides, as before: from u = 0.9 (lambda 0.171) with
+  // lambda decreasing the branch goes to larger u, with lambda increasing towards the fold.
+  const ContinuationResult up = continue_within(problem, VectorXd::Constant(1, 0.9), 0.9 - 0.729, ParameterWindow{-1.0, 1.0, 1, false}, o);
+  ASSERT_GE(up.points.size(), 2u);
+  EXPECT_LT(up.points[1].u(0), 0.9);
+}
+
 TEST(Continuation, ObserverCanInterrupt) {
   CubicFold problem;
   ContinuationOptions o;
