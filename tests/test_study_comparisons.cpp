@@ -72,4 +72,23 @@ TEST(StudyComparisons, TheIsolaPointToSimulateIsTheMiddleOfTheStableStretchOfIts
   fs::remove_all(dir);
 }
 
+TEST(StudyComparisons, TheResonantFoldIsTheLimitPointThatEndsTheStretchOfTheLargestResponse) {
+  // Rotor 67's shape in the geometry's sense: an upper fold (LP2, 2242, row 2) ends the stretch
+  // of rows 0-1; the largest response (row 7, 2022) lies on the stretch of rows 5-8 that the
+  // lower fold (LP1, 1659, row 4) starts and an NS point ends. LP2 is the nearer in omega.
+  const fs::path dir = fs::temp_directory_path() / ("hbtrack_resonant_fold_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "branch.csv") << "omega,stable\n2200,1\n2241,1\n2242,0\n1800,0\n1659.5,0\n1660,1\n1900,1\n2022,1\n2080,1\n2100,0\n";
+  const json lps = json::array({{{"type", "LP"}, {"omega", 1659.3}, {"index", 4}}, {{"type", "LP"}, {"omega", 2242.1}, {"index", 2}}});
+  EXPECT_EQ(hbtrack::cli::fold_ending_the_stable_stretch(dir.string(), 7, lps), 1u);  // LP1, in omega order
+  EXPECT_EQ(hbtrack::cli::fold_ending_the_stable_stretch(dir.string(), 0, lps), 2u);
+  // With its fold numbered by the stretch's own first row instead of the unstable one before it,
+  // the same.
+  const json shifted = json::array({{{"type", "LP"}, {"omega", 1659.3}, {"index", 5}}, {{"type", "LP"}, {"omega", 2242.1}, {"index", 2}}});
+  EXPECT_EQ(hbtrack::cli::fold_ending_the_stable_stretch(dir.string(), 7, shifted), 1u);
+  // No fold at either end: no fold search.
+  EXPECT_EQ(hbtrack::cli::fold_ending_the_stable_stretch(dir.string(), 7, json::array({lps[1]})), 0u);
+  fs::remove_all(dir);
+}
+
 }  // namespace hbtrack_tests::file_study_comparisons

@@ -194,6 +194,27 @@ std::optional<OffCurveLimitPoint> first_limit_point_off_the_curves(const std::st
   return std::nullopt;
 }
 
+size_t fold_ending_the_stable_stretch(const std::string& nfrc_dir, long point, const json& limit_points) {
+  const CsvTable b = read_csv_table(nfrc_dir + "/branch.csv");
+  const auto stable = static_cast<size_t>(b.column("stable"));
+  long lo = point, hi = point;
+  const long rows = static_cast<long>(b.rows.size());
+  while (lo > 0 && b.rows[static_cast<size_t>(lo - 1)][stable] == 1.0) --lo;
+  while (hi + 1 < rows && b.rows[static_cast<size_t>(hi + 1)][stable] == 1.0) ++hi;
+  const double omega = b.rows[static_cast<size_t>(point)][0];
+  const std::vector<size_t> lps = limit_point_rows(limit_points);
+  size_t fold = 0;
+  double nearest = 1e300;
+  for (size_t k = 0; k < lps.size(); ++k) {
+    // The stepper numbers a special point by the branch point nearest it: the stretch's end
+    // row or the unstable one next to it.
+    const long row = limit_points[lps[k]].value("index", -1L);
+    const double distance = std::abs(limit_points[lps[k]].value("omega", 0.0) - omega);
+    if ((std::abs(row - lo) <= 1 || std::abs(row - hi) <= 1) && distance < nearest) nearest = distance, fold = k + 1;
+  }
+  return fold;
+}
+
 size_t nearest_limit_point(const json& special_points, double omega) {
   const std::vector<size_t> rows = limit_point_rows(special_points);
   size_t lp = 0;

@@ -197,7 +197,8 @@ void simulation_section(std::ostream& out, const json& s) {
     out << " Not periodic to `simulate`'s criterion within these periods (last period-to-period change "
         << num(m.value("last_change", 0.0), "%.1e")
         << "; a lightly damped resonance forgets its start slowly): the differences below include what is left of the "
-           "transient, and the step's exit code is 1.";
+           "transient"
+        << (m.contains("fold_search") ? "." : ", and the step's exit code is 1.");
   out << "\n\n| quantity | HBM | simulation | difference |\n|---|---|---|---|\n";
   for (const auto& o : m["outputs"])
     out << "| " << o.value("name", "") << " | " << num(o.value("hbm", 0.0), "%.5g") << " | " << num(o.value("simulation", 0.0), "%.5g")

@@ -139,7 +139,7 @@ Study::ResonanceStart Study::resonance_start() const {
   const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
   const auto& header = b.header;
   if (std::find(header.begin(), header.end(), "stable") == header.end()) return {0, point};
-  return {nearest_limit_point(limit_points_, b.rows[static_cast<size_t>(point)][0]), point};
+  return {fold_ending_the_stable_stretch(dir_ + "/nfrc", point, limit_points_), point};
 }
 
 // The fold search's start that held the orbit (or, when none did, its last) compared with the

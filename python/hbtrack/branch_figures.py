@@ -111,7 +111,9 @@ def _legend(ax, extra):
     """Above the axes, outside them: inside, 'best' still covers a peak or a labelled point."""
     handles, labels = ax.get_legend_handles_labels()
     labels += [h.get_label() for h in extra]
-    columns = len(labels) if sum(len(t) for t in labels) <= 60 else min(len(labels), 2)
+    # One row when short; else two columns, each half the axes' width: about 38 characters at
+    # this size beside the handle, so a longer label takes one column (it ran into its neighbour).
+    columns = len(labels) if sum(len(t) for t in labels) <= 60 else min(len(labels), 2 if max(map(len, labels)) <= 38 else 1)
     ax.legend(handles + extra, labels, fontsize=8, loc="lower left", bbox_to_anchor=(0, 1.01, 1, 0.1), ncol=columns,
               mode="expand" if columns > 1 else None, borderaxespad=0, frameon=False, handlelength=2.4)
 
