@@ -20,9 +20,17 @@ fi
 # Unity builds: the suite builds from scratch twice below, and batches of files compile the
 # shared Eigen, JSON, CLI11 and GoogleTest templates once per batch (docs/performance.md, CI).
 unity=(-DHBTRACK_UNITY_BUILD=ON)
+# The time of each phase on stderr ("test.sh: Release build 412 s"), for the CI's split.
+started=$SECONDS
+phase_done() {
+  echo "test.sh: $1 $((SECONDS - started)) s" >&2
+  started=$SECONDS
+}
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 -DHBTRACK_BUILD_BENCH=$bench "${unity[@]}" "${launcher[@]}"
 cmake --build build -j "$jobs"
+phase_done "Release build"
 ctest --test-dir build --output-on-failure -j "$jobs"
+phase_done "Release suite"
 
 if [ "${1:-}" = "--sanitize" ]; then
   # -O1 keeps Eigen fast enough under the sanitizers; benchmarks are not built, nor the Python
@@ -33,6 +41,8 @@ if [ "${1:-}" = "--sanitize" ]; then
   cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
     -DHBTRACK_SANITIZE=ON -DHBTRACK_BUILD_BENCH=OFF -DHBTRACK_PYTHON=OFF "${unity[@]}" "${launcher[@]}"
   cmake --build build-sanitize -j "$jobs"
+  phase_done "sanitizer build"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-sanitize --output-on-failure -j "$jobs"
+  phase_done "sanitizer suite"
 fi
