@@ -2,6 +2,8 @@
 // the reader breaks long lines after their arrays' commas before parsing; the values read are the
 // same and every message names the line of the file as written.
 #include <gtest/gtest.h>
+
+#include <ctime>
 #include <unistd.h>
 
 #include <chrono>
@@ -84,7 +86,9 @@ TEST(LongTomlLines, MessagesNameTheLinesOfTheFileAsWritten) {
 }
 
 // The input: 20 000 node names and five lists of 20 000 values, each on one line, took
-// 10 s of CPU in toml11 (one value per line: 0.25 s). The template then fails on its dof.
+// 10 s of CPU in toml11 (one value per line: 0.25 s). The template then fails on its dof. The
+// bound is on this process's CPU time (other processes on the cores do not inflate it), 10 s:
+// the quadratic parse's own time, 40 times the linear one's, which leaves the sanitizers' slowdown.
 TEST(LongTomlLines, TwentyThousandValuesOnOneLineParseInLinearTime) {
   constexpr int kNodes = 20000;
   const std::string nodes = one_line_array(kNodes, [](int i) { return "\"n" + std::to_string(i) + "\""; });
@@ -94,9 +98,9 @@ TEST(LongTomlLines, TwentyThousandValuesOnOneLineParseInLinearTime) {
       "\n";
   for (const char* key : {"cubic_stiffness", "a", "b", "c", "d"}) text += std::string(key) + ".per_node = " + list + "\n";
   const fs::path path = write_case("templates_one_line.toml", text);
-  const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t t0 = std::clock();
   const std::string error = error_of(path);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
+  EXPECT_LT(static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC, 10.0);
   EXPECT_NE(error.find("elements[0]"), std::string::npos) << error;
 }
 
