@@ -43,6 +43,10 @@ TEST(StepControlContinuation, NltvaLimitAndNeimarkSackerPointsAsWithTheCappedSte
 }
 
 TEST(StepControlContinuation, ChainContactLimitPointsAsWithTheCappedStep) {
+  // 13 s in Release; under the sanitizers more than 8 minutes with a second job on the cores
+  // (a CI run timed out at 600 s): the Release pass checks the points, the sanitizer pass runs the
+  // same controller on Duffing and the absorber above.
+  if (test::kSanitizedBuild) GTEST_SKIP() << "minutes under the sanitizers; run by the Release pass";
   expect_same_special_points("chain_contact.toml", {{"LP", 0.21294243411684077}, {"LP", 0.20581564895593368}}, 105);
 }
 
