@@ -158,6 +158,25 @@ def test_plot_options_write_png_and_pdf(coupled_frc, tmp_path):
     assert main([coupled_frc["folder"], "-o", out, "--point", "LP7"]) == 2  # no such point: said, not a traceback
 
 
+def test_long_legend_labels_do_not_run_into_each_other():
+    # Rotor 67's Fig. 12: "isolated branch, mu = 0.1236, leading-edge tip, radial" beside "time
+    # integration on the isola" in two columns ran into each other.
+    figure, ax = plt.subplots(figsize=(6.5, 4.2))
+    for label in ("NFRC, leading-edge tip, radial", "isolated branch, mu = 0.1236, leading-edge tip, radial",
+                  "NFRC, trailing-edge tip, radial", "isolated branch, mu = 0.1236, trailing-edge tip, radial"):
+        ax.plot([0, 1], [0, 1], label=label)
+    extra = [ax.plot([], [], "o", label=name)[0] for name in ("time integration", "time integration on the isola")]
+    for line in extra:
+        line.remove()
+    branch_figures._legend(ax, extra)
+    boxes = text_boxes(figure)[ax]
+    assert len(boxes) == 6
+    for i, (text, box) in enumerate(boxes):
+        for other, other_box in boxes[i + 1:]:
+            assert not box.overlaps(other_box), f"{text!r} overlaps {other!r}"
+    plt.close(figure)
+
+
 def test_the_overlap_check_sees_texts_printed_over_each_other():
     # What the figure printed before: LP and NS at one point as 'LP' over 'NS' ("LNS")
     figure, ax = plt.subplots()
