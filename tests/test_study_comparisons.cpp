@@ -88,6 +88,9 @@ TEST(StudyComparisons, TheResonantFoldIsTheLimitPointThatEndsTheStretchOfTheLarg
   EXPECT_EQ(hbtrack::cli::fold_ending_the_stable_stretch(dir.string(), 7, shifted), 1u);
   // No fold at either end: no fold search.
   EXPECT_EQ(hbtrack::cli::fold_ending_the_stable_stretch(dir.string(), 7, json::array({lps[1]})), 0u);
+  // Without stability the sides cannot be told apart: no fold search either.
+  std::ofstream(dir / "branch.csv") << "omega,max_le\n2200,1\n2241,1\n2242,1\n";
+  EXPECT_EQ(hbtrack::cli::fold_ending_the_stable_stretch(dir.string(), 1, lps), 0u);
   fs::remove_all(dir);
 }
 

@@ -95,7 +95,8 @@ class Study {
   bool isolas();
 
   // Where the resonance's time integration starts: the nominal NFRC's largest stable response
-  // (point, -1: no integration) and the LP K nearest it (0 when the NFRC has no stability).
+  // (point, -1: no integration) and the LP K that ends its stable stretch (0: none, or the NFRC
+  // has no stability; the integration then starts from the point itself).
   struct ResonanceStart {
     size_t fold = 0;
     long point = -1;

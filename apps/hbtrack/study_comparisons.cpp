@@ -196,6 +196,7 @@ std::optional<OffCurveLimitPoint> first_limit_point_off_the_curves(const std::st
 
 size_t fold_ending_the_stable_stretch(const std::string& nfrc_dir, long point, const json& limit_points) {
   const CsvTable b = read_csv_table(nfrc_dir + "/branch.csv");
+  if (std::find(b.header.begin(), b.header.end(), "stable") == b.header.end()) return 0;  // no sides to tell apart
   const auto stable = static_cast<size_t>(b.column("stable"));
   long lo = point, hi = point;
   const long rows = static_cast<long>(b.rows.size());

@@ -64,7 +64,7 @@ std::optional<OffCurveLimitPoint> first_limit_point_off_the_curves(const std::st
 // The resonant fold: the limit point of `limit_points` (the NFRC's, with their rows in "index")
 // that ends the stable stretch of DIR/branch.csv holding row `point` (the largest stable
 // response), the nearer in omega of two; 1-based in omega order (`simulate --near-lp K`), 0 when
-// an NS point or the range ends the stretch on both sides. Not simply the LP nearest in omega: on
+// an NS point or the range ends the stretch on both sides, or the NFRC has no stability. Not simply the LP nearest in omega: on
 // rotor 67 (sense of the geometry) that is the upper fold of another stretch.
 size_t fold_ending_the_stable_stretch(const std::string& nfrc_dir, long point, const nlohmann::json& limit_points);
 

@@ -136,9 +136,6 @@ Study::ResonanceStart Study::resonance_start() const {
   if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return {};
   const long point = resonance_simulation_point(dir_ + "/nfrc", limit_points_, first_output());
   if (point < 0) return {};
-  const CsvTable b = read_csv_table(dir_ + "/nfrc/branch.csv");
-  const auto& header = b.header;
-  if (std::find(header.begin(), header.end(), "stable") == header.end()) return {0, point};
   return {fold_ending_the_stable_stretch(dir_ + "/nfrc", point, limit_points_), point};
 }
 

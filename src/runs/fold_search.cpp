@@ -111,9 +111,11 @@ RunReport simulate_near_fold(const CaseDefinition& c, const FoldSearchOptions& o
     std::snprintf(line, sizeof line, "the orbit held from row %ld (omega %.6g, %.2f %% from LP%d at %.6g)", h.value("point", 0L),
                   h.value("omega", 0.0), 100 * h.value("distance", 0.0), o.lp, o.lp_omega);
     report.brief = line;
-    if (search.contains("left"))
-      report.brief += ", left it from row " + std::to_string(search["left"].value("point", 0L)) + " (" +
-                      std::to_string(100 * search["left"].value("distance", 0.0)) + " %)";
+    if (search.contains("left")) {
+      std::snprintf(line, sizeof line, ", left it from row %ld (%.2f %%)", search["left"].value("point", 0L),
+                    100 * search["left"].value("distance", 0.0));
+      report.brief += line;
+    }
   } else if (reason == StopReason::completed) {
     report.failure = "simulate --near-lp: no start of the " + std::to_string(search["runs"].size()) + " held the orbit (kept in " +
                      sink.location() + ")";

@@ -24,9 +24,6 @@ namespace hbtrack::runs {
 // beyond. The study fails a time integration that leaves (apps/hbtrack/study_checks.cpp).
 inline constexpr double kLeftTheOrbit = 0.1;
 
-// The default distances (relative omega from the LP) at which integrations start.
-inline const std::vector<double> kFoldSearchDistances = {0.002, 0.005, 0.01, 0.02, 0.03, 0.05};
-
 // The largest relative difference between the first harmonic of an output at the end of a
 // `simulate` run and on the HBM orbit it started from (summary.json's h1_X and start.h1_X).
 double orbit_departure(const nlohmann::json& simulate_summary);
