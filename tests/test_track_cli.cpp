@@ -284,9 +284,13 @@ TEST(TrackCli, ATinyClosedCurveClosesOnceAndACappedLegIsNotCompleted) {
   ASSERT_EQ(loop["special_points"].size(), 2u);
   EXPECT_NE(loop["special_points"][0]["type"], loop["special_points"][1]["type"]);
 
-  // A leg cut by max_points: the curve is incomplete, and says so.
-  const CliRun capped = run_cli(track + (base / "capped").string() + " --set continuation.max_points=5");
+  // A leg cut by max_points: the curve is incomplete, and says so, also in the closing line (it
+  // said "both ways to the range"). Without -q, for that line.
+  const std::string unquiet = track.substr(0, track.find(" -q -o ")) + " -o ";
+  const CliRun capped = run_cli(unquiet + (base / "capped").string() + " --set continuation.max_points=5");
   ASSERT_EQ(capped.exit_code, 0) << capped.err;
+  EXPECT_NE(capped.err.find("leg 1 max_points, leg 2 max_points"), std::string::npos) << capped.err;
+  EXPECT_EQ(capped.err.find("both ways to the range"), std::string::npos) << capped.err;
   const nlohmann::json cut = read_json((base / "capped" / "summary.json").string());
   EXPECT_EQ(cut["stop_reason"], "max_points");
   ASSERT_GE(cut["warnings"].size(), 1u);

@@ -45,6 +45,20 @@ std::vector<std::string> tracking_warnings(const FoldTrackingResult& r, const Tr
   return warnings;
 }
 
+// The closing line's account of the legs: "both ways to the range" only when both got there (a leg
+// cut by max_points left an incomplete curve, and the line said otherwise).
+std::string how_the_legs_ended(const FoldTrackingResult& r) {
+  if (r.closed) return "closed";
+  std::string text;
+  bool both_to_the_range = true;
+  for (size_t i = 0; i < r.legs.size(); ++i) {
+    const StopReason reason = r.legs[i].stop_reason;
+    both_to_the_range = both_to_the_range && (reason == StopReason::reached_end || reason == StopReason::left_range);
+    text += (i == 0 ? "leg " : ", leg ") + std::to_string(i + 1) + " " + to_string(reason);
+  }
+  return both_to_the_range ? "both ways to the range" : text;
+}
+
 }  // namespace
 
 RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink, RunMonitor& monitor) {
@@ -129,7 +143,7 @@ RunReport track(const CaseDefinition& c, const TrackOptions& o, ResultSink& sink
                      ")" + smoothness_hint(hbm, o.tracked);
   else
     report.brief = std::to_string(r.curve_points()) + " points, " + std::to_string(r.extrema.size()) + " extrema of " + o.parameter + ", " +
-                   (r.closed ? "closed" : "both ways to the range");
+                   how_the_legs_ended(r);
   return report;
 }
 
