@@ -29,6 +29,7 @@ using hbtrack::cli::parse_relay_line;
 using hbtrack::cli::progress_text;
 using hbtrack::cli::ProgressState;
 using hbtrack::cli::relay_line;
+using hbtrack::cli::step_end_line;
 using hbtrack::cli::step_progress_text;
 using hbtrack::test::CliRun;
 using hbtrack::test::run_cli;
@@ -159,6 +160,15 @@ TEST(ProgressLine, StudyShowsEachStepsLastCompleteLine) {
   EXPECT_EQ(step_progress_text("nfrc", "11 0.7"), "");
   s.fraction = -1;  // a backbone: no range
   EXPECT_EQ(step_progress_text("backbone_mode1", relay_line(s)), "backbone_mode1 point 9");
+}
+
+TEST(ProgressLine, StudyStepEndLinesEstimateWhatIsLeftOfTheStage) {
+  // 9 of 36 steps ended in 30 s (whatever ran them in parallel): 27 left at that pace is 90 s.
+  EXPECT_EQ(step_end_line("validate_mu_9", 0, 9.6, 9, 36, 30.0),
+            "study:   validate_mu_9              exit 0, 9.6 s (step 9 of 36, stage ~1m30s left)");
+  // The last step: nothing is left to estimate; a stage of one step never has an estimate.
+  EXPECT_EQ(step_end_line("nfrc", 0, 20.0, 1, 1, 20.0), "study:   nfrc                       exit 0, 20.0 s (step 1 of 1)");
+  EXPECT_EQ(step_end_line("validate_mu_36", 1, 9.6, 36, 36, 120.0).find("left"), std::string::npos);
 }
 
 namespace {

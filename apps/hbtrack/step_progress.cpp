@@ -46,6 +46,14 @@ std::string step_progress_text(const std::string& step, const std::string& file_
   return step + " " + buf + (left.empty() ? "" : " " + left);
 }
 
+std::string step_end_line(const std::string& step, int exit_code, double step_s, size_t ended, size_t steps, double stage_elapsed_s) {
+  const std::string left = steps > 0 ? time_left_text(static_cast<double>(ended) / static_cast<double>(steps), stage_elapsed_s) : "";
+  char line[320];
+  std::snprintf(line, sizeof line, "study:   %-26s exit %d, %.1f s (step %zu of %zu%s%s)", step.c_str(), exit_code, step_s, ended, steps,
+                left.empty() ? "" : ", stage ", left.c_str());
+  return line;
+}
+
 StepProgressRelay::StepProgressRelay(ProgressStyle style) : style_(style), enabled_(style != ProgressStyle::none) {
   if (enabled_) thread_ = std::thread([this] { loop(); });
 }

@@ -20,6 +20,12 @@ namespace hbtrack::cli {
 // complete line; "" while the file has none.
 std::string step_progress_text(const std::string& step, const std::string& file_text);
 
+// The line a study prints when one of a stage's steps ends: "study:   validate_mu_9   exit 0,
+// 9.6 s (step 21 of 36, stage ~1m20s left)". The estimate is the stage's pace so far (its steps
+// end at ended / elapsed_s a second, whatever runs them in parallel) over the steps left; none
+// before the first step or after the last.
+std::string step_end_line(const std::string& step, int exit_code, double step_s, size_t ended, size_t steps, double stage_elapsed_s);
+
 class StepProgressRelay {
  public:
   // Shows nothing (and watches no file) with ProgressStyle::none.

@@ -15,6 +15,7 @@
 //   converged/            with [study] convergence: the NFRC and tracking curves at more H, N
 //   figures/, index.md    the figures and a page with the numbers (study_report.cpp)
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -124,16 +125,13 @@ bool Study::run_steps(const std::vector<Step>& steps) {
   }
   if (!o_.resume.empty()) save();
   size_t ended = 0;
+  const auto stage_start = std::chrono::steady_clock::now();
   const std::vector<int> ran = runner_.run(tasks, [&](size_t k, int code, double seconds) {
     const Step& s = steps[todo[k]];
     ++ended;
     relay.forget(s.folder);
-    if (!o_.common.quiet) {
-      char line[256];
-      std::snprintf(line, sizeof line, "study:   %-26s exit %d, %.1f s (step %zu of %zu)", s.folder.c_str(), code, seconds, ended,
-                    todo.size());
-      relay.say(line);
-    }
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_start).count();
+    if (!o_.common.quiet) relay.say(step_end_line(s.folder, code, seconds, ended, todo.size(), elapsed));
     summary_["steps"].push_back({{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}});
     save();
   });
