@@ -36,7 +36,7 @@ def main():
         figure = analysis_figures.continuation_figure(result, length_unit=args.units)
     elif args.kind == "backbone" and nfrcs:
         figure = overlay_figure([*nfrcs, result], length_unit=args.units,
-                                title="backbone over the NFRCs (solid: stable, dashed: unstable)")
+                                title="backbone over the NFRCs")
     elif args.kind == "backbone":
         figure = analysis_figures.backbone_figure(result, length_unit=args.units)
     else:

@@ -18,7 +18,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # the hbtrack package next to this script
 from hbtrack import branch_figures  # noqa: E402
 from hbtrack.analysis_figures import continuation_figure  # noqa: E402
-from hbtrack.overlay_figures import overlay_figure  # noqa: E402
+from hbtrack.overlay_figures import legend_labels, overlay_figure  # noqa: E402
 from hbtrack.output_descriptions import parse_labels  # noqa: E402
 from hbtrack.results import read_result  # noqa: E402
 from hbtrack.units import length_factor, scale_lengths  # noqa: E402
@@ -46,8 +46,9 @@ def main():
     elif any(r["kind"] not in ("frc", "solve", "isola_branch") for r in [main_result, *others]):
         figure = overlay_figure([main_result, *others], length_unit=args.units or None)
     else:
-        for folder, other in zip(args.also, others):
-            other["label"] = os.path.basename(os.path.normpath(folder))
+        if others:  # each named by what it is (a reader has no folders), told apart where alike
+            for result, text in zip([main_result, *others], legend_labels([main_result, *others])):
+                result["label"] = text
         figure = branch_figures.nfrc_figure(main_result, others=others, length_unit=args.units or None, title=args.title,
                                             zoom=None if args.no_zoom else branch_figures.ZOOM_FRACTION, norm=args.norm,
                                             descriptions=parse_labels(args.label))

@@ -12,6 +12,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # the hbtrack package next to this script
 from hbtrack import plots  # noqa: E402
+from hbtrack.label_layout import place_labels  # noqa: E402
 from hbtrack.results import read_result  # noqa: E402
 
 
@@ -41,6 +42,11 @@ def main():
         axes.legend(handles, [t.get_text() for t in legend.get_texts()], loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=7)
         figure.set_size_inches(6.5, 5.6)
         figure.subplots_adjust(bottom=0.3)
+        # The labels were placed for the old limits: placed again for the new ones
+        texts = [(t.xy[0], t.xy[1], t.get_text()) for t in list(axes.texts)]
+        for t in list(axes.texts):
+            t.remove()
+        place_labels(axes, texts)
     if args.title:
         figure.get_axes()[0].set_title(args.title)
     figure.savefig(args.output, dpi=120)

@@ -6,7 +6,7 @@ NFRC's plane, over an NFRC: hbtrack.overlay_figures.)
 import numpy as np
 
 from .overlay_figures import SPECIAL_MARKERS, _draw, describe, draw_overlay
-from .figure_style import OMEGA_LABEL, _stable_masks, length_label, parameter_label, plt
+from .figure_style import OMEGA_LABEL, _stable_masks, length_label, parameter_label, plt, stability_legend
 from .results import output_names
 
 
@@ -106,13 +106,15 @@ def continuation_figure(results, outputs=None, length_unit=None):
                         ax.plot(sp[param], sp[key], SPECIAL_MARKERS[sp["type"]][0], color=colour, mec="k", mew=0.7, ms=5, zorder=5)
         for t in sorted(types, key=list(SPECIAL_MARKERS).index):
             ax.plot([], [], SPECIAL_MARKERS[t][0], color="w", mec="k", ms=5, label=SPECIAL_MARKERS[t][1])
+        for handle in stability_legend([r["branch"] for r in results]):  # the styles named, not a title's sentence
+            ax.plot([], [], handle.get_linestyle(), color="0.3", lw=1.3, label=handle.get_label())
         ax.set_xlabel(parameter_label(param, length_unit))
         ax.set_ylabel(length_label(f"max and min of {name}", length_unit))
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8, loc="best")
     omegas = {r["summary"]["options"]["continue"]["omega"] for r in results}
     at = f"ω = {omegas.pop():g}" if len(omegas) == 1 else "fixed ω"
-    axes[0, 0].set_title(f"continuation in {param} at {at} (solid: stable, dashed: unstable)", fontsize=10)
+    axes[0, 0].set_title(f"continuation in {param} at {at}", fontsize=10)
     fig.tight_layout()
     return fig
 

@@ -4,8 +4,10 @@ at one of its points (the paper's Fig. 5).
 NFRC: per output the max and min over a period against omega (one axes per output), or with
 norm=True the paper's form, ||r(t)||_inf = max(|max|, |min|) of every output in one axes. Stable
 solid, unstable dashed; special points numbered per type in omega order over all the branches
-drawn (LP1, LP2, ... NS1), each labelled once, coincident ones merged ("LP2, NS1"), placed where they overlap no other text
-(label_layout); zoomed on the resonance unless zoom=None; outputs named by their descriptions
+drawn (LP1, LP2, ... NS1), marked by type on every curve through them (a legend entry per type),
+each named once per axes, coincident ones merged ("LP2, NS1"), placed where they overlap no other
+text (label_layout); branches overlaid are drawn widest first, so that one lying on another shows
+as a thin line inside a wide pale one rather than hiding it; zoomed on the resonance unless zoom=None; outputs named by their descriptions
 (output_descriptions). Lengths are drawn as the result holds them: units.scale_lengths converts.
 """
 import re
@@ -15,9 +17,9 @@ from matplotlib.lines import Line2D
 
 from .label_layout import place_labels
 from .output_descriptions import output_descriptions
-from .figure_style import OMEGA_LABEL, _plot_split, _stable_masks, length_label, plt
+from .figure_style import OMEGA_LABEL, SPECIAL_MARKERS, _plot_split, _stable_masks, length_label, marker_legend, plt, stability_legend
 from .results import output_names
-from .special_points import numbered_special_points
+from .special_points import distinct_special_points, numbered_special_points
 
 # Zoom: the window where the response exceeds this fraction of its peak, widened by this part of
 # its width on each side; no zoom when that window already covers most of the branch.
@@ -101,10 +103,9 @@ def _fit_y_to_window(ax, window):
 
 
 def _stability_legend(ax, branches):
-    """Legend entries 'stable' (solid) and 'unstable' (dashed), instead of a title saying so."""
-    if not any(_stable_masks(b)[1].any() for b in branches):
-        return []
-    return [Line2D([], [], color="0.3", ls="-", lw=1.3, label="stable"), Line2D([], [], color="0.3", ls="--", lw=1.3, label="unstable")]
+    """Legend entries for the line styles (figure_style.stability_legend), instead of a title
+    saying so."""
+    return stability_legend(branches)
 
 
 def _legend(ax, extra):
@@ -161,31 +162,40 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, z
     fig, axes = plt.subplots(len(panels), 1, figsize=(6.5, 4.2 if norm else 3.2 * len(panels)), squeeze=False)
     labels = {}  # axes: [(omega, value, text)]
     # Numbered over all the branches drawn, so that every label is unique without naming its branch.
-    numbered = numbered_special_points([sp for r in results for sp in r.get("special_points", [])])
+    numbered = numbered_special_points(distinct_special_points([sp for r in results for sp in r.get("special_points", [])]))
+    types = {sp["type"] for _, sp in numbered if sp["type"] in SPECIAL_MARKERS}
+    unknown_everywhere = all(r["branch"].get("stable") is None for r in results)
     for ax, panel in zip(axes[:, 0], panels):
         for number, r in enumerate(results):
             stable, unstable = _stable_masks(r["branch"])
+            if unknown_everywhere:  # solid, the legend saying none is known (dotted wide lines were unreadable)
+                stable = np.ones_like(stable)
             tag = r.get("label", "" if number == 0 else f"branch {number + 1}")
+            width = 1.3 + 2.2 * (len(results) - 1 - number)  # the first widest: a branch on another stays visible
             if norm:
                 curves = [(descriptions[n] + (f" ({tag})" if tag else ""), norm_of(r["branch"], n)) for n in panel]
             elif len(results) == 1:
                 curves = [("max over a period", r["branch"][f"max_{panel[0]}"]), ("min over a period", r["branch"][f"min_{panel[0]}"])]
             else:  # a colour per branch: its max is the upper curve, its min the lower
-                curves = [(f"{tag} (max and min)", r["branch"][f"max_{panel[0]}"]), (None, r["branch"][f"min_{panel[0]}"])]
+                curves = [(tag, r["branch"][f"max_{panel[0]}"]), (None, r["branch"][f"min_{panel[0]}"])]
             for side, (what, values) in enumerate(curves):
                 colour = f"C{number}" if not norm and len(results) > 1 else f"C{len(curves) * number + side}"
-                _plot_split(ax, r["branch"]["omega"], values, stable, unstable, colour, what)
+                _plot_split(ax, r["branch"]["omega"], values, stable, unstable, colour, what,
+                            lw=width, alpha=1.0 if number == len(results) - 1 else 0.55)
         for text, sp in numbered:
             values = [float(norm_of(sp, n)) if norm else sp.get(key) for n in panel
                       for key in ((n,) if norm else (f"max_{n}", f"min_{n}"))]
             values = [v for v in values if v is not None]
-            if values:
-                ax.plot([sp["omega"]] * len(values), values, "o", color="k", ms=4, zorder=5)
+            if values and sp["type"] in SPECIAL_MARKERS:
+                ax.plot([sp["omega"]] * len(values), values, SPECIAL_MARKERS[sp["type"]][0], color="k", mfc="w", mew=1.0, ms=5,
+                        ls="none", zorder=5)
                 labels.setdefault(ax, []).append((sp["omega"], max(values), text))
         ax.set_xlabel(OMEGA_LABEL)
-        ax.set_ylabel(length_label(NORM_LABEL if norm else descriptions[panel[0]], length_unit))
+        what = descriptions[panel[0]] if len(results) == 1 else f"max and min of {descriptions[panel[0]]}"  # one colour per branch
+        ax.set_ylabel(length_label(NORM_LABEL if norm else what, length_unit))
         ax.grid(alpha=0.3)
-        _legend(ax, _stability_legend(ax, branches))
+        styles = [Line2D([], [], color="0.3", lw=1.3, label="stability not computed")] if unknown_everywhere else _stability_legend(ax, branches)
+        _legend(ax, styles + marker_legend(types))
         window = resonance_window(branches, panel) if zoom else None
         if window:
             _fit_y_to_window(ax, window)
@@ -243,7 +253,7 @@ def chosen_point(result, point=None):
     return row % count, f"point {row % count}"
 
 
-def fourier_figure(result, point=None, outputs=None, length_unit=None, title=None, descriptions=None):
+def fourier_figure(result, point=None, outputs=None, length_unit=None, title=None, descriptions=None, where=None):
     """The magnitudes of the harmonics of each output at one point (the paper's Fig. 5).
 
     Bars h_K = sqrt(a_K^2 + b_K^2) (h_0 = |a_0/2|) from branch.csv's hK_NAME columns, one panel
@@ -263,6 +273,9 @@ def fourier_figure(result, point=None, outputs=None, length_unit=None, title=Non
         A title; "auto" says which point and omega.
     descriptions : dict, optional
         {output: text}; default output_descriptions(result).
+    where : str, optional
+        What the point is, said on each panel with its omega (default: chosen_point's "LP1",
+        "point 37").
 
     Returns
     -------
@@ -287,7 +300,8 @@ def fourier_figure(result, point=None, outputs=None, length_unit=None, title=Non
         ax.set_xticklabels(orders, fontsize=8 if len(columns) <= 12 else 6)
         ax.set_xlabel(r"harmonic $K$ (frequency $K\omega$) [-]")
         ax.set_ylabel(length_label(r"magnitude $h_K$", length_unit))
-        ax.set_title(descriptions[name], fontsize=9, loc="left")  # a panel's name, not a title: --titles keeps it
+        # A panel's name and its point, not a title: publication figures (no titles) keep it
+        ax.set_title(f"{descriptions[name]}\nat {where or what}, ω = {branch['omega'][row]:.5g} rad/s", fontsize=9, loc="left")
         ax.grid(alpha=0.3, axis="y")
     if title:
         fig.suptitle(f"harmonics at {what} (ω = {branch['omega'][row]:.6g} rad/s)" if title == "auto" else title, fontsize=10)

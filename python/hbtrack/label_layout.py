@@ -1,7 +1,8 @@
 """Text labels at points of an axes that never overlap: each label tries offsets around its point
 and takes the first whose box, measured by the renderer, overlaps no label already placed, no
 marker and as few curve vertices as possible and stays inside the axes; a label that finds no such
-place is dropped rather than printed over another. Labels at the same place are merged first
+place near its point goes further out, on a thin leader (a special point without its name would be
+an unexplained marker); only one that fits nowhere inside the axes is dropped. Labels at the same place are merged first
 ("LP2, NS1" rather than "LP2" over "NS1").
 
 Place the labels after the axes' limits and the figure's layout are final (after tight_layout):
@@ -14,6 +15,8 @@ import numpy as np
 # then around the point, then further out.
 _OFFSETS = [(5, 5), (5, -13), (-5, 5), (-5, -13), (8, -4), (-8, -4), (0, 10), (0, -18),
             (14, 14), (14, -22), (-14, 14), (-14, -22), (22, -4), (-22, -4), (0, 24), (0, -32)]
+# Further out, on a leader, when every near place is taken: rings of 8 directions.
+_FAR = [(round(r * np.cos(a)), round(r * np.sin(a)) - 4) for r in (34, 52, 75, 100) for a in np.linspace(0, 2 * np.pi, 8, endpoint=False) + np.pi / 8]
 
 
 def merge_close(items, ax, distance=6.0):
@@ -59,6 +62,10 @@ def _line_vertices(ax):
     return points[np.isfinite(points).all(axis=1)]
 
 
+def _finite(points):
+    return points[np.isfinite(points).all(axis=1)]
+
+
 def _overlaps(box, boxes):
     return any(box.overlaps(other) for other in boxes)
 
@@ -96,10 +103,15 @@ def place_labels(ax, items, fontsize=8, avoid=()):
         taken.append(legend.get_window_extent(renderer))
     merged = [(x, y, text) for x, y, text in merge_close(items, ax) if frame.contains(*ax.transData.transform((x, y)))]
     taken += [_marker_box(ax.transData.transform((x, y)), 3.0 * ax.figure.dpi / 72) for x, y, _ in merged]  # no text on a dot
+    taken += [_marker_box(p, 0.5 * line.get_markersize() * ax.figure.dpi / 72 + 1) for line in ax.get_lines()  # nor on any other marker
+              if line.get_marker() not in (None, "None", "", " ") and line.get_linestyle() in ("None", "", " ")
+              for p in _finite(line.get_transform().transform(np.column_stack(line.get_data()).astype(float)))]
     placed = []
     for x, y, text in merged:
         best = None
-        for dx, dy in _OFFSETS:
+        for dx, dy in _OFFSETS + _FAR:
+            if best is not None and (dx, dy) in _FAR:
+                break  # a near place found: the far ones are for labels that have none
             label = ax.annotate(text, (x, y), textcoords="offset points", xytext=(dx, dy), fontsize=fontsize,
                                 annotation_clip=False)
             box = label.get_window_extent(renderer)

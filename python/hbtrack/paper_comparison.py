@@ -131,88 +131,75 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
 
     files = []
     nfrc = read_result(os.path.join(study_dir, "nfrc"))
-    # Fig. 3: the signed inward extremes of leading and trailing edge (solid: stable, dashed:
-    # unstable), limit points numbered as the tables number them (in omega order), their
-    # labels placed once the layout is final where they overlap no other text (label_layout).
-    from .figure_style import _plot_split, _stable_masks
-    fig, ax = plt.subplots(figsize=(6.5, 4))
-    b = nfrc["branch"]
-    if reversed_dir:
-        r = read_result(reversed_dir)["branch"]
-        ax.plot(r["omega"] / w1b, 1e3 * r["min_le"], color="0.8", lw=1, label="le, friction sense reversed")
-        ax.plot(r["omega"] / w1b, 1e3 * r["min_te"], color="0.6", lw=1, label="te, friction sense reversed")
-    stable, unstable = _stable_masks(b)
-    _plot_split(ax, b["omega"] / w1b, 1e3 * b["min_le"], stable, unstable, "C0", "leading edge (n1)")
-    _plot_split(ax, b["omega"] / w1b, 1e3 * b["min_te"], stable, unstable, "C1", "trailing edge (n9)")
-    lp_labels = []
-    for label, p in _limit_points(nfrc["summary"]):
-        for key in ("min_le", "min_te"):
-            ax.plot(p["omega"] / w1b, 1e3 * p[key], "o", color="k", ms=4, zorder=5)
-        lp_labels.append((p["omega"] / w1b, 1e3 * min(p["min_le"], p["min_te"]), label))
-    f3 = paper["fig3"]
-    for value, style, label in ((f3["min_le_m"], ":", "paper, le at LP3"), (f3["min_te_m"], "-.", "paper, te at LP3")):
-        ax.axhline(1e3 * value, color="C3", ls=style, lw=1, label=label)
-    ax.set_xlabel(r"$\omega / \omega_{1B}$")
-    ax.set_ylabel(r"inward extreme of $r(t)$ [mm] (solid: stable, dashed: unstable)", fontsize=8)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="lower left")
-    fig.tight_layout()
+    # Fig. 3: the signed inward extremes of leading and trailing edge, each sense of friction in
+    # its own panel (two systems), stable solid, unstable dashed, every limit point marked on both
+    # edges' curves and named once (LP1.. in omega order, as the tables), omega over our 1B (its
+    # value in the label). The paper's curves are not digitised here: its resonance values are in
+    # the table beside the figure, not drawn as lines across it.
+    from .figure_style import _plot_split, _stable_masks, marker_legend, stability_legend
     from .label_layout import place_labels
-    place_labels(ax, lp_labels)
+    senses = [("sense of the geometry", nfrc)] + ([("friction sense reversed", read_result(reversed_dir))] if reversed_dir else [])
+    fig, axes = plt.subplots(1, len(senses), figsize=(6.5 if len(senses) == 1 else 11, 4.3), squeeze=False, sharey=True)
+    for ax, (title, result) in zip(axes[0], senses):
+        branch = result["branch"]
+        stable, unstable = _stable_masks(branch)
+        for key, colour, what in (("min_le", "C0", "leading edge"), ("min_te", "C1", "trailing edge")):
+            _plot_split(ax, branch["omega"] / w1b, 1e3 * branch[key], stable, unstable, colour, what)
+        lp_labels = []
+        for label, p in _limit_points(result["summary"]):
+            for key, colour in (("min_le", "C0"), ("min_te", "C1")):
+                ax.plot(p["omega"] / w1b, 1e3 * p[key], "o", color=colour, mec="k", ms=5, ls="none", zorder=5)
+            lp_labels.append((p["omega"] / w1b, 1e3 * min(p["min_le"], p["min_te"]), label))
+        ax.set_title(title, fontsize=9, loc="left")
+        ax.set_xlabel(rf"$\omega / \omega_{{1B}}$ ($\omega_{{1B}}$ = {w1b:.1f} rad/s)")
+        ax.grid(alpha=0.3)
+        ax._lp_labels = lp_labels
+    axes[0, 0].set_ylabel(r"inward extreme of $r(t)$ [mm]")
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    extra = stability_legend([r["branch"] for _, r in senses]) + marker_legend({"LP"})
+    fig.legend(handles + extra, labels + [h.get_label() for h in extra], loc="lower center", ncol=5, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
+    for ax in axes[0]:
+        place_labels(ax, ax._lp_labels)
     files += save_figure(fig, os.path.join(study_dir, "figures", "paper_fig3"))
-
     # Fig. 7: the amplitude tracking curves in (omega / omega_1B, A), births and merges marked.
     summary = _load(os.path.join(study_dir, "summary.json"))
     entry = next((t for t in summary.get("tracking", []) if t["parameter"] == "amplitude"), None)
     if entry:
-        fig, ax = plt.subplots(figsize=(6.5, 4))
+        from .study_figures import curve_label
+        fig, ax = plt.subplots(figsize=(6.5, 4.6))
         for c in entry["curves"]:
             if "folder" in c:
                 track = read_result(os.path.join(study_dir, c["folder"]))
                 curve = tracking_curve(track)
-                label = tracked_limit_point_label(nfrc["summary"].get("special_points", []), track["summary"]["options"]["tracking"])
-                ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=f"{label} tracked")
-        for e in entry.get("extrema", []):
-            ax.plot(e["omega"] / w1b, e["value"], "v" if e["type"] == CurveExtremumType.PARAMETER_MIN else "^", color="k", ms=6)
+                label = curve_label(c, entry) or tracked_limit_point_label(nfrc["summary"].get("special_points", []),
+                                                                          track["summary"]["options"]["tracking"]) + " tracked"
+                ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=label)
+        for kind, marker, text in ((CurveExtremumType.PARAMETER_MIN, "v", "this model, births (min of A)"),
+                                   (CurveExtremumType.PARAMETER_MAX, "^", "this model, merges (max of A)")):
+            points = [(e["omega"] / w1b, e["value"]) for e in entry.get("extrema", []) if e["type"] == kind]
+            if points:
+                ax.plot(*zip(*points), marker, color="k", ms=6, ls="none", label=text)
         w_paper = paper["table2_rad_s"]["1B"]
         for key, marker, label in (("table3_births", "v", "paper, births (Table 3)"), ("table4_merges", "^", "paper, merges (Table 4)")):
             pts = paper[key]
             ax.plot([p["omega"] / w_paper for p in pts], [p["amplitude"] for p in pts], marker, mfc="none", color="C3", ms=8, ls="none", label=label)
-        ax.set_xlabel(r"$\omega / \omega_{1B}$ (each model's own 1B)")
-        ax.set_ylabel("A")
+        ax.set_xlabel(rf"$\omega / \omega_{{1B}}$ (each model's own: {w1b:.1f}, paper {w_paper:.1f} rad/s)")
+        ax.set_ylabel("forcing amplitude A [-]")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)
         fig.tight_layout()
         files += save_figure(fig, os.path.join(study_dir, "figures", "paper_fig7"))
+    # Fig. 12: the study's own (study_paper_figures): a panel per parameter value, the isola the
+    # time integration started on beside the nominal NFRC rather than on its axes.
+    from .study_paper_figures import nfrc_isolas_simulation_figure
+    from .units import scale_lengths
 
-    # Fig. 12: the nominal NFRC, the isolas at the nominal parameter values and the one the
-    # isola's time integration started on, time integration as dots.
-    fig, ax = plt.subplots(figsize=(6.5, 4))
-    ax.plot(b["omega"], 1e3 * b["min_le"], color="C0", lw=1.2, label="NFRC, leading edge")
-    nominal = nfrc["summary"]["options"]["parameters"]
-    simulated_isola = (summary.get("isola_simulation") or {}).get("folder")
-    for t in summary.get("tracking", []):
-        for v in t.get("validations", []):
-            at_nominal = abs(v["value"] - nominal.get(t["parameter"], float("nan"))) <= 1e-9 * abs(v["value"])
-            for br in v.get("isola_branches", []):
-                if not at_nominal and br["folder"] != simulated_isola:
-                    continue
-                iso = read_result(os.path.join(study_dir, br["folder"]))["branch"]
-                label = "isolated branch" + ("" if at_nominal else f" at {t['parameter']} = {v['value']:.4g}")
-                ax.plot(iso["omega"], 1e3 * iso["min_le"], color="C2" if at_nominal else "C4", lw=1.2, label=label)
-    for key, label in (("simulation", "time integration, NFRC point"), ("isola_simulation", "time integration, isola point")):
-        s = summary.get(key)
-        if s:
-            m = next(o for o in s["outputs"] if o["name"] == "min_le")
-            ax.plot(s["omega"], 1e3 * m["simulation"], "o" if key == "simulation" else "s", color="k", ms=5, label=label)
-    handles, labels = ax.get_legend_handles_labels()
-    unique = dict(zip(labels, handles))
-    ax.legend(unique.values(), unique.keys(), fontsize=7)
-    ax.set_xlabel(r"$\omega$ [rad/s]")
-    ax.set_ylabel(r"inward extreme of $r_1(t)$ [mm]")
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    files += save_figure(fig, os.path.join(study_dir, "figures", "paper_fig12"))
+    def read_mm(folder):
+        return scale_lengths(read_result(folder), 1e3)
+
+    files += save_figure(nfrc_isolas_simulation_figure(study_dir, length_unit="mm", read=read_mm),
+                         os.path.join(study_dir, "figures", "paper_fig12"))
     return files
 
 

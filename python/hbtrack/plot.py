@@ -28,7 +28,7 @@ import sys
 import numpy as np
 
 from . import analysis_figures, branch_figures, plots
-from .output_descriptions import parse_labels
+from .output_descriptions import output_descriptions, parse_labels
 from .overlay_figures import describe, overlay_figure
 from .results import output_names, read_result
 from .special_points import SpecialPointType
@@ -50,15 +50,42 @@ def _related(folder, path, factor=1.0):
     return None
 
 
-def _harmonics_at_the_largest(result, length_unit):
+def isola_label(name):
+    """What a branch folder of `isolas` is, for a legend: "isola_2" is "isolated branch 2",
+    "open_1" "main branch (from crossing 1)".
+
+    Parameters
+    ----------
+    name : str
+        The folder's name in the isolas result.
+
+    Returns
+    -------
+    str
+        The legend text.
+
+    Examples
+    --------
+    >>> isola_label("isola_1")
+    'isolated branch 1'
+    """
+    kind, _, number = name.rpartition("_")
+    if not number.isdigit():
+        return name
+    # open_K: the branch through crossing K reached the range: the main branch, found again
+    # from each such crossing (so two of them are one branch: the legend says why it repeats)
+    return {"isola": f"isolated branch {number}", "open": f"main branch (from crossing {number})"}.get(kind, name)
+
+
+def _harmonics_at_the_largest(result, length_unit, labels=None):
+    """The outputs' harmonics (by their descriptions) at the largest response, the point said on
+    each panel (the retained dofs' harmonics named internal dofs no reader knows)."""
     names = output_names(result)
-    if not len(result.get("states", [])) or not names:
+    if not names or not len(result["branch"]["omega"]) or not any(c.startswith("h0_") for c in result["branch"]):
         return {}
-    point = int(np.argmax(result["branch"][f"max_{names[0]}"]))
-    omega = result["branch"]["omega"][point]
-    return {"harmonics": plots.harmonics_figure(
-        plots.state_harmonics(result, point),
-        f"HBM harmonics at point {point} (omega = {omega:.6g} rad/s, largest max_{names[0]})", length_unit)}
+    row = int(np.argmax(np.max([branch_figures.norm_of(result["branch"], n) for n in names], axis=0)))
+    return {"harmonics": branch_figures.fourier_figure(result, row, length_unit=length_unit, descriptions=labels,
+                                                       where="largest response")}
 
 
 def _switched_figures(result, length_unit, factor):
@@ -76,7 +103,7 @@ def _switched_figures(result, length_unit, factor):
     span = np.ptp(origin["branch"]["omega"])
     window = (lo - 0.3 * (hi - lo) - 0.01 * span, hi + 0.3 * (hi - lo) + 0.01 * span) if hi - lo < 0.2 * span else None
     return {"switched": overlay_figure([origin, result], length_unit=length_unit, window=window,
-                                       title="over the NFRC it was switched from (solid: stable, dashed: unstable)")}
+                                       title="over the NFRC it was switched from")}
 
 
 def _branch_figures(result, length_unit, options):  # options: figures_for's keywords
@@ -140,7 +167,7 @@ def figures_for(result, length_unit=None, model_unit=None, norm=False, zoom=0.1,
     kind = result["kind"]
     if kind in ("frc", "solve", "isola_branch", "switch"):
         figures = _branch_figures(result, length_unit, options)
-        figures.update(_harmonics_at_the_largest(result, length_unit))
+        figures.update(_harmonics_at_the_largest(result, length_unit, labels))
         if kind == "switch":
             figures.update(_switched_figures(result, length_unit, factor))
         return figures
@@ -151,7 +178,7 @@ def figures_for(result, length_unit=None, model_unit=None, norm=False, zoom=0.1,
                                                          "max and min of the outputs over a period")}
     if kind == "continue":
         figures = {"continuation": analysis_figures.continuation_figure(result, length_unit=length_unit)}
-        figures.update(_harmonics_at_the_largest(result, length_unit))
+        figures.update(_harmonics_at_the_largest(result, length_unit, labels))
         return figures
     if kind == "track":
         origin = _related(result.get("folder", ""), result["summary"]["options"]["tracking"].get("from", ""), factor)
@@ -162,7 +189,7 @@ def figures_for(result, length_unit=None, model_unit=None, norm=False, zoom=0.1,
         isolas = result["summary"]["options"]["isolas"]
         branches = list(result["branches"].values())
         for name, branch in result["branches"].items():
-            branch["label"] = name
+            branch["label"] = isola_label(name)
         figures = {}
         if branches:
             figures["isolas"] = branch_figures.nfrc_figure(
@@ -187,13 +214,14 @@ def figures_for(result, length_unit=None, model_unit=None, norm=False, zoom=0.1,
             raise ValueError(f"{result.get('folder', 'result')}: the fold search has no integration to draw")
         return figures_for(started, length_unit, titles=titles, labels=labels)
     if kind == "simulate":
-        figures = {"signals": plots.time_signals_figure(result, length_unit=length_unit)}
+        described = {**output_descriptions(result), **(labels or {})}
+        figures = {"signals": plots.time_signals_figure(result, length_unit=length_unit, descriptions=described)}
         summary = result["summary"]
         for name in output_names(result):
             series = {"time integration": summary[f"harmonics_{name}"]}
             if f"harmonics_{name}" in summary.get("start", {}):
                 series["HBM"] = summary["start"][f"harmonics_{name}"]
-            figures[f"harmonics_{name}"] = plots.harmonics_figure(series, f"harmonics of {name}, last period", length_unit)
+            figures[f"harmonics_{name}"] = plots.harmonics_figure(series, f"harmonics of {described[name]}, last period", length_unit)
         return figures
     raise ValueError(f"{result.get('folder', 'result')}: no figures for a '{kind}' result")
 

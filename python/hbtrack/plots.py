@@ -16,6 +16,7 @@ from .figure_style import (  # noqa: F401 (the names plots has always offered)
     parameter_label,
     plt,
     save_figure,
+    stability_legend,
 )
 from .results import output_names, tracking_curve
 from .special_points import CurveExtremumType, SpecialPointType, tracked_limit_point_label
@@ -64,7 +65,7 @@ def _response(columns, name, norm):
 
 
 def _response_label(name, norm):
-    return rf"$\Vert {name}(t) \Vert_\infty$" if norm else f"max {name}"
+    return rf"$\Vert {name}(t) \Vert_\infty$" if norm else f"max of {name} over a period"
 
 
 def _tracking_parameter(track):
@@ -172,10 +173,16 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
     return fig
 
 
+# More extrema than this and their coordinates are left to the tables (a study's index.md): two
+# dozen labels on leaders crossed each other and hid the curves (rotor 67 in mu).
+MAX_COORDINATE_LABELS = 6
+
+
 def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfrc_special_points=None):
     """Limit-point (and NS, PD) curves projected on (omega, parameter).
 
-    Start (o) and extrema (v min, ^ max) annotated, an NS curve's ends on a fold (s: NS
+    Start (o) and extrema (v min, ^ max) marked, their coordinates written when there are at
+    most MAX_COORDINATE_LABELS of them, an NS curve's ends on a fold (s: NS
     frequency 0) marked; the special points of the tracked types (LP, NS, PD) of the
     `validations` NFRCs (x) at their parameter value, which the curves must pass through.
 
@@ -212,6 +219,7 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
         start = track["summary"].get("start")
         if start:
             ax.plot([start["omega"]], [start[param]], "o", color=f"C{i}", ms=5)
+            kinds.add("start")
         for sp in _extrema(track):
             ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == CurveExtremumType.PARAMETER_MIN else "^", color="k", ms=7, zorder=5)
             coordinates.append((sp["omega"], sp[param], f"({sp['omega']:.6g}, {sp[param]:.4g})"))
@@ -227,7 +235,7 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
         ax.axhline(at, color="0.5", lw=0.8, ls=":", label=f"{param} = {at:g}")
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
-    ax.set_title("limit-point tracking (o: start)" if tracked == [SpecialPointType.LIMIT_POINT] else f"{', '.join(tracked)} tracking (o: start)", fontsize=10)
+    ax.set_title("limit-point tracking" if tracked == [SpecialPointType.LIMIT_POINT] else f"{', '.join(tracked)} tracking", fontsize=10)
     ax.grid(alpha=0.3)
     # The paper's Fig. 7: a minimum of the parameter along a curve is where a pair of limit points
     # is born (an isola appears, or a fold on the main branch), a maximum where a pair vanishes
@@ -239,18 +247,21 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
         points = "limit (NS, PD) points" if SpecialPointType.LIMIT_POINT in tracked else f"{'/'.join(tracked)} points: an unstable band"
         meaning = {born: ("v", f"min of {param}: a pair of {points} born"), merged: ("^", f"max of {param}: a pair merges")}
     meaning["resonance"] = ("s", "NS curve ends on a fold (NS frequency 0)")
-    extra = [Line2D([], [], marker=meaning[k][0], color="k", ls="none", mfc="none" if k == "resonance" else "k", ms=7, label=meaning[k][1])
-             for k in (born, merged, "resonance") if k in kinds]
+    meaning["start"] = ("o", "start: the NFRC's point tracked")
+    extra = [Line2D([], [], marker=meaning[k][0], color="0.4" if k == "start" else "k", ls="none", mfc="none" if k == "resonance" else None,
+                    ms=5 if k == "start" else 7, label=meaning[k][1])
+             for k in ("start", born, merged, "resonance") if k in kinds]
     handles, labels = ax.get_legend_handles_labels()
-    ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=8)
+    # Below the axes: "best" inside moves when the labels are added and covered curves and labels
+    entries = len(handles) + len(extra)
+    ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.14),
+              ncol=2, frameon=False)
+    fig.set_size_inches(6.5, 4.2 + 0.17 * ((entries + 1) // 2))
     fig.tight_layout()
-    from .label_layout import place_labels
-    place_labels(ax, coordinates)
+    if len(coordinates) <= MAX_COORDINATE_LABELS:
+        from .label_layout import place_labels
+        place_labels(ax, coordinates)
     return fig
-
-
-# More NFRCs than this and the validation figure's legend goes beside the axes.
-_MAX_LEGEND_INSIDE = 8
 
 
 def validation_figure(tracks, nfrcs, output=None, length_unit=None, norm=False):
@@ -282,33 +293,49 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None, norm=False):
     tracks = [tracks] if isinstance(tracks, dict) else list(tracks)
     name = output or output_names(tracks[0])[0]
     param = _tracking_parameter(tracks[0])
-    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    fig, ax = plt.subplots(figsize=(7.2, 4.4))
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
-        ax.plot(curve["omega"], _response(curve, name, norm), color="k", lw=1.6, label="limit points" if i == 0 else None)
-    for j, nfrc in enumerate(nfrcs):
-        value = nfrc["summary"]["options"]["parameters"][param]
+        ax.plot(curve["omega"], _response(curve, name, norm), color="k", lw=1.6, label="limit points tracked" if i == 0 else None)
+    # A colour per parameter value on a colour bar, not a legend entry per NFRC: with a study's two
+    # dozen values the colour cycle repeats and two NFRCs read as one; an isolated branch takes
+    # its NFRC's colour, drawn thicker.
+    from matplotlib import cm, colors
+    values = [nfrc["summary"]["options"]["parameters"][param] for nfrc in nfrcs]
+    scale = colors.Normalize(min(values), max(values) if max(values) > min(values) else min(values) + 1) if values else None
+    kinds, folds = set(), []
+    for nfrc, value in zip(nfrcs, values):
         stable, unstable = _stable_masks(nfrc["branch"])
-        what = "isolated branch" if nfrc.get("kind") == "isola_branch" else "NFRC"
-        _plot_split(ax, nfrc["branch"]["omega"], _response(nfrc["branch"], name, norm), stable, unstable, f"C{j}", f"{what}, {param} = {value:g}")
+        isola = nfrc.get("kind") == "isola_branch"
+        kinds.add("isola" if isola else "nfrc")
+        _plot_split(ax, nfrc["branch"]["omega"], _response(nfrc["branch"], name, norm), stable, unstable, cm.viridis(scale(value)), None,
+                    lw=2.2 if isola else 1.1)
+        folds += [(sp["omega"], float(_response(sp, name, norm))) for sp in nfrc.get("special_points", [])
+                  if sp["type"] == SpecialPointType.LIMIT_POINT and f"max_{name}" in sp]
+    if folds:
+        ax.plot(*zip(*folds), "o", color="w", mec="k", ms=5, ls="none", zorder=5, label="LP (fold) of an NFRC")
+    from matplotlib.lines import Line2D
+    extra = [Line2D([], [], color="0.5", lw=1.1, label=f"NFRC at a fixed {param} (colour)")] if "nfrc" in kinds else []
+    extra += [Line2D([], [], color="0.5", lw=2.2, label="isolated branch at that value")] if "isola" in kinds else []
+    extra += [h for h in stability_legend([n["branch"] for n in nfrcs]) if h.get_label() != "stable"]
     # The folds are what is checked: show the frequencies the tracking curves span, not the
     # NFRCs' whole range where the resonance would be a spike.
     omegas = np.concatenate([np.asarray(tracking_curve(t)["omega"]) for t in tracks])
     span = max(omegas.max() - omegas.min(), 1e-3 * abs(omegas.max()))
     ax.set_xlim(omegas.min() - 0.25 * span, omegas.max() + 0.25 * span)
     ax.set_xlabel(OMEGA_LABEL)
-    ax.set_ylabel(length_label(_response_label(name, norm) + ("" if norm else " over a period"), length_unit))
+    ax.set_ylabel(length_label(_response_label(name, norm), length_unit))
     ax.set_title("tracking curves and NFRCs (folds on the curves)", fontsize=10)
     ax.grid(alpha=0.3)
-    if len(nfrcs) > _MAX_LEGEND_INSIDE:
-        # A study's two dozen NFRCs: a legend inside would cover the curves (rotor 67's clearance)
-        fig.set_size_inches(9.5, 4.8)
-        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), ncol=1 if len(nfrcs) <= 26 else 2, borderaxespad=0)
-    else:
-        ax.legend(fontsize=8)
+    if scale is not None:
+        bar = fig.colorbar(cm.ScalarMappable(norm=scale, cmap=cm.viridis), ax=ax, pad=0.02)
+        bar.set_label(parameter_label(param, length_unit))
+        bar.ax.plot([0.5] * len(values), values, "_", color="w", ms=10)  # the values computed
+    handles, labels = ax.get_legend_handles_labels()
+    ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=7.5, loc="upper center",
+              bbox_to_anchor=(0.5, -0.15), ncol=3, frameon=False)
     fig.tight_layout()
     return fig
-
 
 
 def harmonic_signal(harmonics, omega, time):
@@ -365,7 +392,7 @@ def harmonic_amplitudes(harmonics):
     return np.concatenate([[abs(0.5 * h[0])], np.hypot(h[1::2], h[2::2])])
 
 
-def time_signals_figure(simulation, outputs=None, length_unit=None):
+def time_signals_figure(simulation, outputs=None, length_unit=None, descriptions=None):
     """Simulated displacement of each output over the recorded periods.
 
     With the HBM orbit the simulation started from (when it started from one) for comparison.
@@ -378,6 +405,8 @@ def time_signals_figure(simulation, outputs=None, length_unit=None):
         The outputs drawn (default all).
     length_unit : str, optional
         The model's length unit for the labels.
+    descriptions : dict, optional
+        {output: text} naming the outputs (default: their names).
 
     Returns
     -------
@@ -398,10 +427,10 @@ def time_signals_figure(simulation, outputs=None, length_unit=None):
         if f"harmonics_{name}" in start:
             ax.plot(t, harmonic_signal(start[f"harmonics_{name}"], omega, t), "--", color="C1", lw=1.3, label="HBM")
         ax.set_xlabel("t [s]")
-        ax.set_ylabel(length_label(name, length_unit))
+        ax.set_ylabel(length_label((descriptions or {}).get(name, name), length_unit))
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-    axes[0, 0].set_title(f"steady state at omega = {omega:.6g} rad/s", fontsize=10)
+    axes[0, 0].set_title(f"steady state at ω = {omega:.6g} rad/s", fontsize=10)
     fig.tight_layout()
     return fig
 
@@ -434,7 +463,7 @@ def harmonics_figure(series, title, length_unit=None):
         ax.bar(orders + (i - (len(series) - 1) / 2) * width, amplitudes, width, label=label, color=f"C{i}")
     ax.set_xticks(np.arange(max(len(harmonic_amplitudes(h)) for h in series.values())))
     ax.set_yscale("log", nonpositive="clip")  # bars start at 0: clipped to the axis, not dropped
-    ax.set_xlabel(r"harmonic order j (frequency j$\omega$) [-]")
+    ax.set_xlabel(r"harmonic $K$ (frequency $K\omega$) [-]")
     ax.set_ylabel(length_label("amplitude", length_unit))
     ax.set_title(title, fontsize=10)
     ax.grid(alpha=0.3, axis="y")

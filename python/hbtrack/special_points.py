@@ -98,6 +98,41 @@ def numbered_special_points(special_points):
     return numbered
 
 
+def distinct_special_points(special_points, relative=1e-4):
+    """The special points with the repeats of one point dropped: branches drawn together (the
+    main branch that `isolas` reached from two crossings, an NFRC and its odd-harmonic twin)
+    report the same fold each; numbered over all of them it was counted twice (LP1-LP8 for 4).
+
+    Parameters
+    ----------
+    special_points : sequence of dict
+        summary.json's special_points of all the branches (type, omega, outputs).
+    relative : float, optional
+        Two points of one type are one when omega and every max_/min_ value they share agree to
+        this fraction (located points agree to the Newton tolerance, about 1e-8; distinct
+        points of the examples lie 1e-3 apart or more).
+
+    Returns
+    -------
+    list of dict
+        The first of each group, in the given order.
+
+    Examples
+    --------
+    >>> len(distinct_special_points([{"type": "LP", "omega": 1.0, "max_x": 2.0}, {"type": "LP", "omega": 1.0, "max_x": 2.0}]))
+    1
+    """
+    kept = []
+    for sp in special_points:
+        def same(other):
+            keys = [k for k in sp if k.startswith(("max_", "min_")) and k in other]
+            return (other["type"] == sp["type"] and abs(other["omega"] - sp["omega"]) <= relative * abs(sp["omega"])
+                    and all(abs(other[k] - sp[k]) <= relative * max(abs(sp[k]), abs(other[k]), 1e-300) for k in keys))
+        if not any(same(other) for other in kept):
+            kept.append(sp)
+    return kept
+
+
 def numbered_limit_points(special_points):
     """The limit points only, labelled as numbered_special_points labels them.
 

@@ -34,10 +34,10 @@ def _nfrc_figures(study_dir, summary, length_unit, read=read_result):
     beside = [read(os.path.join(study_dir, e["folder"])) for e in entries
               if os.path.exists(os.path.join(study_dir, e["folder"], "branch.csv"))]
     if not beside:
-        return {"nfrc": plots.nfrc_figure(nfrc, length_unit=length_unit, title="nominal NFRC (solid: stable, dashed: unstable)")}
-    nfrc["label"] = "nfrc: nominal NFRC"
+        return {"nfrc": plots.nfrc_figure(nfrc, length_unit=length_unit, title="nominal NFRC")}
+    nfrc["label"] = "nominal NFRC"
     figures = {"nfrc": overlay_figure([nfrc, *beside], length_unit=length_unit,
-                                      title="nominal NFRC and the branches beside it (solid: stable, dashed: unstable)")}
+                                      title="nominal NFRC and the branches beside it")}
     for result in beside:
         options = result["summary"]["options"]
         if result["kind"] == "switch" and options["switch"]["type"] == SpecialPointType.PERIOD_DOUBLING and len(result["branch"]["omega"]):
@@ -45,13 +45,43 @@ def _nfrc_figures(study_dir, summary, length_unit, read=read_result):
     return figures
 
 
-def _study_curve(read, study_dir, curve):
-    """A tracking curve of the study's summary, read; one the study started from a validation
-    NFRC's limit point (its "from", e.g. "validate_mu_1 LP2") is labelled by it: the nominal
-    NFRC's numbering does not apply to it."""
+def curve_label(curve, entry):
+    """The legend text of a tracking curve the study started from a validation NFRC's limit
+    point (its summary's "from", e.g. "validate_mu_1 LP2"): that NFRC named by its parameter
+    value, not by its folder (the nominal NFRC's numbering does not apply to it).
+
+    Parameters
+    ----------
+    curve : dict
+        An entry of the study summary's tracking[].curves.
+    entry : dict
+        Its tracking[] entry (parameter, validations).
+
+    Returns
+    -------
+    str or None
+        E.g. "LP2 of the NFRC at mu = 0.0001, tracked"; None for a curve from the nominal NFRC.
+
+    Examples
+    --------
+    >>> curve_label({"from": "validate_mu_1 LP2"}, {"parameter": "mu", "validations": [{"folder": "validate_mu_1", "value": 1e-4}]})
+    'LP2 of the NFRC at mu = 0.0001, tracked'
+    """
+    if not curve.get("from"):
+        return None
+    folder, _, point = curve["from"].partition(" ")
+    value = next((v["value"] for v in entry.get("validations", []) if v["folder"] == folder), None)
+    if value is None:
+        return f"{point} of another NFRC, tracked"
+    return f"{point} of the NFRC at {entry['parameter']} = {value:.4g}, tracked"
+
+
+def _study_curve(read, study_dir, curve, entry):
+    """A tracking curve of the study's summary, read and named (curve_label)."""
     track = read(os.path.join(study_dir, curve["folder"]))
-    if curve.get("from"):
-        track["label"] = f"{curve['from']} tracked"
+    label = curve_label(curve, entry)
+    if label:
+        track["label"] = label
     return track
 
 
@@ -92,7 +122,7 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
         nominal_points = read_result(os.path.join(study_dir, "nfrc"))["special_points"]
     for entry in summary.get("tracking", []):
         param = entry["parameter"]
-        tracks = [_study_curve(read, study_dir, c) for c in entry["curves"] if "folder" in c]
+        tracks = [_study_curve(read, study_dir, c, entry) for c in entry["curves"] if "folder" in c]
         if not tracks:
             continue
         nfrcs = [read(os.path.join(study_dir, v["folder"])) for v in entry.get("validations", [])]

@@ -4,6 +4,7 @@ torus along the branch, and time integrations' maxima (``hbtrack plot`` of a tor
 python/plot_torus.py, docs/analyses.md)."""
 import numpy as np
 
+from .figure_style import SPECIAL_MARKERS
 from .plots import OMEGA_LABEL, length_label, plt
 from .special_points import SpecialPointType
 
@@ -47,8 +48,13 @@ def _draw_nfrc(axes, nfrc, name):
     axes.plot([], [], color="tab:blue", label="NFRC, stable")
     axes.plot([], [], color="tab:blue", linestyle="--", label="NFRC, unstable")
     ns = [p for p in nfrc.get("special_points", []) if p["type"] == SpecialPointType.NEIMARK_SACKER]
-    axes.plot([p["omega"] for p in ns], [p["max_" + name] for p in ns], "o", color="black", markerfacecolor="white", markersize=7,
-              label="NS points", zorder=4)
+    axes.plot([p["omega"] for p in ns], [p["max_" + name] for p in ns], SPECIAL_MARKERS["NS"][0], color="black", markerfacecolor="white",
+              markersize=8, label=SPECIAL_MARKERS["NS"][1], zorder=4, ls="none")
+    # Its folds too: the stability changes the dashes show are the NS points and these
+    lps = [p for p in nfrc.get("special_points", []) if p["type"] == SpecialPointType.LIMIT_POINT]
+    if lps:
+        axes.plot([p["omega"] for p in lps], [p["max_" + name] for p in lps], SPECIAL_MARKERS["LP"][0], color="black",
+                  markerfacecolor="white", markersize=6, label=SPECIAL_MARKERS["LP"][1], zorder=4, ls="none")
 
 
 def torus_figure(torus, nfrc=None, simulations=(), zoom=None, length_unit=None):

@@ -13,7 +13,7 @@ import pytest
 import hbtrack
 from hbtrack import analysis_figures, plots
 from hbtrack.plots import plt
-from hbtrack.overlay_figures import overlay_figure
+from hbtrack.overlay_figures import distinct_part, overlay_figure
 from hbtrack.plot import figures_for
 from hbtrack.results import read_result
 from hbtrack.study_figures import study_figures
@@ -89,7 +89,7 @@ def test_hbtrack_plot_knows_backbone_continue_and_switch_folders(kind, expected,
 def test_backbone_figure_draws_omega_and_damping_against_amplitude(coupled_study):
     bb = read_result(coupled_study["backbone"])
     left, right = analysis_figures.backbone_figure(bb).get_axes()
-    line = line_labelled(left, "backbone_mode1: backbone of mode 1")
+    line = line_labelled(left, "backbone of mode 1")
     np.testing.assert_array_equal(line.get_xdata(), bb["branch"]["amplitude"])
     np.testing.assert_array_equal(line.get_ydata(), bb["branch"]["omega"])
     # The damping is C = 0.02 M: a modal damping ratio of 0.02 / (2 omega), in percent.
@@ -117,16 +117,18 @@ def test_plot_of_several_folders_overlays_nfrc_backbone_and_switched_branch(coup
     axes = figure.get_axes()
     assert len(axes) == 2  # x1 and x2
     nfrc, bb, switched = results
-    names = ["nfrc: NFRC", "backbone_mode1: backbone of mode 1",
-             f"{os.path.basename(coupled_study['switched'][0])}: branch switched at the BP at ω = "
-             f"{switched['summary']['options']['switch']['omega']:.5g}"]
+    # Named by what they are, never by folder; the switched branch by its first mirror image
+    # (distinct_part: drawn whole, x1's envelope was x2's)
+    names = ["NFRC", "backbone of mode 1",
+             f"branch switched at the BP at ω = {switched['summary']['options']['switch']['omega']:.5g} (one half; its mirror swaps x1, x2)"]
+    drawn_switched = distinct_part(switched)[0]
     texts = legend_texts(figure)
     assert texts[:3] == names
     assert "BP (branch point)" in texts and "LP (fold)" in texts
     for ax, output in zip(axes, ("x1", "x2")):
         # Each curve is its folder's branch.csv; the switched branch is asymmetric (x1 != x2).
         np.testing.assert_array_equal(line_labelled(ax, names[1]).get_ydata(), bb["branch"][f"max_{output}"])
-        for label, result in ((names[0], nfrc), (names[2], switched)):
+        for label, result in ((names[0], nfrc), (names[2], drawn_switched)):
             x, y = drawn_curve(ax, label)
             np.testing.assert_array_equal(x, result["branch"]["omega"])
             np.testing.assert_array_equal(y, result["branch"][f"max_{output}"])
@@ -151,12 +153,13 @@ def test_study_nfrc_figure_draws_the_backbone_and_switched_branches(coupled_stud
     figures = study_figures(coupled_study["dir"])
     ax = figures["nfrc"].get_axes()[0]
     texts = legend_texts(figures["nfrc"])
-    assert texts[0] == "nfrc: nominal NFRC"
-    assert "backbone_mode1: backbone of mode 1" in texts
+    assert texts[0] == "nominal NFRC"
+    assert "backbone of mode 1" in texts
     for folder in coupled_study["switched"]:
-        label = [t for t in texts if t.startswith(os.path.basename(folder) + ": branch switched at the BP")]
+        switched = read_result(folder)
+        label = [t for t in texts if t.startswith(f"branch switched at the BP at ω = {switched['summary']['options']['switch']['omega']:.5g}")]
         assert len(label) == 1, texts
-        np.testing.assert_array_equal(drawn_curve(ax, label[0])[1], read_result(folder)["branch"]["max_x1"])
+        np.testing.assert_array_equal(drawn_curve(ax, label[0])[1], distinct_part(switched)[0]["branch"]["max_x1"])
     # The study drew this figure into its folder (a PNG of the overlay, not the plain NFRC).
     assert os.path.getsize(os.path.join(coupled_study["dir"], "figures", "nfrc.png")) > 20000
     assert "figures/nfrc.png" in coupled_study["summary"]["figures"]

@@ -42,7 +42,7 @@ def test_the_tracking_figure_names_the_ns_curve_and_marks_its_ends(nltva_frc_cli
     labels = [t.get_text() for t in axes.get_legend().get_texts()]
     assert "NS point 1 tracked" in labels and "NSs of NFRCs" in labels
     assert "NS curve ends on a fold (NS frequency 0)" in labels
-    assert axes.get_title() == "NS tracking (o: start)"
+    assert axes.get_title() == "NS tracking"  # the start marker is in the legend
 
 
 def test_bad_points_name_the_keyword(nltva_frc_cli, nltva_ns_api):

@@ -28,6 +28,8 @@ def assert_labelled_with_units(figure):
     assert axes
     for ax in axes:
         labels = [ax.get_xlabel(), ax.get_ylabel()] + ([ax.get_zlabel()] if hasattr(ax, "get_zlabel") else [])
+        if ax.get_label() == "<colorbar>":  # a colour bar has one label, along it
+            labels = [ax.get_ylabel() or ax.get_xlabel()]
         for label in labels:
             assert "[" in label and label.endswith("]") and len(label.split("[")[1]) > 1, f"no unit in {label!r}"
         assert ax.has_data()

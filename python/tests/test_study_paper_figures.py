@@ -47,19 +47,22 @@ def small_study(tmp_path_factory):
 
 def test_fig12_draws_the_nfrc_the_isola_and_the_time_integrations(small_study):
     figure = nfrc_isolas_simulation_figure(small_study, zoom=None)
-    (ax,) = figure.get_axes()
-    lines = {line.get_label(): line for line in ax.get_lines()}
+    # The isola lies at A = 0.15, not the nominal 0.12: another system, in its own panel (on the
+    # nominal NFRC's axes it read as a branch of that NFRC) with the NFRC at its own value
+    nominal_ax, isola_ax = figure.get_axes()
+    assert isola_ax.get_title(loc="left") == "amplitude = 0.15"
+    lines = {line.get_label(): line for line in nominal_ax.get_lines()}
     nfrc = read_result(f"{small_study}/nfrc")["branch"]
     isola = read_result(f"{small_study}/isolas/isola_1")["branch"]
     solid = lines["NFRC, x1"].get_ydata()
-    drawn = np.where(np.isnan(solid), ax.get_lines()[1].get_ydata(), solid)  # unstable parts are the dashed line's
+    drawn = np.where(np.isnan(solid), nominal_ax.get_lines()[1].get_ydata(), solid)  # unstable parts are the dashed line's
     np.testing.assert_allclose(drawn, norm_of(nfrc, "x1"))
-    assert any(label.startswith("isolated branch, amplitude = 0.15") for label in lines)
-    isola_line = next(line for label, line in lines.items() if label.startswith("isolated branch") and label.endswith("x1"))
-    np.testing.assert_array_equal(isola_line.get_xdata(), isola["omega"])
-    for folder, label in (("simulate", "time integration"), ("simulate_isola", "time integration on the isola")):
+    isola_lines = {line.get_label(): line for line in isola_ax.get_lines()}
+    np.testing.assert_array_equal(isola_lines["isolated branch, x1"].get_xdata(), isola["omega"])
+    assert "NFRC, x1" in isola_lines  # the NFRC at the isola's value, beside it
+    for ax, folder, label in ((nominal_ax, "simulate", "time integration"), (isola_ax, "simulate_isola", "time integration on the isola")):
         s = read_result(f"{small_study}/{folder}")["summary"]
-        x, y = lines[label].get_data()
+        x, y = {line.get_label(): line for line in ax.get_lines()}[label].get_data()
         np.testing.assert_allclose(x, s["omega"])
         np.testing.assert_allclose(y, [max(abs(s[f"max_{n}"]), abs(s[f"min_{n}"])) for n in ("x1", "x2")])
     plt.close(figure)
@@ -98,23 +101,26 @@ def test_a_curve_the_study_started_from_a_validation_nfrc_is_named_by_it(small_s
     shutil.copytree(small_study, study)
     with open(f"{study}/summary.json") as f:
         summary = json.load(f)
-    summary["tracking"][0]["curves"].append({"lp": 0, "folder": "track_amplitude_lp1", "from": "validate_amplitude_2 LP3"})
+    summary["tracking"][0]["curves"].append({"lp": 0, "folder": "track_amplitude_lp1", "from": "nfrc LP3"})  # the validation NFRC's folder
     with open(f"{study}/summary.json", "w") as f:
         json.dump(summary, f)
     figure = study_figures(study)["tracking_amplitude"]
     labels = [t.get_text() for t in figure.get_axes()[0].get_legend().get_texts()]
-    assert "LP1 tracked" in labels and "validate_amplitude_2 LP3 tracked" in labels
+    assert "LP1 tracked" in labels and "LP3 of the NFRC at amplitude = 0.15, tracked" in labels  # its value, not its folder
     plt.close("all")
 
 
 def test_a_validation_figure_of_many_nfrcs_keeps_its_legend_off_the_curves(small_study):
-    # Rotor 67's study draws 23 NFRCs of the clearance: a legend inside covered the axes.
+    # Rotor 67's study draws 23 NFRCs of the clearance: a legend inside covered the axes, and an
+    # entry per NFRC repeated the ten colours of the cycle (two values read as one).
     track = read_result(f"{small_study}/track_amplitude_lp1")
     nfrc = read_result(f"{small_study}/nfrc")
     figure = plots.validation_figure(track, [nfrc] * 12)
     figure.canvas.draw()
-    (ax,) = figure.get_axes()
+    ax, bar = figure.get_axes()
     legend_box = ax.get_legend().get_window_extent()
-    assert legend_box.x0 >= ax.get_window_extent().x1  # beside the axes, not over them
+    assert legend_box.y1 <= ax.get_window_extent().y0  # below the axes, not over them
     assert legend_box.x1 <= figure.bbox.x1 and legend_box.y0 >= figure.bbox.y0  # and inside the figure
+    assert len(ax.get_legend().get_texts()) < 12  # kinds of curves, not one entry per NFRC
+    assert bar.get_label() == "<colorbar>" and bar.get_ylabel().startswith("amplitude")  # the value by colour
     plt.close(figure)

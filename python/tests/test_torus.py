@@ -51,4 +51,4 @@ def test_hbtrack_plot_draws_a_torus_folder_over_its_nfrc(results_dir, nltva_frc)
     axes = figures["torus"].get_axes()
     assert len(axes) == 2  # x1, x2
     labels = [t.get_text() for t in axes[0].get_legend().get_texts()]
-    assert "NS points" in labels and "torus: max over the torus" in labels and "NFRC, unstable" in labels
+    assert "NS (Neimark-Sacker)" in labels and "LP (fold)" in labels and "torus: max over the torus" in labels and "NFRC, unstable" in labels
