@@ -112,6 +112,8 @@ TEST(TimeIntegrationCli, BadFlagsFailWithOneLineNamingTheFlag) {
       {"--omega 1 --max-periods ten", "--max-periods: must be an integer >= 1, got 'ten'"},
       {"--omega 1 --record-periods -2", "--record-periods: must be an integer >= 1"},
       {"--omega 1 --method rk4", "--method: must be newmark or dopri5, got 'rk4'"},
+      {"--omega 1 --element-steps -1", "--element-steps: must be an integer >= 0, got '-1'"},
+      {"--omega 1 --method dopri5 --element-steps 32", "--element-steps: only with --method newmark"},
       {"--omega -1", "--omega: must be a number > 0"},
       {"--omega 1.5x", "--omega: must be a number > 0, got '1.5x'"},
       {"", "--omega: required unless --from"},

@@ -50,7 +50,8 @@ bool Study::validation_and_simulation() {
                                                           : std::vector<std::string>{"--point", std::to_string(start.point)};
     simulate.args.insert(simulate.args.end(), where.begin(), where.end());
     simulate.args.insert(simulate.args.end(),
-                         {"--max-periods", std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods))});
+                         {"--max-periods", std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods)),
+                          "--element-steps", std::to_string(c_.study.simulate_element_steps)});
     frcs.push_back(simulate);
   }
   if (!run_steps(frcs) || !run_steps(crossings) || !continue_validations_beyond_the_range()) return false;
@@ -176,7 +177,8 @@ bool Study::isola_simulation() {
                                 "--from",           from,
                                 "--point",          std::to_string(at->point),
                                 "--max-periods",    std::to_string(periods),
-                                "--record-periods", std::to_string(std::min(4, periods))};
+                                "--record-periods", std::to_string(std::min(4, periods)),
+                                "--element-steps",  std::to_string(c_.study.simulate_element_steps)};
   if (!run_steps({{"simulate_isola", args, false}})) return false;
   summary_["isola_simulation"] = compare_with_simulation(from, at->point, read_summary(dir_ + "/simulate_isola"), c_.outputs);
   summary_["isola_simulation"]["folder"] = at->folder;

@@ -51,6 +51,7 @@ struct SimulateOptions {
   std::string distances = "0.2,0.5,1,2,3,5";  // percent of omega from the LP
   std::string method = "newmark";
   std::string steps_per_period = "256";
+  std::string element_steps = "0";
   std::string max_periods = "2000";
   std::string record_periods = "1";
 };
@@ -100,6 +101,8 @@ int run_simulate(const SimulateOptions& o) {
   // Flags first: they are cheap to check and their errors name them.
   const IntegrationMethod method = parse_flag_choice<IntegrationMethod>("--method", o.method);
   const int steps_per_period = static_cast<int>(parse_integer("--steps-per-period", o.steps_per_period, 1));
+  const int element_steps = static_cast<int>(parse_integer("--element-steps", o.element_steps, 0));
+  if (element_steps > 0 && method != IntegrationMethod::newmark) throw CaseError("--element-steps: only with --method newmark");
   SteadyStateOptions steady;
   steady.max_periods = static_cast<int>(parse_integer("--max-periods", o.max_periods, 1));
   steady.record_periods = static_cast<int>(parse_integer("--record-periods", o.record_periods, 1));
@@ -120,6 +123,7 @@ int run_simulate(const SimulateOptions& o) {
   run.omega = omega_flag;
   run.method = method;
   run.steps_per_period = steps_per_period;
+  run.element_steps = element_steps;
   run.steady = steady;
   if (!o.from.empty()) {
     std::vector<std::string> overrides = hbm_overrides(o.from, c);
@@ -162,6 +166,11 @@ void add_simulate_verbs(CLI::App& app, VerbList& verbs) {
   simulate
       ->add_option("--steps-per-period", options.steps_per_period,
                    "newmark: base time steps per period; dopri5: output samples per period (the step adapts)")
+      ->type_name("INT")
+      ->capture_default_str();
+  simulate
+      ->add_option("--element-steps", options.element_steps,
+                   "newmark: steps per period of the elements' fastest rate where a step is halved (0: --steps-per-period)")
       ->type_name("INT")
       ->capture_default_str();
   simulate->add_option("--max-periods", options.max_periods, "period budget")->type_name("INT")->capture_default_str();

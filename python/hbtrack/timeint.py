@@ -8,7 +8,7 @@ from .starts import start_state
 
 
 def simulate(case, omega=None, *, start=None, point=None, near_lp=None, distances=(0.2, 0.5, 1, 2, 3, 5), method="newmark",
-             steps_per_period=256, max_periods=2000, record_periods=1, progress=None, **settings):
+             steps_per_period=256, element_steps=0, max_periods=2000, record_periods=1, progress=None, **settings):
     """Time integration to the periodic steady state (``hbtrack simulate``).
 
     Parameters
@@ -34,6 +34,9 @@ def simulate(case, omega=None, *, start=None, point=None, near_lp=None, distance
         HHT-alpha Newmark (stiff contact, default) or adaptive Dormand-Prince 5(4).
     steps_per_period : int, optional
         Newmark's steps per period (default 256; 512 or more near lightly damped resonances).
+    element_steps : int, optional
+        Newmark: a step is halved while the elements' fastest rate has fewer steps per its
+        period than this (``--element-steps``; 0, the default: `steps_per_period`).
     max_periods : int, optional
         Give up after this many periods (summary["converged"] False).
     record_periods : int, optional
@@ -66,7 +69,7 @@ def simulate(case, omega=None, *, start=None, point=None, near_lp=None, distance
     core = require_core()
     progress = checked_progress(progress)
     if near_lp is not None:
-        return _simulate_near_fold(core, case, start, point, omega, near_lp, distances, method, steps_per_period,
+        return _simulate_near_fold(core, case, start, point, omega, near_lp, distances, method, (steps_per_period, element_steps),
                                    core.SteadyStateOptions(max_periods=max_periods, record_periods=record_periods), progress, settings)
     if (start is None) != (point is None):
         raise ValueError("point: needs start" if start is None else "start: needs point")
@@ -78,13 +81,15 @@ def simulate(case, omega=None, *, start=None, point=None, near_lp=None, distance
     # As simulate --from: the start's parameters and harmonic balance, then the caller's.
     run_case = case_with(case, from_result + settings_overrides(**settings), "simulate")
     steady = core.SteadyStateOptions(max_periods=max_periods, record_periods=record_periods)
-    result = core.simulate(run_case, 0.0 if omega is None else float(omega), state, method, steps_per_period, steady, progress)
+    result = core.simulate(run_case, 0.0 if omega is None else float(omega), state, method, steps_per_period, element_steps, steady,
+                           progress)
     result["kind"] = "simulate"
     return result
 
 
-def _simulate_near_fold(core, case, start, point, omega, near_lp, distances, method, steps_per_period, steady, progress, settings):
-    """simulate(near_lp=K): the checks of its arguments, then the search in the core."""
+def _simulate_near_fold(core, case, start, point, omega, near_lp, distances, method, steps, steady, progress, settings):
+    """simulate(near_lp=K): the checks of its arguments, then the search in the core; steps is
+    (steps_per_period, element_steps)."""
     if not isinstance(start, dict) or point is not None or omega is not None:
         raise ValueError("near_lp: needs start (an NFRC result), and neither point nor omega (it chooses its own points)")
     if isinstance(near_lp, bool) or not isinstance(near_lp, (int, np.integer)) or near_lp < 1:
@@ -102,6 +107,6 @@ def _simulate_near_fold(core, case, start, point, omega, near_lp, distances, met
     amplitude = np.asarray(branch[f"h1_{names[0]}"], dtype=float) if names else np.zeros(len(states))
     stable = [bool(v == 1) for v in branch["stable"]]
     result = core.simulate_near_fold(run_case, states, stable, amplitude, start["summary"].get("special_points", []), int(near_lp),
-                                     list(fractions), method, steps_per_period, steady, progress)
+                                     list(fractions), method, *steps, steady, progress)
     result["kind"] = "simulate"
     return result

@@ -19,7 +19,7 @@ namespace {
 // start: optional HBM state [omega, x0, x1, ...] (a row of a result's states); omega <= 0 takes
 // the start's frequency; progress(fraction of max_periods, period, time at its end).
 py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eigen::VectorXd>& start, IntegrationMethod method,
-                  int steps_per_period, const SteadyStateOptions& steady, const py::object& progress) {
+                  int steps_per_period, int element_steps, const SteadyStateOptions& steady, const py::object& progress) {
   runs::SimulateOptions options;
   if (omega > 0) options.omega = omega;
   if (start) {
@@ -28,6 +28,7 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
   }
   options.method = method;
   options.steps_per_period = steps_per_period;
+  options.element_steps = element_steps;
   options.steady = steady;
   options.steps_name = "steps_per_period";
   return run_in_memory(progress, [&](runs::ResultSink& sink, runs::RunMonitor& monitor) { runs::simulate(c, options, sink, monitor); });
@@ -37,7 +38,7 @@ py::dict simulate(const CaseDefinition& c, double omega, const std::optional<Eig
 // output's first harmonic per row, its special_points; the runs as `simulate --near-lp`.
 py::dict simulate_near_fold(const CaseDefinition& c, const Eigen::MatrixXd& states, const std::vector<bool>& stable,
                             const Eigen::VectorXd& amplitude, const py::handle& special_points, long k,
-                            const std::vector<double>& distances, IntegrationMethod method, int steps_per_period,
+                            const std::vector<double>& distances, IntegrationMethod method, int steps_per_period, int element_steps,
                             const SteadyStateOptions& steady, const py::object& progress) {
   const nlohmann::json points = from_python(special_points);
   const nlohmann::json& lp = points[runs::special_point_index(points, SpecialPointType::limit_point, k, {"near_lp", "start"})];
@@ -48,6 +49,7 @@ py::dict simulate_near_fold(const CaseDefinition& c, const Eigen::MatrixXd& stat
   runs::FoldSearchOptions o;
   o.simulate.method = method;
   o.simulate.steps_per_period = steps_per_period;
+  o.simulate.element_steps = element_steps;
   o.simulate.steady = steady;
   o.simulate.steps_name = "steps_per_period";
   o.lp = static_cast<int>(k);
@@ -64,10 +66,12 @@ py::dict simulate_near_fold(const CaseDefinition& c, const Eigen::MatrixXd& stat
 
 void bind_timeint(py::module_& m) {
   m.def("simulate", &simulate, py::arg("case"), py::arg("omega"), py::arg("start"), py::arg("method"), py::arg("steps_per_period"),
-        py::arg("steady"), py::arg("progress") = py::none(), "time integration to the periodic steady state: {signals, summary}");
+        py::arg("element_steps"), py::arg("steady"), py::arg("progress") = py::none(),
+        "time integration to the periodic steady state: {signals, summary}");
   m.def("simulate_near_fold", &simulate_near_fold, py::arg("case"), py::arg("states"), py::arg("stable"), py::arg("amplitude"),
-        py::arg("special_points"), py::arg("k"), py::arg("distances"), py::arg("method"), py::arg("steps_per_period"), py::arg("steady"),
-        py::arg("progress") = py::none(), "time integrations next to limit point k until one holds the orbit: {summary, branches}");
+        py::arg("special_points"), py::arg("k"), py::arg("distances"), py::arg("method"), py::arg("steps_per_period"),
+        py::arg("element_steps"), py::arg("steady"), py::arg("progress") = py::none(),
+        "time integrations next to limit point k until one holds the orbit: {summary, branches}");
 }
 
 }  // namespace hbtrack::python

@@ -360,12 +360,16 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
   if (!st) return;
   in.table(*st, "study");
   in.check_keys(*st, "study",
-                {"track", "backbone", "switch", "max_points", "simulate_periods", "max_added_curves", "track_ns_pd", "convergence"});
+                {"track", "backbone", "switch", "max_points", "simulate_periods", "simulate_element_steps", "max_added_curves",
+                 "track_ns_pd", "convergence"});
   StudySettings& study = c.study;
   study.max_points = in.integer_or(*st, "max_points", "study.max_points", study.max_points);
   if (study.max_points < 2) in.fail(&st->at("max_points"), "study.max_points", "must be >= 2");
   study.simulate_periods = in.integer_or(*st, "simulate_periods", "study.simulate_periods", study.simulate_periods);
   if (study.simulate_periods < 0) in.fail(&st->at("simulate_periods"), "study.simulate_periods", "must be >= 0");
+  study.simulate_element_steps = in.integer_or(*st, "simulate_element_steps", "study.simulate_element_steps", study.simulate_element_steps);
+  if (study.simulate_element_steps < 0)
+    in.fail(&st->at("simulate_element_steps"), "study.simulate_element_steps", "must be >= 0 (0: the steps per period)");
   study.max_added_curves = in.integer_or(*st, "max_added_curves", "study.max_added_curves", study.max_added_curves);
   if (study.max_added_curves < 0 || study.max_added_curves > 100)
     in.fail(&st->at("max_added_curves"), "study.max_added_curves", "must be in [0, 100]");

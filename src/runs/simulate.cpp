@@ -22,7 +22,11 @@ std::unique_ptr<TimeIntegrator> make_integrator(EquationOfMotion& equation, cons
   if (o.method == IntegrationMethod::newmark) {
     NewmarkOptions no;
     no.steps_per_period = o.steps_per_period;
-    settings = {{"alpha", no.alpha}, {"newton_tolerance", no.newton_tolerance}, {"max_newton_iterations", no.max_newton_iterations}};
+    no.element_steps = o.element_steps;
+    settings = {{"alpha", no.alpha},
+                {"newton_tolerance", no.newton_tolerance},
+                {"max_newton_iterations", no.max_newton_iterations},
+                {"element_steps", no.element_steps > 0 ? no.element_steps : no.steps_per_period}};
     return std::make_unique<NewmarkIntegrator>(equation, no);
   }
   DormandPrinceOptions dp;

@@ -16,6 +16,7 @@ void NewmarkOptions::validate() const {
   if (!(newton_tolerance > 0) || !std::isfinite(newton_tolerance)) throw std::invalid_argument("newton_tolerance: must be > 0");
   if (max_newton_iterations < 1) throw std::invalid_argument("max_newton_iterations: must be >= 1");
   if (max_refinements < 0 || max_refinements > 30) throw std::invalid_argument("max_refinements: must lie in [0, 30]");
+  if (element_steps < 0) throw std::invalid_argument("element_steps: must be >= 0 (0: steps_per_period)");
 }
 
 NewmarkIntegrator::NewmarkIntegrator(EquationOfMotion& equation, NewmarkOptions options)
@@ -77,8 +78,10 @@ double NewmarkIntegrator::element_rate(const Eigen::MatrixXd& df_dx, const Eigen
 
 bool NewmarkIntegrator::needs_refinement(double h) {
   if (!equation_.has_nonlinear_elements()) return false;
-  // The elements get the resolution the forcing has: omega_t h <= omega h_base = 2 pi / N.
-  const double limit = equation_.omega() * equation_.period() / options_.steps_per_period;
+  // The elements get the resolution the forcing has: omega_t h <= omega h_base = 2 pi / N (or
+  // the resolution asked of them, 2 pi / element_steps).
+  const int resolution = options_.element_steps > 0 ? options_.element_steps : options_.steps_per_period;
+  const double limit = equation_.omega() * equation_.period() / resolution;
   if (std::max(element_rate(df_dx_at_state_, df_dv_at_state_), element_rate(df_dx_, df_dv_)) * h > limit) return true;
   // A contact shorter than the step leaves both ends open: look at the middle too (cubic
   // Hermite interpolation of the step).

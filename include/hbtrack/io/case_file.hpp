@@ -41,6 +41,9 @@ struct StudySettings {
   bool switch_branches = false;  // follow the branches born at the nominal NFRC's BP and PD points
   int max_points = 400;          // per leg of a tracking curve
   int simulate_periods = 60;     // periods of the time-integration check, 0 for none
+  // Its HHT steps per period of the elements' fastest rate (`simulate --element-steps`; 0: the
+  // steps per period, the elements resolved as finely as the forcing).
+  int simulate_element_steps = 0;
   // A validation NFRC's limit point on no tracking curve starts one of its own: at most this many
   // such curves per tracked parameter (0: none).
   int max_added_curves = 4;

@@ -22,6 +22,7 @@ struct SimulateOptions {
   std::optional<StartPoint> start;  // by default the motion starts from rest
   IntegrationMethod method = IntegrationMethod::newmark;
   int steps_per_period = 256;                        // newmark: time steps; dopri5: output samples (the step adapts)
+  int element_steps = 0;                             // newmark: NewmarkOptions::element_steps (0: steps_per_period)
   SteadyStateOptions steady;                         // its harmonics are the case's
   nlohmann::json origin = nlohmann::json::object();  // fields added to options.simulation (from, point)
   std::string steps_name = "--steps-per-period";     // the caller's name of steps_per_period, in messages

@@ -18,7 +18,7 @@
 // impacts). With a fixed step the two-dof contact example with k = 500 never settles to a
 // periodic motion and with k = 50000 it blows up (docs/time-integration.md). So a step is halved,
 // up to max_refinements times, while an element's tangent is not resolved as finely as the
-// forcing, omega_t h > 2 pi / steps_per_period with omega_t = sqrt(|df/dx| / m) or |df/dv| / m,
+// forcing, omega_t h > 2 pi / steps_per_period (element_steps if set) with omega_t = sqrt(|df/dx| / m) or |df/dv| / m,
 // checked at the start, end and middle of the step: contact phases get small steps, the rest of
 // the period keeps the base step, and the samples stay on the base grid.
 // When to use which integrator: docs/time-integration.md.
@@ -35,7 +35,11 @@ struct NewmarkOptions {
   double newton_tolerance = 1e-10;  // ||residual||_inf <= tolerance * the largest force term
   int max_newton_iterations = 30;
   int max_refinements = 10;  // halvings of a step where the elements are stiff (0: fixed step)
-  void validate() const;     // throws std::invalid_argument naming the field
+  // Steps per period of the elements' fastest rate omega_t that the halvings aim for: a step
+  // is halved while omega_t h > 2 pi / element_steps. 0: steps_per_period (the elements
+  // resolved as finely as the forcing).
+  int element_steps = 0;
+  void validate() const;  // throws std::invalid_argument naming the field
 };
 
 class NewmarkIntegrator final : public TimeIntegrator {
