@@ -41,34 +41,45 @@ TEST(StudyComparisons, ALimitPointBeyondTheCaseRangeIsMatchedWithTheCrossingLoca
   EXPECT_EQ(far["lps_off_the_curves"], 1);
 }
 
-TEST(StudyComparisons, TheIsolaPointToSimulateIsTheMiddleOfTheStableStretchOfItsLargestResponse) {
-  // Rows: omega, max_le, stable. The largest stable output (row 0) is 5e-4 from the fold at 1000;
-  // row 2 is the largest at least kSimulationDetuning (2e-3) from it, in the stable stretch of rows
-  // 2-5 (997 to 985 rad/s), whose middle in omega is row 4 (5 rad/s from 985, 7 from 997).
+TEST(StudyComparisons, TheIsolaPointToSimulateIsTheMiddleOfTheWidestStableStretch) {
+  // Two isolas. Rows: omega, max_le, stable. The first's largest response (rows 0-1, 5.0) is on a
+  // stretch 0.1 % wide; its stretch of rows 3-6 (997 to 985 rad/s) has its middle at row 5 (990:
+  // 5 rad/s from 985, 7 from 997, margin 5/990). The second isola's only stretch is 0.4 % wide
+  // (margin 2/1000): the first's wide stretch wins, although the second's response (6.0) and the
+  // first's narrow stretch's are larger. (The former rule, the stretch of the largest response,
+  // chose a stretch narrower than the full model's fold shift on rotor 67, which left the orbit.)
   const fs::path dir = fs::temp_directory_path() / ("hbtrack_isola_point_" + std::to_string(getpid()));
   fs::create_directories(dir / "isolas_mu_1" / "isola_1");
+  fs::create_directories(dir / "isolas_mu_2" / "isola_1");
   std::ofstream(dir / "isolas_mu_1" / "isola_1" / "branch.csv") << "omega,max_le,stable\n"
                                                                    "999.5,5.0,1\n"
+                                                                   "1000.5,4.9,1\n"
                                                                    "995.0,4.8,0\n"
                                                                    "997.0,4.5,1\n"
                                                                    "993.0,4.3,1\n"
                                                                    "990.0,4.0,1\n"
                                                                    "985.0,3.8,1\n"
                                                                    "984.0,3.0,0\n";
-  auto tracking_with = [](const json& special_points) {
-    return json::array(
-        {{{"validations",
-           json::array({{{"isola_branches", json::array({{{"folder", "isolas_mu_1/isola_1"}, {"special_points", special_points}}})}}})}}});
-  };
-  const auto middle =
-      hbtrack::cli::stable_isola_point(dir.string(), tracking_with(json::array({{{"type", "LP"}, {"omega", 1000.0}}})), "le");
+  std::ofstream(dir / "isolas_mu_2" / "isola_1" / "branch.csv") << "omega,max_le,stable\n"
+                                                                   "997.0,5.5,0\n"
+                                                                   "998.0,6.0,1\n"
+                                                                   "1000.0,6.0,1\n"
+                                                                   "1002.0,6.0,1\n"
+                                                                   "1003.0,5.0,0\n";
+  auto isola = [](const std::string& folder) { return json{{"folder", folder}, {"special_points", json::array()}}; };
+  const json tracking = json::array(
+      {{{"validations", json::array({{{"isola_branches", json::array({isola("isolas_mu_1/isola_1"), isola("isolas_mu_2/isola_1")})}}})}}});
+  const auto middle = hbtrack::cli::stable_isola_point(dir.string(), tracking, "le");
   ASSERT_TRUE(middle.has_value());
   EXPECT_EQ(middle->folder, "isolas_mu_1/isola_1");
-  EXPECT_EQ(middle->point, 4);
-  // An NS point is no fold: row 0 is then allowed, a stretch of one row.
-  const auto ns = hbtrack::cli::stable_isola_point(dir.string(), tracking_with(json::array({{{"type", "NS"}, {"omega", 1000.0}}})), "le");
-  ASSERT_TRUE(ns.has_value());
-  EXPECT_EQ(ns->point, 0);
+  EXPECT_EQ(middle->point, 5);
+  EXPECT_NEAR(middle->margin, 5.0 / 990.0, 1e-15);
+  // Without the first isola, the second's stretch, at its middle (row 2, margin 2/1000).
+  const json second = json::array({{{"validations", json::array({{{"isola_branches", json::array({isola("isolas_mu_2/isola_1")})}}})}}});
+  const auto other = hbtrack::cli::stable_isola_point(dir.string(), second, "le");
+  ASSERT_TRUE(other.has_value());
+  EXPECT_EQ(other->point, 2);
+  EXPECT_NEAR(other->margin, 2.0 / 1000.0, 1e-15);
   fs::remove_all(dir);
 }
 

@@ -101,10 +101,18 @@ std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, cons
         const auto header_end = b.header.end();
         if (std::find(b.header.begin(), header_end, "stable") == header_end) continue;
         const auto stable = static_cast<size_t>(b.column("stable"));
-        const json folds = isola.value("special_points", json::array());
-        for (size_t i = 0; i < b.rows.size(); ++i)
-          if (b.rows[i][stable] == 1.0 && !near_a_limit_point(b.rows[i][0], folds) && b.rows[i][column] > best_output)
-            best_output = b.rows[i][column], best = BranchPoint{folder, static_cast<long>(middle_of_stable_stretch(b, stable, i))};
+        for (size_t lo = 0; lo < b.rows.size(); ++lo) {
+          if (b.rows[lo][stable] != 1.0) continue;
+          size_t hi = lo;
+          double output = b.rows[lo][column];
+          while (hi + 1 < b.rows.size() && b.rows[hi + 1][stable] == 1.0) output = std::max(output, b.rows[++hi][column]);
+          const size_t middle = middle_of_stable_stretch(b, stable, lo);
+          const double omega = b.rows[middle][0];
+          const double margin = std::min(std::abs(omega - b.rows[lo][0]), std::abs(omega - b.rows[hi][0])) / std::abs(omega);
+          if (!best || margin > best->margin || (margin == best->margin && output > best_output))
+            best = BranchPoint{folder, static_cast<long>(middle), margin}, best_output = output;
+          lo = hi;
+        }
       }
   return best;
 }

@@ -22,14 +22,17 @@ nlohmann::json compare_limit_points(const nlohmann::json& nominal, const nlohman
 nlohmann::json compare_extrema(const nlohmann::json& extrema, const std::vector<TrackingCurve>& refined, const std::string& first_output);
 
 // The point a time integration checks on the isolated branches the study computed (folders
-// relative to the study's): in the stable stretch that holds the largest first output (at least
-// kSimulationDetuning from a limit point), the point farthest in omega from the stretch's ends.
-// The largest output lies next to the isola's fold, and the fold moves with the harmonics by more
-// than kSimulationDetuning (rotor 67: +0.49 % from H = 10 to 15): points 0.06 % and 0.2 % from it
-// left the orbit in time integration.
+// relative to the study's): the middle in omega of the widest stable stretch (relative to its
+// omega; the larger first output between equal ones), the point farthest from where the HBM's
+// verdict changes. The full model's folds lie 0.6 to 2.3 % from the HBM's on rotor 67
+// (docs/rotor67.md): its points 0.06 % and 0.2 % from an isola's fold left the orbit, and so did
+// the middle of a stretch 0.5 % wide (reversed sense, mu = 0.1136), where the stretch of the
+// largest response was chosen. `margin` is the point's distance from its stretch's nearer end,
+// relative to its omega.
 struct BranchPoint {
   std::string folder;
   long point = -1;
+  double margin = 0;
 };
 std::optional<BranchPoint> stable_isola_point(const std::string& study_dir, const nlohmann::json& tracking,
                                               const std::string& first_output);

@@ -185,6 +185,15 @@ void fold_search_lines(std::ostream& out, const json& s) {
         << " % off at the end): the comparison below is the last start's.\n\n";
 }
 
+// HBM against simulation, output by output, as compare_with_simulation wrote them.
+void comparison_table(std::ostream& out, const json& m) {
+  out << "\n\n| quantity | HBM | simulation | difference |\n|---|---|---|---|\n";
+  for (const auto& o : m["outputs"])
+    out << "| " << o.value("name", "") << " | " << num(o.value("hbm", 0.0), "%.5g") << " | " << num(o.value("simulation", 0.0), "%.5g")
+        << " | " << num(100 * o.value("relative_difference", 0.0), "%+.2f") << " % |\n";
+  out << "\n";
+}
+
 void simulation_section(std::ostream& out, const json& s) {
   if (!s.contains("simulation")) return;
   const json& m = s["simulation"];
@@ -199,11 +208,22 @@ void simulation_section(std::ostream& out, const json& s) {
         << "; a lightly damped resonance forgets its start slowly): the differences below include what is left of the "
            "transient"
         << (m.contains("fold_search") ? "." : ", and the step's exit code is 1.");
-  out << "\n\n| quantity | HBM | simulation | difference |\n|---|---|---|---|\n";
-  for (const auto& o : m["outputs"])
-    out << "| " << o.value("name", "") << " | " << num(o.value("hbm", 0.0), "%.5g") << " | " << num(o.value("simulation", 0.0), "%.5g")
-        << " | " << num(100 * o.value("relative_difference", 0.0), "%+.2f") << " % |\n";
-  out << "\n";
+  comparison_table(out, m);
+}
+
+// The isolas' stable point integrated in time, and how far it lies from where Hill's verdict changes.
+void isola_simulation_section(std::ostream& out, const json& s) {
+  if (!s.contains("isola_simulation")) return;
+  const json& m = s["isola_simulation"];
+  const std::string folder = m.value("folder", "");
+  out << "## Time integration on an isolated branch\n\nFrom point " << m.value("point", 0) << " of [" << folder << "](" << folder
+      << "/) (omega = " << num(m.value("omega", 0.0), "%.2f") << " rad/s), the middle of the isolas' widest stable stretch, "
+      << num(100 * m.value("stable_margin", 0.0), "%.2f") << " % in omega from its nearer end; " << m.value("periods", 0) << " periods in "
+      << num(m.value("wall_s", 0.0), "%.1f") << " s ([simulate_isola/](simulate_isola/)).";
+  if (!m.value("converged", false))
+    out << " Not periodic to `simulate`'s criterion within these periods (last change " << num(m.value("last_change", 0.0), "%.1e")
+        << "): the differences include what is left of the transient.";
+  comparison_table(out, m);
 }
 
 }  // namespace
@@ -226,6 +246,7 @@ void write_study_report(const std::string& dir, const json& s) {
   branches_section(out, s);
   tracking_section(out, s);
   simulation_section(out, s);
+  isola_simulation_section(out, s);
   out << "## Steps\n\n| folder | exit code | time (s) |\n|---|---|---|\n";
   for (const auto& st : s["steps"])
     out << "| " << st.value("folder", "") << " | " << st.value("exit_code", 0) << " | " << num(st.value("wall_s", 0.0), "%.1f") << " |\n";

@@ -182,6 +182,7 @@ bool Study::isola_simulation() {
   if (!run_steps({{"simulate_isola", args, false}})) return false;
   summary_["isola_simulation"] = compare_with_simulation(from, at->point, read_summary(dir_ + "/simulate_isola"), c_.outputs);
   summary_["isola_simulation"]["folder"] = at->folder;
+  summary_["isola_simulation"]["stable_margin"] = at->margin;
   save();
   return true;
 }
