@@ -18,11 +18,12 @@ MODEL_LENGTH = "model length unit"
 # label is a name and a unit: what the amplitude scales is the caption's to say.
 PARAMETER_UNITS = {"amplitude": "-", "mu": "-", "clearance": MODEL_LENGTH}
 # Marker of each special point type (LP, BP, PD, NS on branches; min, max of the parameter on
-# tracking curves) and its legend text: every figure marks a type the same way, and a legend
-# entry per type names the markers (no unexplained dot).
+# tracking curves; GR, grazing, in the exact-shooting references of tests/data/shooting) and its
+# legend text: every figure marks a type the same way, and a legend entry per type names the
+# markers (no unexplained dot).
 SPECIAL_MARKERS = {"LP": ("o", "LP (fold)"), "BP": ("s", "BP (branch point)"), "PD": ("D", "PD (period doubling)"),
                    "NS": ("P", "NS (Neimark-Sacker)"), "min": ("v", "min of the tracked parameter"),
-                   "max": ("^", "max of the tracked parameter")}
+                   "max": ("^", "max of the tracked parameter"), "GR": ("x", "GR (grazing: a contact starts or ends)")}
 
 
 def length_label(what, unit=None):

@@ -430,50 +430,93 @@ def write_outputs(name, system, points, specials, folder, figure):
     text = re.sub(r"\[\s+([^\[\]{}]*?)\s+\]", lambda m: "[" + re.sub(r"\s+", " ", m.group(1)) + "]", text)
     with open(os.path.join(folder, "special_points.json"), "w") as f:
         f.write(text + "\n")
-    plot(name, system, points, specials, figure)
+    plot(name, folder, figure)
 
 
-def plot(name, system, points, specials, figure):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    dofs, zoom = sorted({0, system.n - 1}), ZOOM.get(name)
-    if zoom and not any("special" in p and zoom[0] <= p["u"][-1] <= zoom[1] for p in points):
+# What each case's figure says it shows (its title), and a name per dof: masses numbered from 1
+# in the figures (the CSV's q0, q1, ... are 0-based).
+TITLES = {"nlvib_two_dof": "NLvib's two-DOF oscillator, unilateral spring on mass 1",
+          "two_dof_contact": "examples/two_dof_contact: two masses, unilateral spring on mass 2",
+          "chain_2": "Chain of 2 masses, unilateral spring on the tip (mass 2)",
+          "chain_8": "Chain of 8 masses, unilateral spring on the tip (mass 8)"}
+
+
+def dof_description(model, d):
+    """"mass 1 (forced)", "mass 2 (unilateral spring, gap 0.5)": what a panel shows."""
+    roles = (["forced"] if model["force_cos"][d] else []) + \
+            ([f"unilateral spring, gap {model['gap']:g}"] if d == model["contact_dof"] else [])
+    return f"mass {d + 1}" + (f" ({', '.join(roles)})" if roles else "")
+
+
+def plot(name, folder, figure):
+    """The figure of one case, from its stored branch.csv and special_points.json (so that it can
+    be redrawn without the continuation: --redraw): per drawn dof (the forced one and the
+    contact one) the max over a period against w, stable solid, unstable dashed (hbtrack's
+    figure_style), every located special point marked once per panel by type, the legend naming
+    each type and its count; a right-hand column zooms on ZOOM[name] (shaded on the left)."""
+    sys.path.insert(0, os.path.join(ROOT, "python"))  # hbtrack's plotting needs no build
+    from hbtrack.figure_style import (OMEGA_LABEL, SPECIAL_MARKERS, _plot_split, _stable_masks, length_label,
+                                      marker_legend, plt, stability_legend)
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    with open(os.path.join(folder, "special_points.json")) as f:
+        stored = json.load(f)
+    model, specials = stored["model"], stored["special_points"]
+    with open(os.path.join(folder, "branch.csv")) as f:
+        head = f.readline().strip().split(",")
+        rows = [line.rstrip("\n").split(",") for line in f]
+    column = {h: k for k, h in enumerate(head)}
+    n = len(model["M"])
+    branch = {"omega": np.array([float(r[column["w"]]) for r in rows]),
+              "stable": np.array([int(r[column["stable"]]) for r in rows])}
+    stable, unstable = _stable_masks(branch)
+    forced = [d for d in range(n) if model["force_cos"][d]]
+    dofs = sorted(set(forced[:1]) | {model["contact_dof"]})
+    zoom = ZOOM.get(name)
+    if zoom and not any(zoom[0] <= sp["w"] <= zoom[1] for sp in specials):
         zoom = None
     cols = 1 if zoom is None else 2
-    fig, axes = plt.subplots(len(dofs), cols, figsize=(6.5 * cols, 2.6 * len(dofs) + 0.6), squeeze=False)
-    w = np.array([p["u"][-1] for p in points])
-    stable = np.array([p["stable"] for p in points])
-    both = stable[:-1] & stable[1:]  # a segment between two points is stable if both ends are
-    marks = {"LP": ("o", "k"), "BP": ("s", "m"), "PD": ("^", "C1"), "NS": ("D", "C2"), "GR": ("x", "0.4")}
+    fig, axes = plt.subplots(len(dofs), cols, figsize=(6.2 * cols, 2.9 * len(dofs) + 0.8), squeeze=False)
+    w = branch["omega"]
+    counts = {t: sum(sp["type"] == t for sp in specials) for t in SPECIAL_MARKERS}
     for row, d in zip(axes, dofs):
-        amp = np.array([p["extremes"][d][0] for p in points])
+        amp = np.array([float(r[column[f"q{d}_max"]]) for r in rows])
         for col, ax in enumerate(row):
-            for flag, style, color in ((True, "-", "C0"), (False, "--", "C3")):
-                keep = np.append(both == flag, False) | np.insert(both == flag, 0, False)
-                ax.plot(w, np.where(keep, amp, np.nan), style, color=color, lw=1.3,
-                        label="stable" if flag else "unstable")
-            for t, (m, c) in marks.items():
-                sel = [sp for sp in specials if sp["type"] == t]
-                if sel:
-                    ax.plot([sp["w"] for sp in sel], [sp["max_q"][d] for sp in sel], m, color=c,
-                            mfc="none", label=t, ms=6 - 2 * col)
-            if d == system.i:
-                ax.axhline(system.gap, color="0.7", lw=0.8, ls=":")
-            if col == 1:  # the zoom: the part of the branch from its first to its last special point
-                marked = [k for k, p in enumerate(points) if "special" in p and zoom[0] <= w[k] <= zoom[1]]
-                part = slice(max(marked[0] - 20, 0), marked[-1] + 21)
+            _plot_split(ax, w, amp, stable, unstable, "C0", None)
+            for sp in specials:
+                # LP larger, under the others: a PD or GR on a fold (nlvib, chain_8) shows inside its ring
+                ax.plot(sp["w"], sp["max_q"][d], SPECIAL_MARKERS[sp["type"]][0], color="k", mfc="w", mew=1.0,
+                        ms=(9 if sp["type"] == "LP" else 6) - col, ls="none", zorder=4 if sp["type"] == "LP" else 5)
+            if d == model["contact_dof"]:
+                ax.axhline(model["gap"], color="0.6", lw=0.8, ls=":")
+            if col == 0 and zoom:
+                ax.axvspan(*zoom, color="0.9", zorder=0)
+            if col == 1:  # the zoom: y fitted to the stretch of branch from its first to its last special point there
+                marked = [k for k, r in enumerate(rows) if r[column["special"]] and zoom[0] <= w[k] <= zoom[1]]
+                pad = max(3, round(20 * len(rows) / stored["points_computed"]))  # rows, about 20 continuation points
+                part = slice(max(marked[0] - pad, 0), marked[-1] + pad + 1)
                 inside = amp[part][(w[part] >= zoom[0]) & (w[part] <= zoom[1])]
                 pad = 0.05 * np.ptp(inside)
-                ax.set(xlim=zoom, ylim=(inside.min() - pad, inside.max() + pad), title="zoom")
-            ax.set_ylabel(f"max q{d}")
-            ax.set_xlabel("w")
+                ax.set(xlim=zoom, ylim=(inside.min() - pad, inside.max() + pad))
+            ax.set_title(dof_description(model, d) + (", zoom" if col == 1 else ""), fontsize=9)
+            ax.set_ylabel(length_label("max over a period"), fontsize=9)
+            ax.set_xlabel(OMEGA_LABEL)
             ax.grid(alpha=0.3)
-    axes[0, 0].legend(fontsize=8, ncol=4)
-    fig.suptitle(f"{name}: exact shooting (solid blue stable, dashed red unstable)", fontsize=10)
-    fig.tight_layout()
+    handles = stability_legend([branch])
+    for h in marker_legend({t for t, c in counts.items() if c}):
+        kind = next(t for t, (_, text) in SPECIAL_MARKERS.items() if text == h.get_label())
+        h.set_label(f"{h.get_label()}: {counts[kind]}")
+        handles.append(h)
+    handles.append(Line2D([], [], color="0.6", lw=0.8, ls=":", label="gap"))
+    if zoom:
+        handles.append(Patch(color="0.9", label="window zoomed on the right"))
+    height, legend_rows = fig.get_figheight(), -(-len(handles) // 4)  # inches; the legend, 4 columns
+    fig.suptitle(f"{TITLES.get(name, name)}: exact shooting", fontsize=10, y=1 - 0.08 / height, va="top")
+    fig.legend(handles=handles, fontsize=8, ncol=min(len(handles), 4), loc="upper center",
+               bbox_to_anchor=(0.5, 1 - 0.3 / height), frameon=False)
+    fig.tight_layout(rect=(0, 0, 1, 1 - (0.35 + 0.2 * legend_rows) / height))
     os.makedirs(os.path.dirname(figure), exist_ok=True)
-    fig.savefig(figure, dpi=100)
+    fig.savefig(figure, dpi=110)  # PNG only: the pages show PNGs
     plt.close(fig)
 
 
@@ -482,9 +525,14 @@ def main(argv=None):
     parser.add_argument("cases", nargs="+", help=f"{', '.join(CASES)} or all")
     parser.add_argument("--out", default=os.path.join(ROOT, "tests", "data", "shooting"))
     parser.add_argument("--figures", default=os.path.join(ROOT, "docs", "figures"))
+    parser.add_argument("--redraw", action="store_true",
+                        help="only redraw the figures from the stored branch.csv and special_points.json (seconds)")
     args = parser.parse_args(argv)
     names = list(CASES) if args.cases == ["all"] else args.cases
     for name in names:
+        if args.redraw:
+            plot(name, os.path.join(args.out, name), os.path.join(args.figures, f"shooting_{name}.png"))
+            continue
         system, w_start, w_end, ds_max = CASES[name]()
         print(f"{name}: w {w_start:g} -> {w_end:g}", flush=True)
         t0 = time.time()
