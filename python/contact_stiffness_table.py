@@ -2,7 +2,8 @@
 """The rotor 67 NFRC against the contact stiffness (scripts/rotor67-contact-stiffness.sh): one
 Markdown table row per run folder <sense>-k<k>[-h15] of OUT, from its summary.json and
 branch.csv; with --figure, the leading edge's radial ||r(t)||_inf against omega,
-one panel per sense, one line per stiffness (H = 10), stable solid, unstable dashed.
+one panel per sense, one line per stiffness (H = 10), stable solid, unstable dashed, LP and NS
+marked (hbtrack.figure_style; run from the repository, python/hbtrack needs no build to plot).
 Usage: contact_stiffness_table.py OUT [--figure PNG]"""
 import csv
 import json
@@ -43,32 +44,43 @@ def row(folder):
 
 
 def figure(folders, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    """One panel per sense, one curve per stiffness (H = 10): ||le(t)||_inf in mm, with hbtrack's
+    figure style (stable solid, unstable dashed, every LP and NS of every branch marked by type,
+    a legend entry per type) and the output named by its description in the case."""
+    from hbtrack.branch_figures import NORM_LABEL, norm_of
+    from hbtrack.figure_style import (OMEGA_LABEL, SPECIAL_MARKERS, _plot_split, _stable_masks, length_label,
+                                      marker_legend, plt, stability_legend)
+    from hbtrack.output_descriptions import output_descriptions
+    from hbtrack.results import read_result
     senses = [s for s in ("geometry", "reversed", "frictionless") if any(d.name.startswith(s + "-") for d in folders)]
-    fig, axes = plt.subplots(1, len(senses), figsize=(5 * len(senses), 4), sharey=True, squeeze=False)
+    fig, axes = plt.subplots(1, len(senses), figsize=(5 * len(senses), 4.6), sharey=True, squeeze=False)
     colours = {"1e8": "C0", "1e9": "C1", "1e10": "C3", "1e11": "C4"}
+    description = None
     for ax, sense in zip(axes[0], senses):
+        branches, types = [], set()
         for k, colour in colours.items():
             folder = next((d for d in folders if d.name == f"{sense}-k{k}"), None)
             if folder is None:
                 continue
-            with open(folder / "branch.csv", newline="") as f:
-                rows = list(csv.DictReader(f))
-            omega = [float(r["omega"]) for r in rows]
-            peak = [1e3 * peak_le(r) for r in rows]
-            stable = [r["stable"] == "1" for r in rows]
-            label = f"k = {k} N/m"
-            for i in range(1, len(rows)):  # segment by segment: solid where both ends are stable
-                ax.plot(omega[i - 1:i + 1], peak[i - 1:i + 1], color=colour, lw=1.2,
-                        ls="-" if stable[i - 1] and stable[i] else "--", label=label if i == 1 else None)
-        ax.set_title({"geometry": "sense of the geometry", "reversed": "friction sense reversed",
-                      "frictionless": "nearly frictionless (mu = 1e-4)"}[sense])
-        ax.set_xlabel("omega (rad/s)")
+            result = read_result(str(folder))
+            description = description or output_descriptions(result)["le"]
+            branch = result["branch"]
+            branches.append(branch)
+            stable, unstable = _stable_masks(branch)
+            _plot_split(ax, branch["omega"], 1e3 * norm_of(branch, "le"), stable, unstable, colour,
+                        f"k = {k} N/m", lw=1.2)
+            for sp in result["special_points"]:
+                if sp["type"] in SPECIAL_MARKERS and "max_le" in sp:
+                    types.add(sp["type"])
+                    ax.plot(sp["omega"], 1e3 * float(norm_of(sp, "le")), SPECIAL_MARKERS[sp["type"]][0], color=colour,
+                            mec="k", mew=0.7, ms=5, ls="none", zorder=5)
+        ax.set_title({"geometry": "friction sense of the geometry", "reversed": "friction sense reversed",
+                      "frictionless": r"nearly frictionless (friction coefficient $\mu$ = 1e-4)"}[sense], fontsize=9)
+        ax.set_xlabel(OMEGA_LABEL)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-    axes[0][0].set_ylabel("leading edge, radial: max |r(t)| over a period (mm)")
+        handles, _ = ax.get_legend_handles_labels()
+        ax.legend(handles=handles + stability_legend(branches) + marker_legend(types), fontsize=7)
+    axes[0][0].set_ylabel(length_label(f"{NORM_LABEL}, {description}" if description else NORM_LABEL, "mm"))
     fig.tight_layout()
     fig.savefig(path, dpi=120)
 
