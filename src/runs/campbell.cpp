@@ -90,10 +90,14 @@ RunReport campbell(const CaseDefinition& c, const CampbellOptions& o, ResultSink
   const int count = std::min(o.count, n);
   // A few more modes than reported, so that a mode that comes down from above is followed.
   const int searched = std::min(n, count + 4);
+  // A column per mode: its name, or "mode K" when it has none or another mode has it already
+  // (make-blade names the modes above 1T less surely and may repeat one).
   std::vector<std::string> names;
-  for (int k = 0; k < count; ++k)
-    names.push_back(k < static_cast<int>(o.names.size()) && o.names[static_cast<size_t>(k)] != "?" ? o.names[static_cast<size_t>(k)]
-                                                                                                   : "mode " + std::to_string(k + 1));
+  for (int k = 0; k < count; ++k) {
+    const std::string given = k < static_cast<int>(o.names.size()) ? o.names[static_cast<size_t>(k)] : "";
+    const bool usable = !given.empty() && given != "?" && std::find(names.begin(), names.end(), given) == names.end();
+    names.push_back(usable ? given : "mode " + std::to_string(k + 1));
+  }
 
   std::vector<VectorXd> rows;
   Eigen::MatrixXcd followed;  // the shapes of the followed modes at the previous speed
