@@ -48,6 +48,8 @@ def main():
     else:
         for folder, other in zip(args.also, others):
             other["label"] = os.path.basename(os.path.normpath(folder))
+        if others:  # the main branch named as the others are, by its folder
+            main_result.setdefault("label", os.path.basename(os.path.normpath(args.result_dir)))
         figure = branch_figures.nfrc_figure(main_result, others=others, length_unit=args.units or None, title=args.title,
                                             zoom=None if args.no_zoom else branch_figures.ZOOM_FRACTION, norm=args.norm,
                                             descriptions=parse_labels(args.label))

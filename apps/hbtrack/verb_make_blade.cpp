@@ -136,8 +136,12 @@ int run_make_blade(const MakeBladeOptions& o) {
   write_node_list(o.out_dir + "/boundary.txt", boundary_ids, "tip nodes at mid-thickness, leading edge (n1) to trailing edge (n9)");
   json rotation = nullptr;
   if (o.rotating) {
-    // The generated blades turn about X through the origin (blade_mesh.hpp).
-    const RotationAxis axis;
+    // The generated blades turn about X through the origin (blade_mesh.hpp), in the sense in which
+    // their leading edge leads: G (the only matrix the sense changes) is built for it, so that a
+    // positive [rotation] speed turns the blade the way it runs.
+    const int sense = blade_rotation_sense(*blade);
+    RotationAxis axis;
+    axis.direction = Eigen::Vector3d(sense, 0.0, 0.0);
     RotatingMatrices r;
     try {
       r = assemble_rotating_hex20(blade->grid.mesh(), material, blade->dofs, matrices.stiffness, axis);
@@ -149,7 +153,8 @@ int run_make_blade(const MakeBladeOptions& o) {
     write_matrix_market(o.out_dir + "/G.mtx", r.gyroscopic);
     rotation = {
         {"axis_origin", {0.0, 0.0, 0.0}},
-        {"axis_direction", {1.0, 0.0, 0.0}},
+        {"axis_direction", {double(sense), 0.0, 0.0}},
+        {"sense", "the blade's: its leading edge leads (rotation_sense); G is built for it"},
         {"files", {{"Kg1", "Kg1.mtx"}, {"Mspin", "Mspin.mtx"}, {"G", "G.mtx"}}},
         {"prestress", "linear: K(Omega) = K + Omega^2 (Kg1 - Mspin), Kg1 the stress stiffness of K u1 = f1 (centrifugal load at 1 rad/s)"},
         {"max_static_displacement_at_1_rad_s", r.static_displacement.cwiseAbs().maxCoeff()}};
