@@ -2,7 +2,8 @@
 // M.mtx, K.mtx, nodes.csv, boundary.txt and a summary with its lowest modes named (1B, 2B, 1T,
 // ...). Either the parametric plate (hbtrack/model/blade_generator.hpp) or, with --geometry, a
 // blade meshed from published stream-surface sections (data/rotor67/sections.csv: NASA rotor 67).
-// With --calculix also the same mesh as a CalculiX deck, blade.inp.
+// With --calculix also the same mesh as a CalculiX deck, blade.inp; with --rotating also the
+// matrices of rotation about X (Kg1.mtx, Mspin.mtx, G.mtx: hbtrack/model/rotating_matrices.hpp).
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "hbtrack/model/blade_generator.hpp"
 #include "hbtrack/model/blade_mode_classifier.hpp"
 #include "hbtrack/model/calculix_deck.hpp"
+#include "hbtrack/model/rotating_matrices.hpp"
 #include "hbtrack/model/section_blade.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
 #include "hbtrack/results/results_writer.hpp"
@@ -36,6 +38,7 @@ struct MakeBladeOptions {
   std::string rim_depth;  // m; empty: the section blade's default
   int modes = 6;
   bool calculix = false;  // also write blade.inp
+  bool rotating = false;  // also write Kg1.mtx, Mspin.mtx, G.mtx
   bool quiet = false;
 };
 
@@ -131,6 +134,31 @@ int run_make_blade(const MakeBladeOptions& o) {
   write_matrix_market(o.out_dir + "/K.mtx", matrices.stiffness);
   write_node_table(o.out_dir + "/nodes.csv", free_nodes);
   write_node_list(o.out_dir + "/boundary.txt", boundary_ids, "tip nodes at mid-thickness, leading edge (n1) to trailing edge (n9)");
+  json rotation = nullptr;
+  if (o.rotating) {
+    // The generated blades turn about X through the origin (blade_mesh.hpp), in the sense in which
+    // their leading edge leads: G (the only matrix the sense changes) is built for it, so that a
+    // positive [rotation] speed turns the blade the way it runs.
+    const int sense = blade_rotation_sense(*blade);
+    RotationAxis axis;
+    axis.direction = Eigen::Vector3d(sense, 0.0, 0.0);
+    RotatingMatrices r;
+    try {
+      r = assemble_rotating_hex20(blade->grid.mesh(), material, blade->dofs, matrices.stiffness, axis);
+    } catch (const std::runtime_error& e) {
+      throw RunFailed{std::string("make-blade: ") + e.what()};
+    }
+    write_matrix_market(o.out_dir + "/Kg1.mtx", r.geometric_stiffness);
+    write_matrix_market(o.out_dir + "/Mspin.mtx", r.spin_softening);
+    write_matrix_market(o.out_dir + "/G.mtx", r.gyroscopic);
+    rotation = {
+        {"axis_origin", {0.0, 0.0, 0.0}},
+        {"axis_direction", {double(sense), 0.0, 0.0}},
+        {"sense", "the blade's: its leading edge leads (rotation_sense); G is built for it"},
+        {"files", {{"Kg1", "Kg1.mtx"}, {"Mspin", "Mspin.mtx"}, {"G", "G.mtx"}}},
+        {"prestress", "linear: K(Omega) = K + Omega^2 (Kg1 - Mspin), Kg1 the stress stiffness of K u1 = f1 (centrifugal load at 1 rad/s)"},
+        {"max_static_displacement_at_1_rad_s", r.static_displacement.cwiseAbs().maxCoeff()}};
+  }
   if (o.calculix) {
     std::vector<int> clamped;
     for (int n = 0; n < blade->grid.mesh().node_count(); ++n)
@@ -158,6 +186,7 @@ int run_make_blade(const MakeBladeOptions& o) {
       {"boundary_node_radii", tip_radii},
       {"natural_frequencies", frequencies},
       {"mode_types", types},
+      {"rotation", rotation},
       {"paper_frequencies", kPaperFrequencies},
       {"relative_difference_to_paper", paper},
       {"timings", {{"wall_s", std::chrono::duration<double>(Clock::now() - t0).count()}}}};
@@ -185,6 +214,9 @@ void add_make_blade_verbs(CLI::App& app, VerbList& verbs) {
   make->add_option("--modes", options.modes, "lowest modes computed and named (default 6)");
   make->add_flag("--calculix", options.calculix,
                  "also write the mesh as a CalculiX deck, blade.inp, whose step writes the matrices `reduce --calculix DIR/blade` reads");
+  make->add_flag("--rotating", options.rotating,
+                 "also write the matrices of rotation about X: Kg1.mtx (centrifugal stress stiffening at 1 rad/s), Mspin.mtx "
+                 "(spin softening), G.mtx (gyroscopic); K(Omega) = K + Omega^2 (Kg1 - Mspin)");
   make->add_flag("-q,--quiet", options.quiet, "no closing report");
   verbs.push_back({make, [] { return run_make_blade(options); }});
 }

@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <map>
+#include <optional>
 
 #include "cli_common.hpp"
 #include "hbtrack/io/calculix_input_nodes.hpp"
@@ -32,6 +34,8 @@ struct ReduceOptions {
   std::vector<double> axis_origin{0.0, 0.0, 0.0};
   int modes = 12;
   int compare = 6;
+  bool rotating = false;    // also reduce Kg1.mtx, Mspin.mtx, G.mtx found beside --mass
+  std::string check_speed;  // rad/s: compare the reduced and full models' frequencies at this speed
   bool quiet = false;
 };
 
@@ -53,6 +57,28 @@ SparseMatrix read_matrix_argument(const std::string& spec, const char* option) {
   } catch (const std::runtime_error& e) {
     throw CaseError(std::string(option) + ": " + e.what());
   }
+}
+
+// The rotating blade's matrices of `make-blade --rotating`, beside M.mtx.
+struct RotatingFullModel {
+  SparseMatrix geometric_stiffness, spin_softening, gyroscopic;
+};
+
+RotatingFullModel read_rotating_matrices(const ReduceOptions& o, Eigen::Index rows) {
+  namespace fs = std::filesystem;
+  if (!o.calculix.empty() || o.mass.find(".mat:") != std::string::npos)
+    throw CaseError("--rotating: reads Kg1.mtx, Mspin.mtx and G.mtx beside --mass M.mtx (as make-blade --rotating writes them)");
+  const fs::path folder = fs::path(o.mass).parent_path();
+  auto read = [&](const char* name) {
+    const std::string path = (folder / name).string();
+    if (!fs::exists(path)) throw CaseError("--rotating: " + path + " not found (write it with make-blade --rotating)");
+    SparseMatrix a = read_matrix_argument(path, "--rotating");
+    if (a.rows() != rows || a.cols() != rows)
+      throw CaseError("--rotating: " + path + " is " + std::to_string(a.rows()) + "x" + std::to_string(a.cols()) + ", K is " +
+                      std::to_string(rows) + "x" + std::to_string(rows));
+    return a;
+  };
+  return {read("Kg1.mtx"), read("Mspin.mtx"), read("G.mtx")};
 }
 
 FullModel read_full_model(const ReduceOptions& o, const std::vector<NodeRecord>& nodes) {
@@ -166,6 +192,12 @@ int run_reduce(const ReduceOptions& o) {
   const std::vector<int> boundary_ids = o.boundary.empty() ? read_node_list(o.boundary_file) : o.boundary;
   const FullModel full = read_full_model(o, nodes);
   check_square_pair(full);
+  if (!o.check_speed.empty() && !o.rotating) throw CaseError("--check-speed: needs --rotating");
+  const double check_speed = o.check_speed.empty() ? 0.0 : parse_number("--check-speed", o.check_speed);
+  if (!(check_speed >= 0) || !std::isfinite(check_speed))
+    throw CaseError("--check-speed: must be >= 0 (rad/s), got '" + o.check_speed + "'");
+  std::optional<RotatingFullModel> rotating;
+  if (o.rotating) rotating = read_rotating_matrices(o, full.stiffness.rows());
   const double read_s = seconds_since(t0);
 
   std::map<int, const NodeRecord*> node_by_id;
@@ -221,7 +253,40 @@ int run_reduce(const ReduceOptions& o) {
   }
   const double full_modes_s = seconds_since(t_full);
 
+  // The rotating matrices on the basis at rest; with --check-speed, the reduced model's modes at
+  // that speed against the full model's (K(Omega) without G: what the basis must hold).
+  json at_speed = nullptr;
+  Eigen::MatrixXd rom_geometric, rom_spin, rom_gyroscopic;
+  if (rotating) {
+    rom_geometric = craig_bampton_project(rom, rotating->geometric_stiffness);
+    rom_spin = craig_bampton_project(rom, rotating->spin_softening);
+    rom_gyroscopic = craig_bampton_project(rom, rotating->gyroscopic);
+    if (!o.check_speed.empty() && compare > 0) {
+      const double s2 = check_speed * check_speed;
+      Eigen::VectorXd full_at_speed, reduced_at_speed;
+      try {
+        full_at_speed = lowest_sparse_modes(SparseMatrix(full.stiffness + s2 * (rotating->geometric_stiffness - rotating->spin_softening)),
+                                            full.mass, compare)
+                            .frequencies;
+        reduced_at_speed = normal_modes(rom.mass, rom.stiffness + s2 * (rom_geometric - rom_spin)).frequencies.head(compare);
+      } catch (const std::exception& e) {
+        throw RunFailed{std::string("reduce: modes at --check-speed: ") + e.what()};
+      }
+      json difference = json::array();
+      for (int r = 0; r < compare; ++r) difference.push_back(reduced_at_speed(r) / full_at_speed(r) - 1.0);
+      at_speed = {{"speed", check_speed},
+                  {"full_model_frequencies", to_json(full_at_speed)},
+                  {"reduced_frequencies", to_json(reduced_at_speed)},
+                  {"relative_difference_of_reduced", difference}};
+    }
+  }
+
   ensure_directory(o.out_dir);
+  if (rotating) {
+    write_matrix_market(o.out_dir + "/Kg1.mtx", rom_geometric.sparseView());
+    write_matrix_market(o.out_dir + "/Mspin.mtx", rom_spin.sparseView());
+    write_matrix_market(o.out_dir + "/G.mtx", rom_gyroscopic.sparseView());
+  }
   write_matrix_market(o.out_dir + "/M.mtx", rom.mass.sparseView());
   write_matrix_market(o.out_dir + "/K.mtx", rom.stiffness.sparseView());
   write_matrix_market(o.out_dir + "/T.mtx", rom.transformation.sparseView());
@@ -254,6 +319,10 @@ int run_reduce(const ReduceOptions& o) {
        {{"natural_frequencies", to_json(full_frequencies)},
         {"relative_difference_of_reduced", errors},
         {"mode_types", full_model_mode_types(o, compare)}}},
+      {"rotation", rotating ? json{{"files", {{"Kg1", "Kg1.mtx"}, {"Mspin", "Mspin.mtx"}, {"G", "G.mtx"}}},
+                                   {"basis", "the Craig-Bampton basis at rest"},
+                                   {"check_at_speed", at_speed}}
+                            : json(nullptr)},
       {"timings", {{"wall_s", seconds_since(t0)}, {"read_s", read_s}, {"reduction_s", reduce_s}, {"full_modes_s", full_modes_s}}}};
   write_json_atomically(o.out_dir + "/summary.json", summary);
   if (!o.quiet) {
@@ -263,6 +332,12 @@ int run_reduce(const ReduceOptions& o) {
     for (int r = 0; r < compare; ++r)
       std::fprintf(stderr, "  mode %d: full %.2f rad/s, reduced %.2f rad/s (%+.3f %%)\n", r + 1, full_frequencies(r),
                    reduced_modes.frequencies(r), 100.0 * errors[static_cast<size_t>(r)].get<double>());
+    if (!at_speed.is_null())
+      for (int r = 0; r < compare; ++r)
+        std::fprintf(stderr, "  at %.1f rad/s, mode %d: full %.2f rad/s, reduced %.2f rad/s (%+.3f %%)\n", check_speed, r + 1,
+                     at_speed["full_model_frequencies"][static_cast<size_t>(r)].get<double>(),
+                     at_speed["reduced_frequencies"][static_cast<size_t>(r)].get<double>(),
+                     100.0 * at_speed["relative_difference_of_reduced"][static_cast<size_t>(r)].get<double>());
   }
   return 0;
 }
@@ -289,6 +364,11 @@ void add_reduce_verbs(CLI::App& app, VerbList& verbs) {
   reduce->add_option("--modes", options.modes, "fixed-interface modes kept (default 12)");
   reduce->add_option("--compare", options.compare, "full-model modes computed to check the reduced model (default 6)");
   reduce->add_option("-o,--output", options.out_dir, "output folder (created if missing)")->required();
+  reduce->add_flag("--rotating", options.rotating,
+                   "also reduce the rotating blade's Kg1.mtx, Mspin.mtx and G.mtx (make-blade --rotating) found beside --mass, on the "
+                   "same basis");
+  reduce->add_option("--check-speed", options.check_speed,
+                     "with --rotating: compare the reduced and full models' frequencies at this speed (rad/s), K + W^2 (Kg1 - Mspin)");
   reduce->add_flag("-q,--quiet", options.quiet, "no closing report");
   verbs.push_back({reduce, [] { return run_reduce(options); }});
 }

@@ -100,6 +100,53 @@ def modes(case, count=10, **settings):
     return result
 
 
+def campbell(case, speeds, count=6, names=None, engine_orders=8):
+    """The Campbell diagram of a rotating case (``hbtrack modes CASE --speeds LO:HI:N``).
+
+    At each speed W the lowest frequencies of (K + W^2 (Kg1 - Mspin)) phi + i w W G phi = w^2 M phi,
+    the case's ``[rotation]`` matrices at that speed (G when the case gives it), each mode followed
+    from speed to speed by the correlation of its shape.
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        A case with ``[rotation]`` and ``[model]`` Kg1, Mspin (and optionally G); not changed.
+    speeds : array_like
+        Rotation speeds in rad/s, >= 0 and increasing.
+    count : int, optional
+        How many modes, from the lowest at the first speed (default 6).
+    names : list of str, optional
+        The modes' names at the first speed, lowest first (e.g. ["1B", "2B", "1T"]); unnamed
+        modes are "mode K".
+    engine_orders : int, optional
+        The summary lists where each mode meets the lines k W, k = 1 .. engine_orders (default 8).
+
+    Returns
+    -------
+    dict
+        ``campbell``: {"speed": array, NAME: array per mode}; ``summary`` as the CLI's
+        summary.json (``mode_names``, ``engine_order_crossings``, ``lowest_mac_between_speeds``);
+        ``kind`` = "campbell".
+
+    Raises
+    ------
+    ValueError
+        A case without [rotation], speeds negative or not increasing, count < 1.
+    RuntimeError
+        The stiffness at a speed is not positive definite.
+
+    Examples
+    --------
+    >>> case = hbtrack.load_case("examples/rotor67/design_speed.toml")
+    >>> diagram = hbtrack.campbell(case, np.linspace(0, 1680, 43), names=["1B", "2B", "1T"])
+    >>> diagram["campbell"]["1B"][-1]                          # 1B at 1680 rad/s
+    """
+    result = require_core().campbell(case, [float(s) for s in np.atleast_1d(speeds)], int(count), list(names or []),
+                                     int(engine_orders))
+    result["kind"] = "campbell"
+    return result
+
+
 def output_harmonics(case, state):
     """Fourier coefficients of every output dof of a solution.
 

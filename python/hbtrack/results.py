@@ -67,7 +67,8 @@ def result_kind(folder):
     Returns
     -------
     str
-        frc, solve, track, isolas, isola_branch, torus, simulate, modes, reduce, sweep or study.
+        frc, solve, track, isolas, isola_branch, torus, simulate, modes, campbell (modes --speeds),
+        reduce, sweep or study.
 
     Examples
     --------
@@ -82,6 +83,8 @@ def result_kind(folder):
     verb = summary.get("verb")
     if verb == "isolas" and "crossings" not in summary:
         return "isola_branch"  # one branch folder of an isolas result
+    if verb == "modes" and summary.get("kind") == "campbell":
+        return "campbell"  # modes --speeds
     if verb:
         return verb
     if os.path.exists(os.path.join(folder, "signals.csv")):
@@ -103,8 +106,8 @@ def read_result(folder):
     -------
     dict
         ``kind``, ``folder``, ``summary`` (summary.json), ``special_points``, and as present:
-        ``branch``, ``signals``, ``stability``, ``element_forces`` ({column: array} of
-        branch.csv, signals.csv, stability.csv, element_forces.csv), ``states``, ``special_states`` (2-D arrays: the leading columns, then
+        ``branch``, ``signals``, ``stability``, ``element_forces``, ``campbell`` ({column: array} of
+        branch.csv, signals.csv, stability.csv, element_forces.csv, campbell.csv), ``states``, ``special_states`` (2-D arrays: the leading columns, then
         the harmonic balance unknowns, as the API holds them), ``dof_states``,
         ``dof_special_states`` ({column: array} of the files as written: every dof's harmonics,
         docs/outputs.md; absent for folders written before those columns); an isolas result
@@ -121,7 +124,7 @@ def read_result(folder):
     result = {"kind": kind, "folder": folder, "summary": summary,
               "special_points": summary.get("special_points", [])}
     for name, key in (("branch.csv", "branch"), ("signals.csv", "signals"), ("stability.csv", "stability"),
-                      ("element_forces.csv", "element_forces")):
+                      ("element_forces.csv", "element_forces"), ("campbell.csv", "campbell")):
         path = os.path.join(folder, name)
         if os.path.exists(path):
             result[key] = read_columns(path)

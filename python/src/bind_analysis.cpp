@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/runs/case_system.hpp"
+#include "hbtrack/runs/campbell.hpp"
 #include "hbtrack/runs/frc.hpp"
 #include "hbtrack/runs/isolas.hpp"
 #include "hbtrack/runs/modes.hpp"
@@ -41,6 +42,20 @@ py::dict modes(const CaseDefinition& c, int count) {
   runs::RunReport report;
   py::dict out = run_in_memory(py::none(), [&](runs::ResultSink& sink, runs::RunMonitor&) { report = runs::modes(c, count, sink); });
   if (!report.success()) throw std::runtime_error("modes: " + report.failure);
+  return out;
+}
+
+// `hbtrack modes --speeds`: the Campbell diagram of a rotating case; a failure raises.
+py::dict campbell(const CaseDefinition& c, const std::vector<double>& speeds, int count, const std::vector<std::string>& names,
+                  int engine_orders) {
+  runs::CampbellOptions options;
+  options.speeds = speeds;
+  options.count = count;
+  options.names = names;
+  options.engine_orders = engine_orders;
+  runs::RunReport report;
+  py::dict out = run_in_memory(py::none(), [&](runs::ResultSink& sink, runs::RunMonitor&) { report = runs::campbell(c, options, sink); });
+  if (!report.success()) throw std::runtime_error("campbell: " + report.failure);
   return out;
 }
 
@@ -117,6 +132,8 @@ void bind_analysis(py::module_& m) {
         " and element_forces when asked");
   m.def("solve", &solve, py::arg("case"), py::arg("omega"), "one periodic solution at omega: {branch, states, dof_states, summary}");
   m.def("modes", &modes, py::arg("case"), py::arg("count") = 10, "the lowest natural frequencies of the case's model: {summary}");
+  m.def("campbell", &campbell, py::arg("case"), py::arg("speeds"), py::arg("count") = 6, py::arg("names") = std::vector<std::string>{},
+        py::arg("engine_orders") = 8, "the Campbell diagram of a case with [rotation]: {campbell, summary}");
   m.def("track", &track, py::arg("case"), py::arg("x"), py::arg("omega"), py::arg("param"), py::arg("parameter_min"),
         py::arg("parameter_max"), py::arg("method") = "bordered", py::arg("progress") = py::none(),
         py::arg("point") = to_string(SpecialPointType::limit_point), "limit point (NS, PD point) (x, omega) tracked in param");

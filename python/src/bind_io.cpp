@@ -72,6 +72,8 @@ void bind_case(py::module_& m) {
               for (const std::string& n : c.parameters.names()) known += (known.empty() ? "" : ", ") + n;
               throw CaseError("set_parameter: unknown parameter '" + name + "' (the case has: " + known + ")");
             }
+            if (const std::string why = c.parameters.fixed_reason(index); !why.empty())
+              throw CaseError("set_parameter: '" + name + "' " + why + " (load_case(path, set={...}) rebuilds it)");
             c.parameters.value(index) = value;
           },
           py::arg("name"), py::arg("value"))

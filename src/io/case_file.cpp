@@ -16,6 +16,7 @@
 #include "case_dof_names.hpp"
 #include "case_elements.hpp"
 #include "case_excitation.hpp"
+#include "case_rotation.hpp"
 #include "case_reader.hpp"
 #include "case_templates.hpp"
 #include "hbtrack/io/input_file.hpp"
@@ -32,7 +33,7 @@ using Eigen::VectorXd;
 
 void read_model(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   const toml::value& model = in.table(in.require(root, "model", "model"), "model");
-  in.check_keys(model, "model", {"dofs", "M", "K", "chain"});
+  in.check_keys(model, "model", {"dofs", "M", "K", "chain", "Kg1", "Mspin", "G"});
   StructuralModel& m = c.model;
   if (const toml::value* chain = in.find(model, "chain")) {
     // A fixed-free chain of equal masses and springs, dofs x1..xn (x1 next to the ground).
@@ -553,12 +554,14 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   expand_element_templates(in, root);
   apply_overrides(in, root, overrides);
   in.check_keys(root, "",
-                {"model", "damping", "forcing", "forcing_growth", "base_motion", "parameters", "elements", "harmonic_balance",
+                {"model", "rotation", "damping", "forcing", "forcing_growth", "base_motion", "parameters", "elements", "harmonic_balance",
                  "continuation", "stability", "outputs", "study"});
   CaseDefinition c;
   c.path = path;
   read_model(in, root, c);
+  read_rotation(in, root, c);  // before the damping: modal ratios are those of the modes at speed
   read_damping(in, root, c);
+  add_gyroscopic_damping(c);
   read_forcing(in, root, c);
   read_forcing_growth(in, root, c);
   read_base_motion(in, root, c);
@@ -568,6 +571,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
     throw CaseError(path + ": " + e.what());
   }
   read_parameters(in, root, c);
+  fix_rotation_parameter(c);
   read_elements(in, root, c);
   read_settings(in, root, c);
   check_stability_supported(in, root, c);
@@ -580,7 +584,10 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
 
 int parameter_index(const ParameterSet& parameters, const std::string& name, const std::string& field) {
   const int index = parameters.find(name);
-  if (index >= 0) return index;
+  if (index >= 0) {
+    if (const std::string why = parameters.fixed_reason(index); !why.empty()) throw CaseError(field + ": '" + name + "' " + why);
+    return index;
+  }
   std::string known;
   for (const std::string& n : parameters.names()) known += (known.empty() ? "" : ", ") + n;
   throw CaseError(field + ": unknown parameter '" + name + "' (the case has: " + known + ")");

@@ -89,6 +89,12 @@ CaseDefinition with_overrides(const CaseDefinition& c, const std::vector<std::st
       throw CaseError("--set " + o.substr(0, o.find('=')) + ": only named parameters and the " + join(kSettingSections) +
                       " keys change on a computation; '" + section + "' is the case's (change it with load_case(path, set=...))");
   }
+  for (const std::string& o : overrides) {
+    const std::string name = o.substr(0, o.find('='));
+    const int index = c.parameters.find(name);
+    if (index >= 0 && !c.parameters.fixed_reason(index).empty())
+      throw CaseError("--set " + name + ": '" + name + "' " + c.parameters.fixed_reason(index) + " (load_case(path, set=...) rebuilds it)");
+  }
   CaseReader in(c.path);
   toml::value root = settings_document(c);
   apply_overrides(in, root, overrides);

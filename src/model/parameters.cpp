@@ -21,6 +21,22 @@ int ParameterSet::find(const std::string& name) const {
   return -1;
 }
 
+void ParameterSet::fix(int index, const std::string& reason) {
+  if (index < 0 || index >= size()) throw std::out_of_range("parameter index out of range");
+  for (auto& [i, why] : fixed_)
+    if (i == index) {
+      why = reason;
+      return;
+    }
+  fixed_.emplace_back(index, reason);
+}
+
+std::string ParameterSet::fixed_reason(int index) const {
+  for (const auto& [i, why] : fixed_)
+    if (i == index) return why;
+  return "";
+}
+
 double ParameterSet::value(const std::string& name) const {
   const int i = find(name);
   if (i < 0) throw std::out_of_range("unknown parameter '" + name + "'");

@@ -56,6 +56,15 @@ struct StudySettings {
   int convergence_harmonics = 0, convergence_samples = 0;
 };
 
+// [rotation]: the model turns at `speed` (rad/s) about the axis its rotating matrices were built
+// for; [model] Kg1, Mspin and G. model.stiffness then holds K(Omega) = K + Omega^2 (Kg1 - Mspin)
+// and model.damping C + Omega G (model/rotating_matrices.hpp).
+struct RotationSettings {
+  double speed = 0;
+  std::string speed_parameter;                                                         // the named parameter it reads, "" for a number
+  Eigen::MatrixXd stiffness_at_rest, geometric_stiffness, spin_softening, gyroscopic;  // gyroscopic: empty when not given
+};
+
 struct CaseDefinition {
   std::string path;
   // The file `[model] dofs = { file = ... }` names, resolved ("" for a list or a count): a
@@ -65,6 +74,7 @@ struct CaseDefinition {
   // [base_motion] as the case gave it; model.forcing and model.forcing_growth then hold its
   // equivalent forcing (model/base_motion.hpp).
   std::optional<BaseMotion> base_motion;
+  std::optional<RotationSettings> rotation;
   ElementList elements;
   ParameterSet parameters;
   HarmonicBalanceOptions harmonic_balance;

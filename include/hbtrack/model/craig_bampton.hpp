@@ -31,6 +31,10 @@ struct CraigBamptonModel {
 CraigBamptonModel craig_bampton(const Eigen::SparseMatrix<double>& mass, const Eigen::SparseMatrix<double>& stiffness,
                                 const std::vector<CraigBamptonBoundaryNode>& boundary, int fixed_interface_modes);
 
+// T^T A T: another full-model matrix (the rotating blade's K_g1, K_g2, M_spin, G) on the same
+// basis. Symmetric or skew-symmetric inputs give exactly symmetric or skew-symmetric outputs.
+Eigen::MatrixXd craig_bampton_project(const CraigBamptonModel& model, const Eigen::SparseMatrix<double>& full);
+
 // Reduced dof names for B boundary nodes and M modes: n1_r, n1_t, n1_z, ..., m1, ...
 // `directions`: the suffixes of a boundary node's three dofs (the local r, t, z by default).
 std::vector<std::string> craig_bampton_dof_names(int boundary_nodes, int modes,

@@ -21,10 +21,16 @@ class ParameterSet {
   const ParameterValues& values() const { return values_; }
   const std::vector<std::string>& names() const { return names_; }
   int size() const { return static_cast<int>(names_.size()); }
+  // A parameter the model's matrices were built with (the rotation speed of K(Omega)): no
+  // continuation may vary it. `reason` completes "'NAME' ..." in the error of those that try.
+  void fix(int index, const std::string& reason);
+  // The reason it is fixed, "" when it is free.
+  std::string fixed_reason(int index) const;
 
  private:
   std::vector<std::string> names_;
   ParameterValues values_;
+  std::vector<std::pair<int, std::string>> fixed_;
 };
 
 // A property of an element: a constant, or an affine function of one named parameter.
