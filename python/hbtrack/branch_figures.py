@@ -112,9 +112,12 @@ def _legend(ax, extra):
     """Above the axes, outside them: inside, 'best' still covers a peak or a labelled point."""
     handles, labels = ax.get_legend_handles_labels()
     labels += [h.get_label() for h in extra]
-    # One row when short; else two columns, each half the axes' width: about 38 characters at
-    # this size beside the handle, so a longer label takes one column (it ran into its neighbour).
-    columns = len(labels) if sum(len(t) for t in labels) <= 60 else min(len(labels), 2 if max(map(len, labels)) <= 38 else 1)
+    # One row when short (each entry's handle and spacing take about 7 characters' width: six
+    # entries of 60 characters in all ran past the axes); else two columns, each half the axes'
+    # width: about 38 characters at this size beside the handle, so a longer label takes one
+    # column (it ran into its neighbour).
+    one_row = sum(len(t) for t in labels) + 7 * len(labels) <= 95
+    columns = len(labels) if one_row else min(len(labels), 2 if max(map(len, labels)) <= 38 else 1)
     ax.legend(handles + extra, labels, fontsize=8, loc="lower left", bbox_to_anchor=(0, 1.01, 1, 0.1), ncol=columns,
               mode="expand" if columns > 1 else None, borderaxespad=0, frameon=False, handlelength=2.4)
 
@@ -191,7 +194,9 @@ def nfrc_figure(result, outputs=None, others=(), length_unit=None, title=None, z
                         ls="none", zorder=5)
                 labels.setdefault(ax, []).append((sp["omega"], max(values), text))
         ax.set_xlabel(OMEGA_LABEL)
-        what = descriptions[panel[0]] if len(results) == 1 else f"max and min of {descriptions[panel[0]]}"  # one colour per branch
+        # One colour per branch when overlaid: the label says both curves are its; on two lines, as
+        # a description beside "max and min of" ran past a panel's height.
+        what = descriptions[panel[0]] if len(results) == 1 else f"max and min of\n{descriptions[panel[0]]}"
         ax.set_ylabel(length_label(NORM_LABEL if norm else what, length_unit))
         ax.grid(alpha=0.3)
         styles = [Line2D([], [], color="0.3", lw=1.3, label="stability not computed")] if unknown_everywhere else _stability_legend(ax, branches)

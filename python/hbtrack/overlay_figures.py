@@ -68,6 +68,15 @@ def describe(result):
     return what
 
 
+def _parameters_text(results):
+    """The named parameters in which results differ, "speed = 1680" each ("" for one that has
+    none of them, as a case without a speed at all); None when that does not tell them apart."""
+    values = [r["summary"].get("options", {}).get("parameters", {}) for r in results]
+    differing = sorted({k for v in values for k in v if any(w.get(k) != v.get(k) for w in values)})
+    texts = [", ".join(f"{k} = {v[k]:.6g}" for k in differing if k in v) for v in values]
+    return texts if differing and len(set(texts)) == len(texts) else None
+
+
 def _harmonics_text(result):
     listed = result["summary"].get("options", {}).get("harmonic_balance", {}).get("harmonics")
     return f"H = {listed}" if isinstance(listed, int) else f"harmonics {', '.join(map(str, listed))}" if listed else None
@@ -98,9 +107,13 @@ def legend_labels(results):
         if len(same) < 2:
             continue
         harmonics = [_harmonics_text(results[i]) for i in same]
+        parameters = _parameters_text([results[i] for i in same])
         if None not in harmonics and len(set(harmonics)) == len(same):
             for i, h in zip(same, harmonics):
                 labels[i] = f"{text}, {h}"
+        elif parameters:
+            for i, p in zip(same, parameters):
+                labels[i] = f"{text}, {p}" if p else text
         else:
             for k, i in enumerate(same[1:], start=2):
                 labels[i] = f"{text}, branch {k}"

@@ -216,3 +216,16 @@ def test_unknown_stability_is_said_not_drawn_as_stable():
     legend = [t.get_text() for t in figure.get_axes()[0].get_legend().get_texts()]
     assert "stability not computed" in legend and "stable" not in legend
     plt.close(figure)
+
+
+def test_overlaid_nfrcs_differing_in_a_parameter_are_named_by_it():
+    # Rotor 67 at rest and at design speed both read "NFRC"; the second has the named parameter
+    # speed, the first none: numbering them ("branch 2") said nothing a reader could use.
+    from hbtrack.overlay_figures import legend_labels
+    at_rest = {"kind": "frc", "summary": {"options": {"parameters": {"amplitude": 140.0}}}}
+    at_speed = {"kind": "frc", "summary": {"options": {"parameters": {"amplitude": 140.0, "speed": 1680.0}}}}
+    assert legend_labels([at_rest, at_speed]) == ["NFRC", "NFRC, speed = 1680"]
+    louder = {"kind": "frc", "summary": {"options": {"parameters": {"amplitude": 200.0}}}}
+    assert legend_labels([at_rest, louder]) == ["NFRC, amplitude = 140", "NFRC, amplitude = 200"]
+    # Equal parameters and harmonics: told apart by number, as before.
+    assert legend_labels([at_rest, dict(at_rest)]) == ["NFRC", "NFRC, branch 2"]
