@@ -2,7 +2,14 @@
 // dynamics, produced (src/runs/artefact_warnings.cpp).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli_support.hpp"
 #include "hbtrack/runs/artefact_warnings.hpp"
+#include "test_support.hpp"
 
 // File-local names in a namespace of this file's own: unity builds compile several test files
 // as one.
@@ -54,6 +61,50 @@ TEST(ArtefactWarnings, AMinNextToAMaxAtTheSameParameterIsAWiggleNotABirthAndAMer
   EXPECT_TRUE(
       runs::extremum_pairs_below_resolution({extremum("max", 40, 1.2, 0.3), extremum("min", 41, 1.3, 0.29999)}, "mu", 1.0, 0.4).empty());
   EXPECT_TRUE(runs::extremum_pairs_below_resolution({extremum("max", 1, 1.2, 0.3), extremum("max", 2, 1.2, 0.3)}, "mu", 1.0, 0.4).empty());
+}
+
+TEST(ArtefactWarnings, AClusterWhoseLimitPointsStayWhenRecomputedIsNoArtefact) {
+  // Four folds 1e-4 apart (range 1): recomputed where they are (within a tenth of their 1e-4
+  // spacing) they are no sampling artefact; moved by more, fewer, or a failed run: reported.
+  const std::vector<SpecialPoint> folds{special("LP", 0.7), special("LP", 0.7001), special("LP", 0.7002), special("LP", 0.7003)};
+  auto returning = [](std::optional<std::vector<double>> omegas) {
+    return [omegas](const std::vector<const SpecialPoint*>&) { return omegas; };
+  };
+  EXPECT_TRUE(runs::special_point_clusters(folds, 1.0, returning(std::vector<double>{0.70030, 0.700001, 0.70010, 0.70020})).empty());
+  EXPECT_EQ(runs::special_point_clusters(folds, 1.0, returning(std::vector<double>{0.7, 0.7001, 0.7002, 0.70032})).size(), 1u)
+      << "one moved by 2e-5, a fifth of the spacing";
+  EXPECT_EQ(runs::special_point_clusters(folds, 1.0, returning(std::vector<double>{0.7, 0.7001})).size(), 1u) << "two vanished";
+  EXPECT_EQ(runs::special_point_clusters(folds, 1.0, returning(std::nullopt)).size(), 1u) << "the recomputation failed";
+  // PD and NS points are not recomputed: a cluster holding one is reported, whatever the check.
+  std::vector<SpecialPoint> with_ns = folds;
+  with_ns[1] = special("NS", 0.7001);
+  EXPECT_EQ(runs::special_point_clusters(with_ns, 1.0, returning(std::vector<double>{0.7, 0.7001, 0.7002, 0.7003})).size(), 1u);
+}
+
+TEST(ArtefactWarnings, TheThreeOscillatorFoldsStayAndTheCoarseDlftSawToothIsReported) {
+  // NLvib's three-oscillator example: 4 folds within omega 1.62634-1.62809 were called "most
+  // likely artefacts of the time sampling"; recomputed with 4 times the samples and a quarter of
+  // the steps they stay within 1e-6 rad/s, so no warning. The DLFT example at N = 2H + 1 = 11
+  // folds dozens of times within 1e-3: recomputed, those folds vanish, and it is reported.
+  if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "a minute under the sanitizers; run by the Release pass";
+  namespace fs = std::filesystem;
+  const fs::path base = fs::temp_directory_path() / ("hbtrack_artefact_cli_" + std::to_string(getpid()));
+  const std::string oscillators = "frc " + hbtrack::test::source_path("examples/three_oscillators_jenkins.toml") + " -q -o ";
+  ASSERT_EQ(hbtrack::test::run_cli(oscillators + (base / "three").string()).exit_code, 0);
+  const nlohmann::json three = hbtrack::test::read_json((base / "three" / "summary.json").string());
+  int folds_near = 0;
+  for (const auto& p : three["special_points"])
+    if (p["type"] == "LP" && p["omega"].get<double>() > 1.626 && p["omega"].get<double>() < 1.629) ++folds_near;
+  EXPECT_EQ(folds_near, 4);
+  for (const auto& w : three["warnings"]) EXPECT_EQ(w.get<std::string>().find("artefacts of the time sampling"), std::string::npos) << w;
+  const std::string dlft = "frc " + hbtrack::test::source_path("examples/frictional_contact_dlft.toml") +
+                           " --set harmonic_balance.samples=11 -q -o " + (base / "dlft").string();
+  hbtrack::test::run_cli(dlft);  // exit 1 or 0: it runs out of max_points in the saw-tooth
+  const nlohmann::json coarse = hbtrack::test::read_json((base / "dlft" / "summary.json").string());
+  int clusters = 0;
+  for (const auto& w : coarse["warnings"]) clusters += w.get<std::string>().find("artefacts of the time sampling") != std::string::npos;
+  EXPECT_GE(clusters, 1);
+  fs::remove_all(base);
 }
 
 }  // namespace hbtrack_tests::file_artefact_warnings

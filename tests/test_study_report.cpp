@@ -19,15 +19,16 @@ namespace fs = std::filesystem;
 TEST(StudyReport, TheIsolasTimeIntegrationIsReportedWithItsMarginAndItsComparison) {
   const fs::path dir = fs::temp_directory_path() / ("hbtrack_study_report_" + std::to_string(getpid()));
   fs::create_directories(dir);
-  const json isola = {{"folder", "isolas_amplitude_5/isola_1"},
-                      {"point", 90},
-                      {"omega", 2441.419},
-                      {"stable_margin", 0.005047},
-                      {"periods", 200},
-                      {"converged", false},
-                      {"last_change", 1.5e-3},
-                      {"wall_s", 61.2},
-                      {"outputs", json::array({{{"name", "h1_le"}, {"hbm", 1.0e-3}, {"simulation", 1.012e-3}, {"relative_difference", 0.012}}})}};
+  const json isola = {
+      {"folder", "isolas_amplitude_5/isola_1"},
+      {"point", 90},
+      {"omega", 2441.419},
+      {"stable_margin", 0.005047},
+      {"periods", 200},
+      {"converged", false},
+      {"last_change", 1.5e-3},
+      {"wall_s", 61.2},
+      {"outputs", json::array({{{"name", "h1_le"}, {"hbm", 1.0e-3}, {"simulation", 1.012e-3}, {"relative_difference", 0.012}}})}};
   const json summary = {{"case", "rotor67.toml"}, {"stop_reason", "completed"}, {"steps", json::array()}, {"isola_simulation", isola}};
   hbtrack::cli::write_study_report(dir.string(), summary);
   std::ifstream in(dir / "index.md");

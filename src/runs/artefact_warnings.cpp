@@ -27,7 +27,24 @@ std::string describe(const std::vector<const SpecialPoint*>& cluster) {
 }
 }  // namespace
 
-std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>& points, double omega_range) {
+namespace {
+// Whether the cluster's limit points stay put with more samples and shorter steps (see the header).
+bool stays_when_recomputed(const std::vector<const SpecialPoint*>& cluster, const ClusterRecomputation& recompute) {
+  double spacing = std::abs(cluster.back()->lambda - cluster.front()->lambda);
+  for (size_t i = 1; i < cluster.size(); ++i) spacing = std::min(spacing, cluster[i]->lambda - cluster[i - 1]->lambda);
+  for (const SpecialPoint* p : cluster)
+    if (p->type != SpecialPointType::limit_point) return false;
+  std::optional<std::vector<double>> found = recompute(cluster);
+  if (!found || found->size() != cluster.size()) return false;
+  std::sort(found->begin(), found->end());
+  for (size_t i = 0; i < cluster.size(); ++i)  // both in increasing omega
+    if (std::abs((*found)[i] - cluster[i]->lambda) > 0.1 * spacing) return false;
+  return true;
+}
+}  // namespace
+
+std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>& points, double omega_range,
+                                                const ClusterRecomputation& recompute) {
   std::vector<const SpecialPoint*> sorted;
   for (const SpecialPoint& p : points)
     if (p.type != SpecialPointType::branch_point) sorted.push_back(&p);
@@ -35,7 +52,7 @@ std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>&
   std::vector<std::string> warnings;
   std::vector<const SpecialPoint*> cluster;
   auto flush = [&] {
-    if (cluster.size() >= kClusterSize) warnings.push_back(describe(cluster));
+    if (cluster.size() >= kClusterSize && !(recompute && stays_when_recomputed(cluster, recompute))) warnings.push_back(describe(cluster));
     cluster.clear();
   };
   for (const SpecialPoint* p : sorted) {

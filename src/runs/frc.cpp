@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "hbtrack/results/continuation_state_file.hpp"
@@ -15,6 +16,47 @@
 #include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::runs {
+
+namespace {
+
+// The cluster's stretch of the branch computed again (the artefact check of
+// special_point_clusters): from the branch point a few before its first limit point, with
+// kRelocationSamplesFactor times the samples and steps kRelocationStepFactor times shorter,
+// until it leaves the window of the cluster widened by its width on each side (or closes).
+ClusterRecomputation cluster_recomputation(const CaseDefinition& c, const NfrcResult& r) {
+  return [&c, &r](const std::vector<const SpecialPoint*>& cluster) -> std::optional<std::vector<double>> {
+    const double lo = cluster.front()->lambda, hi = cluster.back()->lambda, width = hi - lo;
+    int first = cluster.front()->index;
+    for (const SpecialPoint* p : cluster) first = std::min(first, p->index);
+    // Back along the branch to a point outside the widened window, where the branch is single.
+    while (first > 0 && std::abs(r.continuation.points[static_cast<size_t>(first)].lambda - 0.5 * (lo + hi)) < 1.5 * width) --first;
+    if (first + 1 >= static_cast<int>(r.continuation.points.size())) return std::nullopt;
+    const BranchPoint& start = r.continuation.points[static_cast<size_t>(first)];
+    const double next = r.continuation.points[static_cast<size_t>(first) + 1].lambda;
+    CaseDefinition more = c;
+    more.harmonic_balance.samples *= kRelocationSamplesFactor;
+    HarmonicBalance hbm = make_system(more);
+    NfrcOptions options = c.nfrc;
+    options.stability.method = StabilityMethod::none;  // the limit points are the engine's own
+    options.continuation.step /= kRelocationStepFactor;
+    options.continuation.step_max /= kRelocationStepFactor;
+    options.continuation.max_points = 4000;
+    ParameterWindow window{lo - width, hi + width, next >= start.lambda ? 1 : -1, true};
+    window.lambda_min = std::min(window.lambda_min, start.lambda - width);
+    window.lambda_max = std::max(window.lambda_max, start.lambda + width);
+    try {
+      const NfrcResult again = compute_branch(hbm, options, {}, start.u, start.lambda, window);
+      std::vector<double> omegas;
+      for (const SpecialPoint& p : again.continuation.special_points)
+        if (p.type == SpecialPointType::limit_point && p.lambda >= lo - width && p.lambda <= hi + width) omegas.push_back(p.lambda);
+      return omegas;
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  };
+}
+
+}  // namespace
 
 using nlohmann::json;
 
@@ -83,7 +125,8 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   summary["stop_reason"] = stop_reason;
   summary["timings"] = {{"wall_s", seconds_since(t0)}, {"continuation_s", s.wall_s}, {"stability_s", r.stability_s}};
   tables.append_special_points(r.continuation.special_points);
-  for (std::string& w : special_point_clusters(r.continuation.special_points, std::abs(c.nfrc.omega_end - c.nfrc.omega_start)))
+  const double omega_range = std::abs(c.nfrc.omega_end - c.nfrc.omega_start);
+  for (std::string& w : special_point_clusters(r.continuation.special_points, omega_range, cluster_recomputation(c, r)))
     warnings.push_back(std::move(w));
   for (std::string& w :
        unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))

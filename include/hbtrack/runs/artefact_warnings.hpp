@@ -3,7 +3,9 @@
 // and PD/NS points packed closer than the sampled law can resolve (a C0 contact law sampled at N
 // points per period, or a smooth law narrower than one sample, folds the branch into a saw-tooth
 // of tiny folds). Listed in summary.json under "warnings" and on stderr, with the fix.
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,7 +17,21 @@ namespace hbtrack::runs {
 
 // omega_range: |omega_end - omega_start| of the NFRC; a cluster is at least kClusterSize special
 // points with consecutive spacings below kClusterSpacing of the range.
-std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>& points, double omega_range);
+//
+// Closeness alone does not make an artefact: NLvib's three-oscillator example (Jenkins elements,
+// a unilateral spring) has 4 folds within 1.8e-3 rad/s. So when `recompute` is given (the
+// cluster's stretch of branch computed again with more samples and shorter steps: the omegas of
+// the limit points it finds there, or nullopt when that run fails), a cluster of limit points is
+// reported only when the recomputed stretch has another number of them or one moved by more
+// than a tenth of the smallest spacing between them (the pattern then depends on the sampling or
+// the step); a cluster that stays is no artefact of either and gets no warning. A cluster
+// holding PD or NS points is reported as before.
+using ClusterRecomputation = std::function<std::optional<std::vector<double>>(const std::vector<const SpecialPoint*>& cluster)>;
+std::vector<std::string> special_point_clusters(const std::vector<SpecialPoint>& points, double omega_range,
+                                                const ClusterRecomputation& recompute = {});
+// The recomputation's factors on harmonic_balance.samples and, dividing, on the steps.
+inline constexpr int kRelocationSamplesFactor = 4;
+inline constexpr double kRelocationStepFactor = 4;
 
 // Extremum pairs of a tracking curve (a min next to a max) closer in the parameter than
 // kClusterSpacing of its range and in omega than that fraction of the curve's omega span: a
