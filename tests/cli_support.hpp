@@ -1,12 +1,14 @@
 #pragma once
 // Runs the hbtrack executable as a user would, for the command-line tests.
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <spawn.h>
 #include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <random>
 #include <nlohmann/json.hpp>
 #include <fstream>
 #include <sstream>
@@ -24,6 +26,25 @@ inline std::filesystem::path fresh_temp_dir(const std::string& name, bool create
   if (create) std::filesystem::create_directories(dir);
   return dir;
 }
+
+// A fixture whose tests write into a folder of their own, created before each test and removed
+// after it; random in name, so that tests of one process and of parallel processes never meet.
+class ScratchFolderTest : public ::testing::Test {
+ protected:
+  explicit ScratchFolderTest(std::string prefix) : prefix_(std::move(prefix)) {}
+  void SetUp() override {
+    std::random_device entropy;
+    dir_ = std::filesystem::temp_directory_path() / (prefix_ + "_" + std::to_string(entropy()) + std::to_string(entropy()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir_, ignored);
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string prefix_;
+  std::filesystem::path dir_;
+};
 
 // A result folder's JSON file (summary.json, a checkpoint), parsed.
 inline nlohmann::json read_json(const std::filesystem::path& p) { return nlohmann::json::parse(std::ifstream(p)); }

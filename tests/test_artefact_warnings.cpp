@@ -2,8 +2,6 @@
 // dynamics, produced (src/runs/artefact_warnings.cpp).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
@@ -88,7 +86,7 @@ TEST(ArtefactWarnings, TheThreeOscillatorFoldsStayAndTheCoarseDlftSawToothIsRepo
   // folds dozens of times within 1e-3: recomputed, those folds vanish, and it is reported.
   if (hbtrack::test::kSanitizedBuild) GTEST_SKIP() << "a minute under the sanitizers; run by the Release pass";
   namespace fs = std::filesystem;
-  const fs::path base = fs::temp_directory_path() / ("hbtrack_artefact_cli_" + std::to_string(getpid()));
+  const fs::path base = hbtrack::test::fresh_temp_dir("hbtrack_artefact_cli");
   const std::string oscillators = "frc " + hbtrack::test::source_path("examples/three_oscillators_jenkins.toml") + " -q -o ";
   ASSERT_EQ(hbtrack::test::run_cli(oscillators + (base / "three").string()).exit_code, 0);
   const nlohmann::json three = hbtrack::test::read_json((base / "three" / "summary.json").string());

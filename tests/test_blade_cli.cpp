@@ -27,20 +27,10 @@ using nlohmann::json;
 
 using hbtrack::test::CliRun;
 
-class BladeCli : public ::testing::Test {
+class BladeCli : public hbtrack::test::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    std::random_device entropy;
-    dir_ = fs::temp_directory_path() / ("hbtrack_blade_cli_" + std::to_string(entropy()) + std::to_string(entropy()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
+  BladeCli() : ScratchFolderTest("hbtrack_blade_cli") {}
   static CliRun run(const std::string& args) { return hbtrack::test::run_cli(args); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
 };
 
 using hbtrack::test::read_json;

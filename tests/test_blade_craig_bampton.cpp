@@ -1,6 +1,7 @@
 // Craig-Bampton reduction and the sparse eigensolver behind it, on a coarse blade.
 #include <gtest/gtest.h>
 
+#include "blade_boundary_support.hpp"
 #include "hbtrack/model/blade_generator.hpp"
 #include "hbtrack/model/craig_bampton.hpp"
 #include "hbtrack/model/sparse_modes.hpp"
@@ -26,12 +27,7 @@ const CoarseBlade& coarse_blade() {
     g.span_elements = 6;
     CoarseBlade c{generate_blade(g), {}, {}};
     c.matrices = assemble_blade(c.blade);
-    for (size_t j = 0; j < c.blade.tip_nodes.size(); ++j) {
-      CraigBamptonBoundaryNode b;
-      for (int d = 0; d < 3; ++d) b.dofs[static_cast<size_t>(d)] = c.blade.dofs.dof(c.blade.tip_nodes[j], d);
-      b.frame = c.blade.tip_frames[j].directions;
-      c.boundary.push_back(b);
-    }
+    c.boundary = hbtrack::test::tip_boundary(c.blade);
     return c;
   }();
   return model;

@@ -19,6 +19,7 @@
 #include <random>
 #include <sstream>
 
+#include "blade_boundary_support.hpp"
 #include "hbtrack/model/blade_generator.hpp"
 #include "hbtrack/model/calculix_deck.hpp"
 #include "hbtrack/model/craig_bampton.hpp"
@@ -145,14 +146,7 @@ TEST_F(RotatingCalculix, CalculixTangentAtTheStaticShapeMatchesAtTwoSpeeds) {
 }
 
 TEST_F(RotatingCalculix, LinearPrestressOfTheFullAndReducedModelsMatchesAtTwoSpeeds) {
-  std::vector<CraigBamptonBoundaryNode> boundary;
-  for (size_t j = 0; j < blade_.tip_nodes.size(); ++j) {
-    CraigBamptonBoundaryNode b;
-    for (int d = 0; d < 3; ++d) b.dofs[static_cast<size_t>(d)] = blade_.dofs.dof(blade_.tip_nodes[j], d);
-    b.frame = blade_.tip_frames[j].directions;
-    boundary.push_back(b);
-  }
-  const CraigBamptonModel rom = craig_bampton(m_.mass, m_.stiffness, boundary, 12);
+  const CraigBamptonModel rom = craig_bampton(m_.mass, m_.stiffness, hbtrack::test::tip_boundary(blade_), 12);
   const Eigen::MatrixXd rom_change = craig_bampton_project(rom, r_.geometric_stiffness - r_.spin_softening);
   const double at_rest = lowest_sparse_modes(m_.stiffness, m_.mass, 1).frequencies(0);
   for (const double speed : kSpeeds) {

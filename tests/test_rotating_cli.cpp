@@ -23,20 +23,10 @@ using hbtrack::test::CliRun;
 using hbtrack::test::read_json;
 using nlohmann::json;
 
-class RotatingCli : public ::testing::Test {
+class RotatingCli : public hbtrack::test::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    std::random_device entropy;
-    dir_ = fs::temp_directory_path() / ("hbtrack_rotating_cli_" + std::to_string(entropy()) + std::to_string(entropy()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
+  RotatingCli() : ScratchFolderTest("hbtrack_rotating_cli") {}
   static CliRun run(const std::string& args) { return hbtrack::test::run_cli(args); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
 };
 
 Eigen::MatrixXd dense(const std::string& file) { return Eigen::MatrixXd(hbtrack::read_matrix_market_sparse(file)); }

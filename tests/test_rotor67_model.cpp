@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include "blade_boundary_support.hpp"
 #include "hbtrack/io/blade_sections_reader.hpp"
 #include "hbtrack/model/blade_mode_classifier.hpp"
 #include "hbtrack/model/craig_bampton.hpp"
@@ -59,14 +60,7 @@ TEST(Rotor67Model, ReducedModelKeepsTheFirstSixModesWithinHalfAPercent) {
   EXPECT_EQ(classify_blade_mode(blade, full.shapes.col(0)).label(), "1B");
   EXPECT_EQ(classify_blade_mode(blade, full.shapes.col(1)).label(), "2B");
   EXPECT_EQ(classify_blade_mode(blade, full.shapes.col(2)).label(), "1T");
-  std::vector<CraigBamptonBoundaryNode> boundary;
-  for (size_t j = 0; j < blade.tip_nodes.size(); ++j) {
-    CraigBamptonBoundaryNode b;
-    for (int d = 0; d < 3; ++d) b.dofs[static_cast<size_t>(d)] = blade.dofs.dof(blade.tip_nodes[j], d);
-    b.frame = blade.tip_frames[j].directions;
-    boundary.push_back(b);
-  }
-  const CraigBamptonModel rom = craig_bampton(m.mass, m.stiffness, boundary, 12);
+  const CraigBamptonModel rom = craig_bampton(m.mass, m.stiffness, test::tip_boundary(blade), 12);
   const NormalModes reduced = normal_modes(rom.mass, rom.stiffness);
   for (int r = 0; r < 6; ++r) EXPECT_LT(reduced.frequencies(r) / full.frequencies(r) - 1.0, 0.005) << "mode " << r + 1;
   const nlohmann::json shipped = nlohmann::json::parse(std::ifstream(test::source_path("data/rotor67/summary.json")));
