@@ -38,7 +38,7 @@ from ._core import core as _core
 from .analysis import backbone, continuation, frc, isolas, limit_point, solve, switch, track
 from .cases import case_from_arrays, load_case
 from .elements import add_python_element, element_types
-from .model import campbell, modes, normal_modes, output_harmonics, reduce
+from .model import campbell, modes, normal_modes, output_harmonics, reduce, residual
 from .quasi_periodic import torus
 from .results import read_result
 from .settings import with_settings
@@ -50,7 +50,7 @@ if _core is not None:
                            StabilityOptions, SteadyStateOptions)
 
 __all__ = ["load_case", "case_from_arrays", "frc", "solve", "modes", "campbell", "sweep", "study", "continuation", "backbone", "switch", "track", "isolas", "torus", "limit_point", "simulate",
-           "with_settings", "reduce", "normal_modes", "output_harmonics", "add_python_element", "element_types", "read_result", "plots", "Case", "ContinuationSection", "ContinuationOptions",
+           "with_settings", "reduce", "normal_modes", "output_harmonics", "residual", "add_python_element", "element_types", "read_result", "plots", "Case", "ContinuationSection", "ContinuationOptions",
            "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
 
 

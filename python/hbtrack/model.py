@@ -170,3 +170,33 @@ def output_harmonics(case, state):
     >>> harmonics["x"][1:3]                                  # a1, b1
     """
     return require_core().output_harmonics(case, np.asarray(state, dtype=float))
+
+
+def residual(case, state):
+    """Harmonic balance residual of a state: how far a point is from solving the case's equations.
+
+    Use it to put another tool's points into hbtrack's equations (convert them to the layout of
+    ``states`` first: harmonic-major [a0, a1, b1, ...] per retained dof, a0 twice the mean).
+
+    Parameters
+    ----------
+    case : hbtrack.Case
+        The case whose equations are evaluated.
+    state : array_like
+        A state row [omega, x0, x1, ...] (the layout of a result's ``states``).
+
+    Returns
+    -------
+    dict
+        ``residual`` (numpy.ndarray, the balance of every retained dof's harmonics), ``force_scale``
+        (the force unit ``frc``'s tolerance is relative to: the forcing's largest coefficient times
+        the amplitude) and ``relative`` (max |residual| / force_scale, what ``frc`` compares with
+        ``continuation.tolerance``).
+
+    Examples
+    --------
+    >>> nfrc = hbtrack.frc(case)
+    >>> hbtrack.residual(case, nfrc["states"][20])["relative"] < 1e-8
+    True
+    """
+    return require_core().residual(case, np.asarray(state, dtype=float))

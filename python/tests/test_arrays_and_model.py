@@ -75,6 +75,21 @@ def test_output_harmonics_give_the_recorded_first_harmonic(duffing_case, duffing
     assert np.hypot(harmonics[1], harmonics[2]) == duffing_frc["branch"]["h1_x"][point]
 
 
+def test_residual_is_at_tolerance_on_the_branch_and_grows_off_it(duffing_case, duffing_frc):
+    state = np.array(duffing_frc["states"][20], dtype=float)
+    on_branch = hbtrack.residual(duffing_case, state)
+    # frc stops Newton at ||r||inf <= tolerance (1e-9 by default) x force_scale.
+    assert on_branch["relative"] <= 1e-9
+    assert on_branch["residual"].shape == (state.size - 1,)
+    # Moving the first harmonic's cosine by 1e-3 of the response moves the balance by about
+    # |K - omega^2 M| x 1e-3, orders of magnitude above the tolerance.
+    moved = state.copy()
+    moved[2] += 1e-3 * np.abs(state[1:]).max()
+    assert hbtrack.residual(duffing_case, moved)["relative"] > 1e-6
+    with pytest.raises(ValueError, match="state: holds"):
+        hbtrack.residual(duffing_case, state[:-1])
+
+
 def test_boundary_frames_change_only_the_basis():
     # A rotated local frame at the boundary node is an orthonormal change of basis: the same
     # frequencies (to 1e-8, as above), the boundary dofs' rows rotated.
