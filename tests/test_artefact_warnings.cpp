@@ -94,7 +94,14 @@ TEST(ArtefactWarnings, TheThreeOscillatorFoldsStayAndTheCoarseDlftSawToothIsRepo
   for (const auto& p : three["special_points"])
     if (p["type"] == "LP" && p["omega"].get<double>() > 1.626 && p["omega"].get<double>() < 1.629) ++folds_near;
   EXPECT_EQ(folds_near, 4);
-  for (const auto& w : three["warnings"]) EXPECT_EQ(w.get<std::string>().find("artefacts of the time sampling"), std::string::npos) << w;
+  int sticking = 0;
+  for (const auto& w : three["warnings"]) {
+    EXPECT_EQ(w.get<std::string>().find("artefacts of the time sampling"), std::string::npos) << w;
+    // Where the paths of hbtrack and NLvib part (docs/elements.md): the x2 - x1 slider stuck off
+    // rest, from the stretch before the fold cluster through the upper fold.
+    if (w.get<std::string>().find("elements[1] (elastic_dry_friction) sticks for the whole period") != std::string::npos) ++sticking;
+  }
+  EXPECT_EQ(sticking, 1);
   const std::string dlft = "frc " + hbtrack::test::source_path("examples/frictional_contact_dlft.toml") +
                            " --set harmonic_balance.samples=11 -q -o " + (base / "dlft").string();
   hbtrack::test::run_cli(dlft);  // exit 1 or 0: it runs out of max_points in the saw-tooth

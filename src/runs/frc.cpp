@@ -13,6 +13,7 @@
 #include "hbtrack/runs/failure_advice.hpp"
 #include "hbtrack/runs/friction_loop_gain_summary.hpp"
 #include "hbtrack/runs/resume.hpp"
+#include "hbtrack/runs/sticking_slider_warnings.hpp"
 #include "hbtrack/util/coverage.hpp"
 
 namespace hbtrack::runs {
@@ -131,6 +132,7 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   for (std::string& w :
        unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
     warnings.push_back(std::move(w));
+  for (std::string& w : sticking_slider_warnings(hbm, r.continuation.points)) warnings.push_back(std::move(w));
   summary["warnings"] = warnings;
   const double last_omega = r.recorded.empty() ? from : r.recorded.back().omega;
   if (!r.continuation.success()) summary["advice"] = continuation_failure_advice(s, c.nfrc.continuation, last_omega);

@@ -23,6 +23,7 @@ class ElasticDryFriction2D final : public NonlinearElement {
   const std::vector<std::string>& property_names() const override;
   bool depends_on_velocity() const override { return false; }
   bool history_dependent() const override { return true; }
+  bool stuck_slider_position_is_free() const override { return true; }
   std::string smoothness_limit() const override { return "stick-slip transitions make the Jenkins force non-smooth"; }
   bool force_has_corners() const override { return true; }
   void evaluate(const Eigen::MatrixXd& x, const Eigen::MatrixXd& v, double omega, const std::vector<double>& property_values,

@@ -93,6 +93,10 @@ class NonlinearElement {
   // a whole period of N uniform samples. Time integration and the monodromy matrix step such an
   // element with the three history_* functions below instead.
   virtual bool history_dependent() const { return false; }
+  // True when the internal variables are slider positions that start at 0 and stay put while
+  // the slider sticks. Over a period of stick any position that keeps it stuck is periodic, so
+  // periodic_history's is one choice among many (runs/sticking_slider_warnings.hpp).
+  virtual bool stuck_slider_position_is_free() const { return false; }
   // Time-stepping form of a history element (zero internal variables for the others).
   virtual int history_state_size() const { return 0; }
   // The return mapping over one step of duration dt (dt matters only to a law that moves
