@@ -203,8 +203,9 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
     # Long names (a study's curve from another NFRC) wrapped: one line ran past the figure's edge
     import textwrap
     handles, labels = ax.get_legend_handles_labels()
-    ax.legend(handles, [textwrap.fill(t, 44, subsequent_indent="  ") for t in labels], fontsize=8, loc="upper left",
-              bbox_to_anchor=(1.1, 0.95), borderaxespad=0)
+    # at the figure's right edge: beside the box, a long z label (an output's description) ran under it
+    fig.legend(handles, [textwrap.fill(t, 44, subsequent_indent="  ") for t in labels], fontsize=8, loc="upper right",
+               bbox_to_anchor=(0.99, 0.9), borderaxespad=0)
     return fig
 
 

@@ -89,7 +89,7 @@ def test_study_figures_include_fig12_and_convert_to_mm(small_study):
     assert "[mm]" in ax_mm.get_ylabel()
     for line, line_mm in zip(ax.get_lines(), ax_mm.get_lines()):
         np.testing.assert_allclose(line_mm.get_ydata(), 1e3 * np.asarray(line.get_ydata()))
-    labels = [t.get_text() for t in in_mm["tracking_3d_amplitude"].get_axes()[0].get_legend().get_texts()]
+    labels = [t.get_text() for legend in in_mm["tracking_3d_amplitude"].legends for t in legend.get_texts()]  # the figure's legend
     assert "isolated branches" in labels
     plt.close("all")
 
