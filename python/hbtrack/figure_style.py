@@ -187,3 +187,77 @@ def _plot_split(ax, x, y, stable, unstable, colour, label, lw=1.3, alpha=1.0):
         ax.plot(x, dashed, "--", color=colour, lw=lw, alpha=alpha)
     if unknown.any():
         ax.plot(x, np.where(unknown | np.roll(unknown, 1) | np.roll(unknown, -1), y, np.nan), ":", color=colour, lw=lw + 0.2, alpha=alpha)
+
+
+def zoom_small_curves(ax, curves, fraction=0.08, size=0.3):
+    """An inset zoom on each curve too small to be seen among the axes' markers: one whose
+    extent is under `fraction` of both axis spans (rotor 67's closed limit-point curve in mu, 35
+    rad/s by 0.005, hidden under its own extrema's markers). Small curves whose boxes overlap
+    share an inset. Every line of the axes is drawn again in the inset, placed in the corner that
+    covers the fewest of their points.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The axes, with its limits final.
+    curves : sequence of (x, y)
+        The curves to check, in data coordinates.
+    fraction : float, optional
+        A curve narrower and lower than this share of the axis spans is zoomed.
+    size : float, optional
+        The inset's width and height, in axes fractions.
+
+    Returns
+    -------
+    list of matplotlib.axes.Axes
+        The insets made (at most two).
+
+    Examples
+    --------
+    >>> insets = zoom_small_curves(ax, [(omega, mu)])
+    """
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    small = [(np.asarray(x, float), np.asarray(y, float)) for x, y in curves if len(x) > 1
+             and np.ptp(x) < fraction * (x1 - x0) and np.ptp(y) < fraction * (y1 - y0)]
+    groups = []  # small curves whose boxes overlap share one inset
+    for x, y in small:
+        for g, (gx, gy) in enumerate(groups):
+            if x.min() <= gx.max() and gx.min() <= x.max() and y.min() <= gy.max() and gy.min() <= y.max():
+                groups[g] = (np.concatenate([gx, x]), np.concatenate([gy, y]))
+                break
+        else:
+            groups.append((x, y))
+    small = groups[:2]
+    if not small:
+        return []
+    points = []  # every drawn point in axes fractions, to choose the emptiest corner
+    for line in ax.get_lines():
+        x, y = np.asarray(line.get_xdata(), float), np.asarray(line.get_ydata(), float)
+        points.append(np.c_[(x - x0) / (x1 - x0), (y - y0) / (y1 - y0)])
+    points = np.concatenate(points) if points else np.empty((0, 2))
+    # Inset from the axes' edges by its own tick labels' room (left, bottom), which must not sit on the axes' own
+    corners = {(0.1, 0.1), (0.98 - size, 0.1), (0.1, 0.97 - size), (0.98 - size, 0.97 - size)}
+    insets = []
+    for x, y in small:
+        def covered(corner):
+            # the inset's rectangle, grown by a margin, and the zoomed curve kept out from under it
+            cx, cy = corner
+            inside = ((points[:, 0] > cx - 0.1) & (points[:, 0] < cx + size + 0.02)
+                      & (points[:, 1] > cy - 0.1) & (points[:, 1] < cy + size + 0.02))
+            own = (cx - 0.05 < (x.mean() - x0) / (x1 - x0) < cx + size + 0.05) and (cy - 0.05 < (y.mean() - y0) / (y1 - y0) < cy + size + 0.05)
+            return inside.sum() + (10 ** 9 if own else 0)
+        corner = min(sorted(corners), key=covered)
+        corners.discard(corner)
+        inset = ax.inset_axes([corner[0], corner[1], size, size])
+        for line in ax.get_lines():
+            inset.plot(line.get_xdata(), line.get_ydata(), ls=line.get_linestyle(), lw=line.get_linewidth(), color=line.get_color(),
+                       marker=line.get_marker(), ms=line.get_markersize() * 0.8, mfc=line.get_markerfacecolor(),
+                       mec=line.get_markeredgecolor(), zorder=line.get_zorder())
+        pad_x, pad_y = 0.15 * max(np.ptp(x), 1e-12), 0.15 * max(np.ptp(y), 1e-12)
+        inset.set_xlim(x.min() - pad_x, x.max() + pad_x)
+        inset.set_ylim(y.min() - pad_y, y.max() + pad_y)
+        inset.tick_params(labelsize=6)
+        inset.grid(alpha=0.3)
+        ax.indicate_inset_zoom(inset, edgecolor="0.4")
+        insets.append(inset)
+    return insets

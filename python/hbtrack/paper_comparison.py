@@ -16,7 +16,7 @@ import os
 import sys
 
 from .results import read_result, tracking_curve
-from .special_points import CurveExtremumType, numbered_limit_points, tracked_limit_point_label
+from .special_points import CurveExtremumType, numbered_limit_points
 
 
 def _load(path):
@@ -136,7 +136,9 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     # edges' curves and named once (LP1.. in omega order, as the tables), omega over our 1B (its
     # value in the label). The paper's curves are not digitised here: its resonance values are in
     # the table beside the figure, not drawn as lines across it.
-    from .figure_style import _plot_split, _stable_masks, marker_legend, stability_legend
+    from .figure_style import SPECIAL_MARKERS, _plot_split, _stable_masks, marker_legend, stability_legend
+    from .special_points import distinct_special_points, numbered_special_points
+    types = set()
     from .label_layout import place_labels
     senses = [("sense of the geometry", nfrc)] + ([("friction sense reversed", read_result(reversed_dir))] if reversed_dir else [])
     fig, axes = plt.subplots(1, len(senses), figsize=(6.5 if len(senses) == 1 else 11, 4.3), squeeze=False, sharey=True)
@@ -146,9 +148,13 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
         for key, colour, what in (("min_le", "C0", "leading edge"), ("min_te", "C1", "trailing edge")):
             _plot_split(ax, branch["omega"] / w1b, 1e3 * branch[key], stable, unstable, colour, what)
         lp_labels = []
-        for label, p in _limit_points(result["summary"]):
+        # Every special point (LP and NS: the NS points bound the unstable bands), named once
+        for label, p in numbered_special_points(distinct_special_points(result["summary"].get("special_points", []))):
+            if p["type"] not in ("LP", "NS") or "min_le" not in p:
+                continue
+            types.add(p["type"])
             for key, colour in (("min_le", "C0"), ("min_te", "C1")):
-                ax.plot(p["omega"] / w1b, 1e3 * p[key], "o", color=colour, mec="k", ms=5, ls="none", zorder=5)
+                ax.plot(p["omega"] / w1b, 1e3 * p[key], SPECIAL_MARKERS[p["type"]][0], color=colour, mec="k", ms=5, ls="none", zorder=5)
             lp_labels.append((p["omega"] / w1b, 1e3 * min(p["min_le"], p["min_te"]), label))
         ax.set_title(title, fontsize=9, loc="left")
         ax.set_xlabel(rf"$\omega / \omega_{{1B}}$ ($\omega_{{1B}}$ = {w1b:.1f} rad/s)")
@@ -156,8 +162,8 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
         ax._lp_labels = lp_labels
     axes[0, 0].set_ylabel(r"inward extreme of $r(t)$ [mm]")
     handles, labels = axes[0, 0].get_legend_handles_labels()
-    extra = stability_legend([r["branch"] for _, r in senses]) + marker_legend({"LP"})
-    fig.legend(handles + extra, labels + [h.get_label() for h in extra], loc="lower center", ncol=5, fontsize=8, frameon=False)
+    extra = stability_legend([r["branch"] for _, r in senses]) + marker_legend(types or {"LP"})
+    fig.legend(handles + extra, labels + [h.get_label() for h in extra], loc="lower center", ncol=len(handles + extra), fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.08, 1, 1))
     for ax in axes[0]:
         place_labels(ax, ax._lp_labels)
@@ -166,15 +172,24 @@ def write_figures(study_dir, paper, w1b, reversed_dir=None):
     summary = _load(os.path.join(study_dir, "summary.json"))
     entry = next((t for t in summary.get("tracking", []) if t["parameter"] == "amplitude"), None)
     if entry:
+        from .plots import _curve_name, _nfrc_points_on
+        nominal_marked = False
         from .study_figures import curve_label
         fig, ax = plt.subplots(figsize=(6.5, 4.6))
         for c in entry["curves"]:
             if "folder" in c:
                 track = read_result(os.path.join(study_dir, c["folder"]))
                 curve = tracking_curve(track)
-                label = curve_label(c, entry) or tracked_limit_point_label(nfrc["summary"].get("special_points", []),
-                                                                          track["summary"]["options"]["tracking"]) + " tracked"
-                ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=label)
+                # As the study's own figure names it: every fold of the NFRC on the curve (one curve can hold two)
+                label = curve_label(c, entry) or _curve_name(track, 0, nfrc["summary"].get("special_points", []))
+                line, = ax.plot(curve["omega"] / w1b, curve["amplitude"], lw=1.2, label=label)
+                if not c.get("from"):  # the nominal NFRC's folds on it, where it crosses the nominal A
+                    value = track["summary"]["start"]["amplitude"]
+                    for _, p in _nfrc_points_on(track, nfrc["summary"].get("special_points", [])):
+                        ax.plot(p["omega"] / w1b, value, "o", color=line.get_color(), mec="k", ms=5, zorder=5)
+                        nominal_marked = value
+        if nominal_marked is not False:  # one legend entry, in no curve's colour
+            ax.plot([], [], "o", color="0.7", mec="k", ms=5, ls="none", label=f"the nominal NFRC's LPs (A = {nominal_marked:g})")
         for kind, marker, text in ((CurveExtremumType.PARAMETER_MIN, "v", "this model, births (min of A)"),
                                    (CurveExtremumType.PARAMETER_MAX, "^", "this model, merges (max of A)")):
             points = [(e["omega"] / w1b, e["value"]) for e in entry.get("extrema", []) if e["type"] == kind]

@@ -17,9 +17,11 @@ from .figure_style import (  # noqa: F401 (the names plots has always offered)
     plt,
     save_figure,
     stability_legend,
+    zoom_small_curves,
 )
+from .output_descriptions import output_descriptions
 from .results import output_names, tracking_curve
-from .special_points import CurveExtremumType, SpecialPointType, tracked_limit_point_label
+from .special_points import CurveExtremumType, SpecialPointType, limit_points_on_curve, tracked_limit_point_label
 from .view_angle import least_hidden_view
 
 
@@ -64,8 +66,11 @@ def _response(columns, name, norm):
     return np.maximum(np.abs(np.asarray(columns[f"max_{name}"], float)), np.abs(np.asarray(columns[f"min_{name}"], float)))
 
 
-def _response_label(name, norm):
-    return rf"$\Vert {name}(t) \Vert_\infty$" if norm else f"max of {name} over a period"
+def _response_label(result, name, norm):
+    """The axis label of an output's response, the output by its description ("leading-edge tip,
+    radial", not the CSV stem "le", which mathtext set as an italic product)."""
+    what = output_descriptions(result).get(name, name)
+    return rf"$\Vert r(t) \Vert_\infty$ of {what}" if norm else f"max of {what} over a period"
 
 
 def _tracking_parameter(track):
@@ -102,8 +107,26 @@ def _curve_name(track, i, nfrc_special_points):
         return f"{_tracked_type(track)} point {options.get(key, i + 1)} tracked"
     lp = options.get("lp", i + 1)
     if nfrc_special_points:
-        return f"{tracked_limit_point_label(nfrc_special_points, options)} tracked"
+        start = tracked_limit_point_label(nfrc_special_points, options)
+        # Every limit point of the NFRC on the curve, as the study tracks a curve once
+        labels = [start] + [label for label, _ in _nfrc_points_on(track, nfrc_special_points) if label != start]
+        if len(labels) > 1:
+            return f"{', '.join(sorted(labels, key=lambda t: int(t[2:]) if t[2:].isdigit() else 0))} tracked (one curve)"
+        return f"{start} tracked"
     return f"limit point {lp} tracked"
+
+
+def _nfrc_points_on(track, nfrc_special_points):
+    """The NFRC's limit points on a limit-point curve tracked from it (special_points.limit_points_on_curve),
+    at its start's parameter value; none for a curve started from another NFRC (a "label")."""
+    if not nfrc_special_points or track.get("label") or _tracked_type(track) != SpecialPointType.LIMIT_POINT:
+        return []
+    param = _tracking_parameter(track)
+    value = (track["summary"].get("start") or {}).get(param, track["summary"]["options"].get("parameters", {}).get(param))
+    if value is None:
+        return []
+    curve = tracking_curve(track)
+    return limit_points_on_curve(nfrc_special_points, np.asarray(curve["omega"], float), np.asarray(curve[param], float), value)
 
 
 def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, isolas=(), norm=False, nfrc_special_points=None):
@@ -145,17 +168,25 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
     fig = plt.figure(figsize=(7, 5.5))
     ax = fig.add_subplot(projection="3d")
     drawn = []  # the tracking curves and isolas, which the view must keep apart (view_angle.py)
+    marked = False
     for i, track in enumerate(tracks):
         curve = tracking_curve(track)
         drawn.append((curve["omega"], curve[param], _response(curve, name, norm)))
         ax.plot(*drawn[-1], color=f"C{i}", lw=1.4, label=_curve_name(track, i, nfrc_special_points))
         for sp in _extrema(track):
             ax.scatter([sp["omega"]], [sp[param]], [_response(sp, name, norm)], marker="v" if sp["type"] == CurveExtremumType.PARAMETER_MIN else "^", color="k", s=30)
+        value = (track["summary"].get("start") or {}).get(param)
+        for _, sp in _nfrc_points_on(track, nfrc_special_points):
+            if f"max_{name}" in sp:
+                ax.scatter([sp["omega"]], [value], [_response(sp, name, norm)], marker="o", color=f"C{i}", edgecolor="k", s=25, zorder=6,
+                           label="the NFRC's LPs on the curves" if not marked else None)
+                marked = True
+    unknown = all(nfrc["branch"].get("stable") is None for nfrc in validations)
     for j, nfrc in enumerate(validations):
         value = nfrc["summary"]["options"]["parameters"][param]
         branch = nfrc["branch"]
         ax.plot(branch["omega"], np.full(len(branch["omega"]), value), _response(branch, name, norm), color="0.4", lw=0.9,
-                ls=":", label="NFRCs at fixed values" if j == 0 else None)
+                ls=":", label=("NFRCs at fixed values" + (" (stability not computed)" if unknown else "")) if j == 0 else None)
     for j, isola in enumerate(isolas):
         value = isola["summary"]["options"]["parameters"][param]
         branch = isola["branch"]
@@ -164,12 +195,17 @@ def tracking_3d_figure(tracks, output=None, validations=(), length_unit=None, is
     ax.view_init(*least_hidden_view(drawn, [ax.get_xlim3d(), ax.get_ylim3d(), ax.get_zlim3d()]))
     ax.set_xlabel(OMEGA_LABEL)
     ax.set_ylabel(parameter_label(param, length_unit))
-    ax.set_zlabel(length_label(_response_label(name, norm), length_unit))
+    ax.set_zlabel(length_label(_response_label(tracks[0], name, norm), length_unit))
     ax.set_title("limit-point tracking (v: min, ^: max of the parameter)", fontsize=10)
     # Beside the box: inside it, a study's legend covered the omega axis and its label
     fig.set_size_inches(9.5, 5.5)
     fig.subplots_adjust(left=0.0, right=0.68)
-    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.1, 0.95), borderaxespad=0)
+    # Long names (a study's curve from another NFRC) wrapped: one line ran past the figure's edge
+    import textwrap
+    handles, labels = ax.get_legend_handles_labels()
+    # at the figure's right edge: beside the box, a long z label (an output's description) ran under it
+    fig.legend(handles, [textwrap.fill(t, 44, subsequent_indent="  ") for t in labels], fontsize=8, loc="upper right",
+               bbox_to_anchor=(0.99, 0.9), borderaxespad=0)
     return fig
 
 
@@ -218,8 +254,12 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
         ax.plot(curve["omega"], curve[param], color=f"C{i}", lw=1.3, label=_curve_name(track, i, nfrc_special_points))
         start = track["summary"].get("start")
         if start:
-            ax.plot([start["omega"]], [start[param]], "o", color=f"C{i}", ms=5)
+            ax.plot([start["omega"]], [start[param]], "o", color=f"C{i}", ms=5, zorder=6)
             kinds.add("start")
+            for _, sp in _nfrc_points_on(track, nfrc_special_points):  # the NFRC's other folds on the curve
+                if abs(sp["omega"] - start["omega"]) > 1e-9 * abs(start["omega"]):
+                    ax.plot([sp["omega"]], [start[param]], "o", color=f"C{i}", ms=5, mfc="w", zorder=6)
+                    kinds.add("also")
         for sp in _extrema(track):
             ax.plot([sp["omega"]], [sp[param]], "v" if sp["type"] == CurveExtremumType.PARAMETER_MIN else "^", color="k", ms=7, zorder=5)
             coordinates.append((sp["omega"], sp[param], f"({sp['omega']:.6g}, {sp[param]:.4g})"))
@@ -248,19 +288,23 @@ def tracking_plane_figure(tracks, validations=(), length_unit=None, at=None, nfr
         meaning = {born: ("v", f"min of {param}: a pair of {points} born"), merged: ("^", f"max of {param}: a pair merges")}
     meaning["resonance"] = ("s", "NS curve ends on a fold (NS frequency 0)")
     meaning["start"] = ("o", "start: the NFRC's point tracked")
-    extra = [Line2D([], [], marker=meaning[k][0], color="0.4" if k == "start" else "k", ls="none", mfc="none" if k == "resonance" else None,
-                    ms=5 if k == "start" else 7, label=meaning[k][1])
-             for k in ("start", born, merged, "resonance") if k in kinds]
+    meaning["also"] = ("o", "the NFRC's other LPs on the curve")
+    extra = [Line2D([], [], marker=meaning[k][0], color="0.4" if k in ("start", "also") else "k", ls="none",
+                    mfc="none" if k == "resonance" else ("w" if k == "also" else None),
+                    ms=5 if k in ("start", "also") else 7, label=meaning[k][1])
+             for k in ("start", "also", born, merged, "resonance") if k in kinds]
     handles, labels = ax.get_legend_handles_labels()
     # Below the axes: "best" inside moves when the labels are added and covered curves and labels
     entries = len(handles) + len(extra)
-    ax.legend(handles + extra, labels + [h.get_label() for h in extra], fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.14),
-              ncol=2, frameon=False)
+    import textwrap  # long names (a study's curve from another NFRC) wrapped: they ran past the figure's edges
+    ax.legend(handles + extra, [textwrap.fill(t, 46, subsequent_indent="  ") for t in labels + [h.get_label() for h in extra]],
+              fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)
     fig.set_size_inches(6.5, 4.2 + 0.17 * ((entries + 1) // 2))
     fig.tight_layout()
     if len(coordinates) <= MAX_COORDINATE_LABELS:
         from .label_layout import place_labels
         place_labels(ax, coordinates)
+    zoom_small_curves(ax, [(c["omega"], c[param]) for c in map(tracking_curve, tracks)])
     return fig
 
 
@@ -324,7 +368,7 @@ def validation_figure(tracks, nfrcs, output=None, length_unit=None, norm=False):
     span = max(omegas.max() - omegas.min(), 1e-3 * abs(omegas.max()))
     ax.set_xlim(omegas.min() - 0.25 * span, omegas.max() + 0.25 * span)
     ax.set_xlabel(OMEGA_LABEL)
-    ax.set_ylabel(length_label(_response_label(name, norm), length_unit))
+    ax.set_ylabel(length_label(_response_label(tracks[0], name, norm), length_unit))
     ax.set_title("tracking curves and NFRCs (folds on the curves)", fontsize=10)
     ax.grid(alpha=0.3)
     if scale is not None:
@@ -429,8 +473,9 @@ def time_signals_figure(simulation, outputs=None, length_unit=None, descriptions
         ax.set_xlabel("t [s]")
         ax.set_ylabel(length_label((descriptions or {}).get(name, name), length_unit))
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-    axes[0, 0].set_title(f"steady state at ω = {omega:.6g} rad/s", fontsize=10)
+    # Above the first panel, not inside: inside it covered a flank of the signals (rotor 67)
+    axes[0, 0].legend(fontsize=8, loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=2, frameon=False, borderaxespad=0.2)
+    axes[0, 0].set_title(f"steady state at ω = {omega:.6g} rad/s", fontsize=10, loc="right")
     fig.tight_layout()
     return fig
 

@@ -209,3 +209,44 @@ def tracked_limit_point_label(special_points, tracking_options):
     'LP2'
     """
     return limit_point_label(special_points, tracking_options.get("lp", 0), tracking_options.get("lp_order", "summary"))
+
+
+def limit_points_on_curve(special_points, omega, values, value, relative=2e-3):
+    """The limit points of an NFRC that a tracking curve passes through: where the curve crosses
+    the NFRC's parameter value within `relative` of a limit point's omega. A limit-point curve
+    often runs through more than one of the NFRC's folds (rotor 67 in amplitude: LP1 and LP3 are
+    one curve), which the study then tracks once.
+
+    Parameters
+    ----------
+    special_points : sequence of dict
+        summary.json's special_points of the NFRC.
+    omega, values : array_like
+        The curve's omega and tracked parameter, in curve order (results.tracking_curve).
+    value : float
+        The NFRC's value of the parameter.
+    relative : float, optional
+        The tolerance on omega, relative to the limit point's.
+
+    Returns
+    -------
+    list of (label, point dict)
+        In omega order, labelled as numbered_limit_points labels them.
+
+    Examples
+    --------
+    >>> lps = [{"type": "LP", "omega": 1.0}, {"type": "LP", "omega": 2.0}, {"type": "LP", "omega": 3.0}]
+    >>> [label for label, _ in limit_points_on_curve(lps, [1.0, 2.5, 3.0], [1.0, 0.0, 1.0], 1.0)]
+    ['LP1', 'LP3']
+    """
+    crossings = []
+    for i in range(len(omega) - 1):
+        a, b = values[i] - value, values[i + 1] - value
+        if a == 0.0:
+            crossings.append(omega[i])
+        elif a * b < 0.0:
+            crossings.append(omega[i] + (omega[i + 1] - omega[i]) * a / (a - b))
+    if len(omega) and values[-1] == value:
+        crossings.append(omega[-1])
+    return [(label, sp) for label, sp in numbered_limit_points(special_points)
+            if any(abs(w - sp["omega"]) <= relative * abs(sp["omega"]) for w in crossings)]

@@ -19,6 +19,7 @@ import sys
 
 from . import plots
 from .analysis_figures import period_doubled_figure
+from .figure_style import MODEL_LENGTH, PARAMETER_UNITS
 from .overlay_figures import overlay_figure
 from .plot import figures_for
 from .results import read_result
@@ -45,10 +46,11 @@ def _nfrc_figures(study_dir, summary, length_unit, read=read_result):
     return figures
 
 
-def curve_label(curve, entry):
+def curve_label(curve, entry, scale=1.0, unit=None):
     """The legend text of a tracking curve the study started from a validation NFRC's limit
     point (its summary's "from", e.g. "validate_mu_1 LP2"): that NFRC named by its parameter
-    value, not by its folder (the nominal NFRC's numbering does not apply to it).
+    value, not by its folder (the nominal NFRC's numbering does not apply to it); a validation
+    computed again over a wider range (its "beyond" folder) says so.
 
     Parameters
     ----------
@@ -56,6 +58,10 @@ def curve_label(curve, entry):
         An entry of the study summary's tracking[].curves.
     entry : dict
         Its tracking[] entry (parameter, validations).
+    scale : float, optional
+        The factor from the model's value to the figure's (a clearance in mm: 1000).
+    unit : str, optional
+        The value's unit in the figure, written after it.
 
     Returns
     -------
@@ -66,23 +72,39 @@ def curve_label(curve, entry):
     --------
     >>> curve_label({"from": "validate_mu_1 LP2"}, {"parameter": "mu", "validations": [{"folder": "validate_mu_1", "value": 1e-4}]})
     'LP2 of the NFRC at mu = 0.0001, tracked'
+    >>> curve_label({"from": "validate_clearance_1_beyond LP1"}, {"parameter": "clearance", "validations": [
+    ...     {"folder": "validate_clearance_1", "value": 1e-4, "beyond": {"folder": "validate_clearance_1_beyond"}}]}, 1000.0, "mm")
+    'LP1 of the NFRC at clearance = 0.1 mm (wider range), tracked'
     """
     if not curve.get("from"):
         return None
     folder, _, point = curve["from"].partition(" ")
-    value = next((v["value"] for v in entry.get("validations", []) if v["folder"] == folder), None)
-    if value is None:
-        return f"{point} of another NFRC, tracked"
-    return f"{point} of the NFRC at {entry['parameter']} = {value:.4g}, tracked"
+    for v in entry.get("validations", []):
+        wider = (v.get("beyond") or {}).get("folder") == folder
+        if v["folder"] == folder or wider:
+            value = f"{v['value'] * scale:.4g}" + (f" {unit}" if unit else "")
+            return f"{point} of the NFRC at {entry['parameter']} = {value}{' (wider range)' if wider else ''}, tracked"
+    return f"{point} of another NFRC, tracked"
 
 
-def _study_curve(read, study_dir, curve, entry):
-    """A tracking curve of the study's summary, read and named (curve_label)."""
+def _study_curve(read, study_dir, curve, entry, factor=1.0, length_unit=None):
+    """A tracking curve of the study's summary, read and named (curve_label), a length
+    parameter's value in the figure's unit."""
     track = read(os.path.join(study_dir, curve["folder"]))
-    label = curve_label(curve, entry)
+    length = PARAMETER_UNITS.get(entry["parameter"]) == MODEL_LENGTH
+    label = curve_label(curve, entry, factor if length else 1.0, length_unit if length else None)
     if label:
         track["label"] = label
     return track
+
+
+def _validation_folder(study_dir, validation):
+    """A validation NFRC's folder; its "beyond" folder when the study computed it again over a wider
+    range (its limit points are the ones the study compares, study.md)."""
+    beyond = (validation.get("beyond") or {}).get("folder")
+    if beyond and os.path.exists(os.path.join(study_dir, beyond, "branch.csv")):
+        return beyond
+    return validation["folder"]
 
 
 def study_figures(study_dir, length_unit=None, model_unit=None):
@@ -119,13 +141,14 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
     nominal_points = None  # the curves are named by the nominal NFRC's limit points, as its figure has them
     if os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
         figures.update(_nfrc_figures(study_dir, summary, length_unit, read))
-        nominal_points = read_result(os.path.join(study_dir, "nfrc"))["special_points"]
+        nominal_points = read(os.path.join(study_dir, "nfrc"))["special_points"]  # lengths scaled: drawn on the curves
     for entry in summary.get("tracking", []):
         param = entry["parameter"]
-        tracks = [_study_curve(read, study_dir, c, entry) for c in entry["curves"] if "folder" in c]
+        tracks = [_study_curve(read, study_dir, c, entry, factor, length_unit) for c in entry["curves"] if "folder" in c]
         if not tracks:
             continue
-        nfrcs = [read(os.path.join(study_dir, v["folder"])) for v in entry.get("validations", [])]
+        # A validation computed again over a wider range (its "beyond" folder) holds the folds compared
+        nfrcs = [read(os.path.join(study_dir, _validation_folder(study_dir, v))) for v in entry.get("validations", [])]
         isolas = []
         for v, nfrc in zip(entry.get("validations", []), nfrcs):
             for branch in v.get("isola_branches", []):

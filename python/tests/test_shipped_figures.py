@@ -229,3 +229,34 @@ def test_overlaid_nfrcs_differing_in_a_parameter_are_named_by_it():
     assert legend_labels([at_rest, louder]) == ["NFRC, amplitude = 140", "NFRC, amplitude = 200"]
     # Equal parameters and harmonics: told apart by number, as before.
     assert legend_labels([at_rest, dict(at_rest)]) == ["NFRC", "NFRC, branch 2"]
+
+
+def test_tracking_figure_names_and_marks_every_fold_of_the_nfrc_on_a_curve(runs):
+    # The absorber's LP1 curve runs through the cusp to LP2 at the nominal amplitude: a study
+    # tracks it once, and rotor 67's "LP1 tracked" left LP3 unnamed and unmarked on it.
+    from hbtrack.special_points import numbered_limit_points
+    nfrc = runs["nltva"]
+    figure = plots.tracking_plane_figure(runs["nltva_track"], nfrc_special_points=nfrc["special_points"])
+    ax = figure.get_axes()[0]
+    assert "LP1, LP2 tracked (one curve)" in legend_texts(figure)
+    value = runs["nltva_track"]["summary"]["start"]["amplitude"]
+    marked = [float(line.get_xdata()[0]) for line in ax.get_lines() if line.get_marker() == "o" and len(line.get_xdata()) == 1
+              and float(line.get_ydata()[0]) == value]
+    lps = [sp["omega"] for _, sp in numbered_limit_points(nfrc["special_points"])]
+    assert sorted(marked) == pytest.approx(sorted(lps))  # each fold of the NFRC marked once, where the curve crosses its value
+    plt.close("all")
+
+
+def test_a_curve_too_small_to_see_gets_an_inset_and_outputs_are_named_by_their_description(runs):
+    from hbtrack.figure_style import zoom_small_curves
+    fig, ax = plt.subplots()
+    ax.plot([0.0, 100.0], [0.0, 1.0])
+    ax.plot([50.0, 50.5, 50.2], [0.5, 0.502, 0.505])  # rotor 67's closed curve in mu: 1.5 % of each span
+    assert len(zoom_small_curves(ax, [([0.0, 100.0], [0.0, 1.0]), ([50.0, 50.5, 50.2], [0.5, 0.502, 0.505])])) == 1
+    track = {**runs["nltva_track"], "summary": dict(runs["nltva_track"]["summary"])}
+    name = plots.output_names(track)[0]
+    track["summary"]["outputs"] = [{"name": name, "description": "absorber mass"}]  # as a case's [[outputs]] description gives it
+    for norm in (True, False):
+        figure = plots.validation_figure(track, [runs["nltva"]], norm=norm)
+        assert "absorber mass" in figure.get_axes()[0].get_ylabel()  # not the CSV stem (rotor 67's "le", set as a mathtext product)
+    plt.close("all")

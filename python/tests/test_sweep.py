@@ -45,3 +45,25 @@ def test_thread_pool_example_gives_the_cli_numbers(tmp_path):
     peak = hbtrack.read_result(folder)["branch"]["max_x"].max()
     # The same library computes both; the example prints 10 significant digits.
     assert rows[8][:2] == ["1.4", "7"] and abs(float(rows[8][3]) - peak) <= 1e-9 * peak
+
+
+def test_sweep_map_marks_nfrcs_that_left_the_range_and_says_no_fold(tmp_path):
+    # The blade sweep of sweeps.md: 34 of 64 NFRCs leave the frequency range (their peak and
+    # folds are the part computed) and one has no fold: the map must say both, not draw them
+    # as complete results and a blank.
+    import json
+    from hbtrack.sweep_figures import sweep_figure
+    folder = tmp_path / "sweep"
+    (folder / "tasks" / "0000").mkdir(parents=True)
+    (folder / "sweep.json").write_text(json.dumps({"parameters": ["clearance", "mu"]}))
+    (folder / "tasks" / "0000" / "summary.json").write_text(json.dumps({"outputs": [{"name": "le", "description": "leading edge"}]}))
+    rows = ["task,clearance,mu,status,points,peak_max_le,lps,lp1_omega",
+            "0,1,1,reached_end,9,0.5,0,", "1,1,2,left_range,9,0.4,1,2000", "2,2,1,reached_end,9,0.6,2,2010", "3,2,2,reached_end,9,0.7,2,2020"]
+    (folder / "sweep.csv").write_text("\n".join(rows) + "\n")
+    figure = sweep_figure(str(folder))
+    maps = [ax for ax in figure.get_axes() if ax.get_images()]
+    texts = [[t.get_text() for t in ax.texts] for ax in maps]
+    assert "0.4*" in texts[0] and "2000*" in texts[1] and "no fold" in texts[1]
+    assert any("left the frequency range" in t.get_text() for t in figure.texts)
+    assert "leading edge" in figure.get_axes()[2].get_ylabel()  # the peak's colour bar: the output's description
+    plots.plt.close("all")
