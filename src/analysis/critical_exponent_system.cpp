@@ -124,7 +124,15 @@ void CriticalExponentSystem::solve_bordered(bool left) {
   v_ = right.head(n);
   g_ = right(n);
   has_left_ = left;
-  if (left) w_ = Eigen::PartialPivLU<MatrixXcd>(bordered_.adjoint()).solve(e).head(n);
+  // The left vector from the same factors (a second factorisation, of B^H, cost as much as the
+  // first). P B = L U, so B^H w = e is U^H L^H P w = e: two triangular solves and P^T.
+  // (Eigen 3.4's lu.adjoint().solve does not compile for a complex PartialPivLU.)
+  if (left) {
+    VectorXcd y = e;
+    lu_.matrixLU().triangularView<Eigen::Upper>().adjoint().solveInPlace(y);
+    lu_.matrixLU().triangularView<Eigen::UnitLower>().adjoint().solveInPlace(y);
+    w_ = (lu_.permutationP().transpose() * y).head(n);
+  }
 }
 
 void CriticalExponentSystem::evaluate(const VectorXd& u, double gamma, VectorXd& r, MatrixXd* jacobian, VectorXd* r_gamma) {
