@@ -4,7 +4,7 @@ parameter) plane, with the located extrema of the parameter (min: a pair of limi
 max: a pair disappears) marked, and the special points of NFRCs at other parameter values
 (--validate). A thin wrapper of hbtrack.plots.tracking_plane_figure.
 
-    /usr/bin/python3 python/plot_tracking.py TRACK_DIR [TRACK_DIR ...] [--validate FRC_DIR ...] -o FIGURE.png
+    /usr/bin/python3 python/plot_tracking.py TRACK_DIR [TRACK_DIR ...] [--validate FRC_DIR ...] [--units m] -o FIGURE.png
 """
 import argparse
 import os
@@ -21,6 +21,7 @@ def main():
     parser.add_argument("folders", nargs="+")
     parser.add_argument("-o", "--output", required=True, help="figure file")
     parser.add_argument("--title", default="")
+    parser.add_argument("--units", help="the model's length unit (e.g. m), for a length parameter's axis label")
     parser.add_argument("--zoom", help="OMEGA_LO:OMEGA_HI:PARAM_LO:PARAM_HI, the window drawn (legend moved below it)")
     parser.add_argument("--validate", action="append", default=[],
                         help="an frc folder at another parameter value: its points of the tracked types marked (repeat)")
@@ -31,7 +32,8 @@ def main():
         sys.exit("not a track result: " + ", ".join(t["folder"] for t in tracks if t["kind"] != "track"))
     if len({t["summary"]["options"]["tracking"]["parameter"] for t in tracks}) != 1:
         sys.exit("the folders track different parameters")
-    figure = plots.tracking_plane_figure(tracks, validations=[read_result(folder) for folder in args.validate])
+    figure = plots.tracking_plane_figure(tracks, validations=[read_result(folder) for folder in args.validate],
+                                         length_unit=args.units)
     if args.zoom:
         axes = figure.get_axes()[0]
         lo, hi, param_lo, param_hi = (float(v) for v in args.zoom.split(":"))
