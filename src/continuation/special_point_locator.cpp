@@ -33,6 +33,7 @@ bool Locator::locate(size_t which, const VectorXd& x0, const VectorXd& t0, doubl
     VectorXd y;
     Tangent tan;
     if (!point_at(x0, t0, c, y, tan)) return false;
+    if ((y - (x0 + (c / span) * (x1 - x0))).norm() > (x1 - x0).norm()) return false;
     const double fc = value(which, y, tan, reference_log_det);
     y_out = y;
     tan_out = tan;

@@ -24,7 +24,10 @@ struct Locator {
   // Corrected point at plane coordinate `arc` from x0; fills its tangent. False if Newton fails.
   bool point_at(const VectorXd& x0, const VectorXd& t0, double arc, VectorXd& y, Tangent& tan);
   double value(size_t which, const VectorXd& y, const Tangent& tan, double reference_log_det);
-  // Returns true and the located point when the iteration converged.
+  // Returns true and the located point when the iteration converged on the bracket's stretch of
+  // branch: a corrected point further than the bracket's length from the chord x0 -> x1 is on
+  // another part of the curve (a sharp turn within the step, as an NS curve makes where its
+  // frequency reaches 0), and the zero is then left unlocated.
   bool locate(size_t which, const VectorXd& x0, const VectorXd& t0, double f0, const VectorXd& x1, double f1, double reference_log_det,
               VectorXd& y_out, Tangent& tan_out);
 };
