@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -94,7 +96,69 @@ VectorXd some_torus(const TorusSystem& system, double amplitude, double omega2) 
   return u;
 }
 
+// The absorber with a third, linear dof on the primary (mass 0.02, spring 5, damper 0.002: its
+// own frequency 15.8 rad/s, far above the band): the torus condenses it out unless an output reads it.
+std::string absorber_with_a_linear_dof(bool output_on_it) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / (output_on_it ? "hbtrack_torus_three_dofs_all.toml" : "hbtrack_torus_three_dofs.toml");
+  std::ofstream out(path);
+  out << "[model]\ndofs = [\"x1\", \"x2\", \"x3\"]\n"
+         "M = [[1.0, 0.0, 0.0], [0.0, 0.05, 0.0], [0.0, 0.0, 0.02]]\n"
+         "K = [[6.0454, -0.0454, -5.0], [-0.0454, 0.0454, 0.0], [-5.0, 0.0, 5.0]]\n"
+         "[damping]\nC = [[0.0168, -0.0128, -0.002], [-0.0128, 0.0128, 0.0], [-0.002, 0.0, 0.002]]\n"
+         "[[forcing]]\ndof = \"x1\"\ncos = 1.0\n[parameters]\namplitude = 0.12\n"
+         "[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"x1\"]\ncubic_stiffness = 1.0\n"
+         "[[elements]]\ntype = \"cubic_spring\"\ndofs = [\"x2\", \"x1\"]\ncubic_stiffness = 0.0042\n"
+         "[harmonic_balance]\nharmonics = 5\nsamples = 64\n"
+         "[continuation]\nomega_start = 0.5\nomega_end = 2.5\nstep = 0.01\n"
+         "[[outputs]]\nname = \"x1\"\ndof = \"x1\"\n[[outputs]]\nname = \"x2\"\ndof = \"x2\"\n";
+  if (output_on_it) out << "[[outputs]]\nname = \"x3\"\ndof = \"x3\"\n";
+  return path.string();
+}
+
 }  // namespace
+
+TEST(Torus, CondensedResidualJacobianMatchesCentralDifferences) {
+  // x3 condensed out pair by pair: the Schur complement's frequency derivative (omega2 column,
+  // d/domega) and the forcing it carries.
+  const CaseDefinition c = load_case(absorber_with_a_linear_dof(false));
+  HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+  TorusSystem condensed(hbm, TorusBasis(5, 3, 64, 16), tracking_scales(hbm, c.nfrc, 0.3), torus_retained_dofs(hbm, c.outputs));
+  ASSERT_EQ(condensed.dofs(), 2);
+  expect_jacobian_matches_differences(condensed, some_torus(condensed, 0.5, 0.1), 1.15, "absorber with x3 condensed out");
+}
+
+TEST(Torus, CondensedBranchEqualsTheFullOne) {
+  // The same model with x3 an output (kept) and not (condensed out): the NS point, the first
+  // torus (its size fixed, omega free) and the envelopes agree to the Newton tolerance.
+  std::vector<TorusBranchResult> runs;
+  for (const bool keep : {true, false}) {
+    const CaseDefinition c = load_case(absorber_with_a_linear_dof(keep));
+    HarmonicBalance hbm(c.model, c.elements, c.parameters, c.harmonic_balance);
+    std::vector<SpecialPoint> ns;
+    for (const SpecialPoint& sp : compute_nfrc(hbm, c.nfrc, {}).continuation.special_points)
+      if (sp.type == SpecialPointType::neimark_sacker && sp.located) ns.push_back(sp);
+    ASSERT_FALSE(ns.empty());
+    std::sort(ns.begin(), ns.end(), [](const SpecialPoint& a, const SpecialPoint& b) { return a.lambda < b.lambda; });
+    TorusOptions o;
+    o.omega_min = 1.0, o.omega_max = 1.3, o.continuation = c.nfrc.continuation, o.continuation.max_points = 1;
+    runs.push_back(torus_branch(hbm, ns[0].u, ns[0].lambda, tracking_scales(hbm, c.nfrc, 0.3), o, c.outputs));
+    ASSERT_EQ(runs.back().points.size(), 2u);
+  }
+  const TorusPoint &full = runs[0].points[1], &condensed = runs[1].points[1];
+  std::printf("first torus: omega %.10f / %.10f, omega2 %.10f / %.10f, max x2 %.8f / %.8f\n", full.omega, condensed.omega, full.omega2,
+              condensed.omega2, full.envelope[1].max, condensed.envelope[1].max);
+  EXPECT_EQ(runs[0].phase_dof, runs[1].phase_dof);
+  // Both Newton solves stop at a residual of 1e-8 of the force (the case's tolerance): the
+  // unknowns agree to about that times the system's condition, far below the torus' own
+  // omega - omega_NS (1e-4): 1e-7.
+  EXPECT_NEAR(full.omega, condensed.omega, 1e-7);
+  EXPECT_NEAR(full.omega2, condensed.omega2, 1e-7);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_NEAR(full.envelope[static_cast<size_t>(k)].max, condensed.envelope[static_cast<size_t>(k)].max, 1e-7);
+    EXPECT_NEAR(full.envelope[static_cast<size_t>(k)].min, condensed.envelope[static_cast<size_t>(k)].min, 1e-7);
+  }
+}
 
 TEST(Torus, ResidualJacobianMatchesCentralDifferences) {
   Absorber a;

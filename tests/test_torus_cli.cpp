@@ -128,7 +128,7 @@ TEST(TorusCli, BadInputIsOneLineNamingTheFlag) {
       {" --ns 1 --range 1.0:1.3 --samples 64,5", "--samples: must be N1 >= 2 H1 + 1 = 11 and N2 >= 2 H2 + 1 = 9"},
       {" --ns 0 --range 1.0:1.3", "--ns"},
       {" --ns 1 --range 1.0:1.3 --harmonics 40,30",
-       "--harmonics: the torus would have 9883 unknowns (2 dofs x 4941 coefficients), at most 4000"},
+       "--harmonics: the torus would have 9883 unknowns (2 retained dofs x 4941 coefficients), at most 8000"},
       {" --ns 1 --range 1.0:1.3 --samples 4096,4096", "--samples: the grid of 16777216 samples times 99 coefficients is above 8388608"},
   };
   for (const auto& c : cases) {

@@ -53,6 +53,21 @@ MatrixXd eigenvector_samples(const VectorXcd& v, int n, const FourierBasis& peri
   return out;
 }
 
+// The columns of `samples` (grid x model-or-Hill dofs, `dof_of` mapping a column to its model
+// dof) that the torus keeps, in its column order.
+MatrixXd retained_columns(const MatrixXd& samples, const std::vector<int>& dof_of, const TorusSystem& system) {
+  MatrixXd out = MatrixXd::Zero(samples.rows(), system.dofs());
+  for (size_t k = 0; k < dof_of.size(); ++k)
+    if (const int column = system.column(dof_of[k]); column >= 0) out.col(column) = samples.col(static_cast<Eigen::Index>(k));
+  return out;
+}
+
+std::vector<int> identity_dofs(int n) {
+  std::vector<int> dofs(static_cast<size_t>(n));
+  for (int d = 0; d < n; ++d) dofs[static_cast<size_t>(d)] = d;
+  return dofs;
+}
+
 // x(theta1, theta2) of one dof (its coefficients in the basis' layout), its gradient and Hessian.
 struct TorusValue {
   double x = 0, g1 = 0, g2 = 0, h11 = 0, h12 = 0, h22 = 0;
@@ -111,7 +126,8 @@ std::vector<TorusEnvelope> envelope_of(const TorusSystem& system, const VectorXd
   const Eigen::Map<const MatrixXd> x(u.data(), system.dofs(), system.basis().coefficients());
   std::vector<TorusEnvelope> out;
   for (const OutputDof& o : outputs) {
-    const VectorXd coefficients = x.row(o.dof).transpose(), values = grid.col(o.dof);
+    const int column = system.column(o.dof);
+    const VectorXd coefficients = x.row(column).transpose(), values = grid.col(column);
     out.push_back(
         {refined_extreme(system.basis(), coefficients, values, 1.0), refined_extreme(system.basis(), coefficients, values, -1.0)});
   }
@@ -149,6 +165,17 @@ bool TorusBranchResult::success() const {
          stop_reason == StopReason::max_points;
 }
 
+std::vector<int> torus_retained_dofs(const HarmonicBalance& hbm, const std::vector<OutputDof>& outputs) {
+  std::vector<char> kept(static_cast<size_t>(hbm.model().dofs()), 0);
+  for (const auto& element : hbm.elements())
+    for (const int d : element->dofs) kept[static_cast<size_t>(d)] = 1;
+  for (const OutputDof& o : outputs) kept[static_cast<size_t>(o.dof)] = 1;
+  std::vector<int> retained;
+  for (int d = 0; d < hbm.model().dofs(); ++d)
+    if (kept[static_cast<size_t>(d)]) retained.push_back(d);
+  return retained;
+}
+
 TorusOptions resolved_torus_options(const HarmonicBalance& hbm, TorusOptions o) {
   if (o.h1 == 0) o.h1 = hbm.options().harmonics;
   if (o.n1 == 0) o.n1 = std::max(hbm.options().effective_samples(), power_of_two_above(4 * o.h1));
@@ -159,7 +186,7 @@ TorusOptions resolved_torus_options(const HarmonicBalance& hbm, TorusOptions o) 
 TorusBranchResult torus_branch(const HarmonicBalance& hbm, const VectorXd& x_ns, double omega_ns, const FoldScales& scales,
                                const TorusOptions& options, const std::vector<OutputDof>& outputs, const TorusObserver& observer) {
   const TorusOptions o = resolved_torus_options(hbm, options);
-  TorusSystem system(hbm, TorusBasis(o.h1, o.h2, o.n1, o.n2), scales);
+  TorusSystem system(hbm, TorusBasis(o.h1, o.h2, o.n1, o.n2), scales, torus_retained_dofs(hbm, outputs));
   const int n = system.dofs(), m = system.harmonic_unknowns();
 
   // The NS point on its defining system at these parameters, and Hill's eigenvector there.
@@ -180,28 +207,38 @@ TorusBranchResult torus_branch(const HarmonicBalance& hbm, const VectorXd& x_ns,
   if (z(q) < 0) v = v.conjugate();  // Re(e^{-i |nu| t} v) = Re(e^{i |nu| t} conj(v))
 
   HarmonicBalance evaluator(hbm);
+  const int model_dofs = hbm.model().dofs();
   const VectorXd full = evaluator.expand(z.head(q), result.omega_ns);
-  const MatrixXd periodic = periodic_samples(full, n, system.basis());
+  const MatrixXd periodic = retained_columns(periodic_samples(full, model_dofs, system.basis()), identity_dofs(model_dofs), system);
   VectorXd u_periodic(system.size());
   u_periodic << system.project(periodic), result.nu;
-  VectorXd shape = system.project(eigenvector_samples(v, n, hbm.basis(), system.basis()));
+  // Hill's pencil is on every dof or on the balance's retained ones.
+  const int hill_dofs = static_cast<int>(v.size()) / hbm.basis().coefficients();
+  const std::vector<int> hill_dof_of = hill_dofs == model_dofs ? identity_dofs(model_dofs) : hbm.retained();
+  if (static_cast<int>(hill_dof_of.size()) != hill_dofs) throw std::logic_error("torus: Hill's eigenvector fits neither dof list");
+  const auto shape_of = [&](const VectorXcd& vector) {
+    return system.project(retained_columns(eigenvector_samples(vector, hill_dofs, hbm.basis(), system.basis()), hill_dof_of, system));
+  };
+  VectorXd shape = shape_of(v);
 
   // The phase pair: where the eigenvector is largest; v turned so that its sine coefficient is 0.
   double largest = -1;
+  int phase_column = 0;
   for (int p = 1; p < system.basis().pairs(); ++p) {
     if (system.basis().pair(p).second == 0) continue;
     for (int d = 0; d < n; ++d) {
       const double size = std::hypot(shape(system.index(TorusBasis::cosine(p), d)), shape(system.index(TorusBasis::sine(p), d)));
-      if (size > largest) largest = size, result.phase_pair = p, result.phase_dof = d;
+      if (size > largest) largest = size, result.phase_pair = p, phase_column = d;
     }
   }
   if (!(largest > 0)) throw std::runtime_error("torus: Hill's eigenvector at the NS point has no (k1, +-1) content");
-  system.set_phase_condition(result.phase_pair, result.phase_dof);
+  system.set_phase_condition(result.phase_pair, phase_column);
+  result.phase_dof = system.retained()[static_cast<size_t>(phase_column)];
   std::tie(result.k1, result.k2) = system.basis().pair(result.phase_pair);
-  const double psi = std::atan2(shape(system.index(TorusBasis::sine(result.phase_pair), result.phase_dof)),
-                                shape(system.index(TorusBasis::cosine(result.phase_pair), result.phase_dof)));
+  const double psi = std::atan2(shape(system.index(TorusBasis::sine(result.phase_pair), phase_column)),
+                                shape(system.index(TorusBasis::cosine(result.phase_pair), phase_column)));
   v *= std::polar(1.0 / largest, psi / result.k2);
-  shape = system.project(eigenvector_samples(v, n, hbm.basis(), system.basis()));
+  shape = shape_of(v);
 
   TorusPoint ns_row;
   ns_row.omega = result.omega_ns;
@@ -215,7 +252,7 @@ TorusBranchResult torus_branch(const HarmonicBalance& hbm, const VectorXd& x_ns,
   }
 
   // The first torus: its size fixed at eps, omega free.
-  const double eps = o.start_fraction * periodic.col(result.phase_dof).cwiseAbs().maxCoeff();
+  const double eps = o.start_fraction * periodic.col(phase_column).cwiseAbs().maxCoeff();
   VectorXd u = u_periodic;
   u.head(m) += eps * shape.head(m);
   double omega = result.omega_ns;

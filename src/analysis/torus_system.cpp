@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,16 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 namespace {
+using Complex = std::complex<double>;
+using Eigen::VectorXcd;
+
+std::vector<int> retained_or_every_dof(const StructuralModel& model, std::vector<int> retained) {
+  if (!retained.empty()) return retained;
+  std::vector<int> every(static_cast<size_t>(model.dofs()));
+  for (int d = 0; d < model.dofs(); ++d) every[static_cast<size_t>(d)] = d;
+  return every;
+}
+
 // Why element e cannot be evaluated pointwise on the torus grid ("" when it can).
 std::string torus_refusal(const NonlinearElement& e) {
   if (e.history_dependent()) return "its force depends on its past (hysteresis): a torus has no period to find its steady state on";
@@ -22,12 +33,19 @@ std::string torus_refusal(const NonlinearElement& e) {
 }
 }  // namespace
 
-TorusSystem::TorusSystem(const HarmonicBalance& hbm, TorusBasis basis, const FoldScales& scales)
-    : hbm_(hbm), basis_(std::move(basis)), scales_(scales), dofs_(hbm.model().dofs()) {
+TorusSystem::TorusSystem(const HarmonicBalance& hbm, TorusBasis basis, const FoldScales& scales, std::vector<int> retained)
+    : hbm_(hbm), basis_(std::move(basis)), scales_(scales), linear_(hbm.model(), retained_or_every_dof(hbm.model(), retained)) {
+  retained_ = linear_.retained();
+  dofs_ = static_cast<int>(retained_.size());
+  column_of_.assign(static_cast<size_t>(hbm_.model().dofs()), -1);
+  for (int k = 0; k < dofs_; ++k) column_of_[static_cast<size_t>(retained_[static_cast<size_t>(k)])] = k;
   if (hbm_.subharmonic() != 1) throw std::invalid_argument("torus: harmonic_balance.subharmonic must be 1");
   for (size_t i = 0; i < hbm_.elements().size(); ++i)
     if (const std::string why = torus_refusal(*hbm_.elements()[i]); !why.empty())
       throw std::invalid_argument("torus: elements[" + std::to_string(i) + "] (" + hbm_.elements()[i]->type() + "): " + why);
+  for (const auto& element : hbm_.elements())
+    for (const int d : element->dofs)
+      if (column(d) < 0) throw std::invalid_argument("torus: the retained dofs miss dof " + std::to_string(d) + " of an element");
   for (const HarmonicForce& f : hbm_.model().forcing)
     if (f.order > basis_.h1())
       throw std::invalid_argument("torus: the forcing's harmonic " + std::to_string(f.order) +
@@ -60,49 +78,46 @@ VectorXd TorusSystem::project(const MatrixXd& grid_samples) const {
 
 void TorusSystem::add_linear_part(const VectorXd& u, double omega, VectorXd& r, MatrixXd* jacobian, VectorXd* r_omega) const {
   const StructuralModel& model = hbm_.model();
-  const MatrixXd &m = model.mass, &c = model.damping, &k = model.stiffness;
   const double omega2 = u(harmonic_unknowns());
   const int n = dofs_, w2 = harmonic_unknowns();
-  r.segment(0, n).noalias() += k * u.segment(0, n);
-  if (jacobian) jacobian->block(0, 0, n, n) += k;
-  for (int p = 1; p < basis_.pairs(); ++p) {
-    const auto [k1, k2] = basis_.pair(p);
-    const double w = k1 * omega + k2 * omega2;
-    const int ia = index(TorusBasis::cosine(p), 0), ib = index(TorusBasis::sine(p), 0);
-    const VectorXd a = u.segment(ia, n), b = u.segment(ib, n);
-    const MatrixXd stiffness = k - w * w * m;
-    r.segment(ia, n).noalias() += stiffness * a + w * (c * b);
-    r.segment(ib, n).noalias() += stiffness * b - w * (c * a);
-    if (!jacobian) continue;
-    jacobian->block(ia, ia, n, n) += stiffness;
-    jacobian->block(ib, ib, n, n) += stiffness;
-    jacobian->block(ia, ib, n, n) += w * c;
-    jacobian->block(ib, ia, n, n) -= w * c;
-    // d/dOmega, times dOmega/domega2 = k2 and dOmega/domega = k1.
-    const VectorXd da = -2.0 * w * (m * a) + c * b, db = -2.0 * w * (m * b) - c * a;
-    jacobian->block(ia, w2, n, 1) += k2 * da;
-    jacobian->block(ib, w2, n, 1) += k2 * db;
-    if (r_omega) {
-      r_omega->segment(ia, n) += k1 * da;
-      r_omega->segment(ib, n) += k1 * db;
-    }
-  }
-  // The forcing, on the pairs (k, 0).
   const double amplitude = hbm_.parameter_values()[static_cast<size_t>(hbm_.amplitude_parameter())];
   const double g = model.forcing_growth.factor(omega), dg = model.forcing_growth.derivative(omega);
+  // The unit forcing of each pair (k, 0) as complex amplitudes cos - i sin (the mean: its value).
+  std::vector<VectorXcd> forcing(static_cast<size_t>(basis_.pairs()));
   for (const HarmonicForce& f : model.forcing) {
-    if (f.order == 0) {
-      r.segment(0, n) -= amplitude * g * f.cos_part;
-      if (r_omega) r_omega->segment(0, n) -= amplitude * dg * f.cos_part;
-      continue;
+    const int p = f.order == 0 ? 0 : basis_.find_pair(f.order, 0);
+    VectorXcd& at = forcing[static_cast<size_t>(p)];
+    if (at.size() == 0) at = VectorXcd::Zero(model.dofs());
+    at += f.cos_part.cast<Complex>();
+    if (f.order != 0) at -= Complex(0, 1) * f.sin_part.cast<Complex>();
+  }
+  for (int p = 0; p < basis_.pairs(); ++p) {
+    const auto [k1, k2] = basis_.pair(p);
+    const double w = k1 * omega + k2 * omega2;
+    // Coefficients as z = a - i b: the residual's rows are r_a - i r_b = Zr z - amplitude g Fr.
+    const int ia = p == 0 ? 0 : index(TorusBasis::cosine(p), 0), ib = p == 0 ? -1 : index(TorusBasis::sine(p), 0);
+    VectorXcd z = u.segment(ia, n).cast<Complex>();
+    if (p > 0) z -= Complex(0, 1) * u.segment(ib, n).cast<Complex>();
+    const VectorXcd* unit_force = forcing[static_cast<size_t>(p)].size() ? &forcing[static_cast<size_t>(p)] : nullptr;
+    const PairBalance b = linear_.balance(w, z, unit_force, amplitude * g, jacobian != nullptr);
+    r.segment(ia, n) += b.residual.real();
+    if (p > 0) r.segment(ib, n) -= b.residual.imag();
+    if (unit_force && r_omega && dg != 0) {
+      r_omega->segment(ia, n) -= amplitude * dg * b.reduced_force.real();
+      if (p > 0) r_omega->segment(ib, n) += amplitude * dg * b.reduced_force.imag();
     }
-    const int p = basis_.find_pair(f.order, 0);
-    const int ia = index(TorusBasis::cosine(p), 0), ib = index(TorusBasis::sine(p), 0);
-    r.segment(ia, n) -= amplitude * g * f.cos_part;
-    r.segment(ib, n) -= amplitude * g * f.sin_part;
+    if (!jacobian) continue;
+    jacobian->block(ia, ia, n, n) += b.stiffness.real();
+    if (p == 0) continue;
+    jacobian->block(ib, ib, n, n) += b.stiffness.real();
+    jacobian->block(ia, ib, n, n) += b.stiffness.imag();
+    jacobian->block(ib, ia, n, n) -= b.stiffness.imag();
+    // d/dOmega at fixed coefficients, times dOmega/domega2 = k2 and dOmega/domega = k1.
+    jacobian->block(ia, w2, n, 1) += k2 * b.frequency_derivative.real();
+    jacobian->block(ib, w2, n, 1) -= k2 * b.frequency_derivative.imag();
     if (r_omega) {
-      r_omega->segment(ia, n) -= amplitude * dg * f.cos_part;
-      r_omega->segment(ib, n) -= amplitude * dg * f.sin_part;
+      r_omega->segment(ia, n) += k1 * b.frequency_derivative.real();
+      r_omega->segment(ib, n) -= k1 * b.frequency_derivative.imag();
     }
   }
 }
@@ -121,20 +136,20 @@ void TorusSystem::add_element_forces(const VectorXd& u, double omega, VectorXd& 
     local_x_.resize(basis_.grid(), k);
     local_v_.resize(basis_.grid(), k);
     for (int i = 0; i < k; ++i) {
-      local_x_.col(i) = x_samples_.col(element->dofs[static_cast<size_t>(i)]);
-      local_v_.col(i) = v_samples_.col(element->dofs[static_cast<size_t>(i)]);
+      local_x_.col(i) = x_samples_.col(column(element->dofs[static_cast<size_t>(i)]));
+      local_v_.col(i) = v_samples_.col(column(element->dofs[static_cast<size_t>(i)]));
     }
     element->evaluate(local_x_, local_v_, omega, element->property_values(hbm_.parameter_values()), response, false);
     const MatrixXd forces = analysis * response.force;  // nc x k
     const bool velocity = element->depends_on_velocity() && response.dforce_dv.size() > 0;
     for (int i = 0; i < k; ++i) {
-      const int di = element->dofs[static_cast<size_t>(i)];
+      const int di = column(element->dofs[static_cast<size_t>(i)]);
       for (int c = 0; c < nc; ++c) r(index(c, di)) += forces(c, i);
       if (!jacobian) continue;
       VectorXd by_omega2 = VectorXd::Zero(basis_.grid()), by_omega = VectorXd::Zero(basis_.grid());
       if (r_omega && element->depends_on_omega() && response.dforce_domega.size() > 0) by_omega = response.dforce_domega.col(i);
       for (int j = 0; j < k; ++j) {
-        const int dj = element->dofs[static_cast<size_t>(j)];
+        const int dj = column(element->dofs[static_cast<size_t>(j)]);
         weighted_ = basis_.synthesis().array().colwise() * response.dforce_dx.col(i + k * j).array();
         if (velocity) {
           const auto dv = response.dforce_dv.col(i + k * j).array();

@@ -12,7 +12,9 @@ namespace hbtrack::runs {
 using nlohmann::json;
 
 namespace {
-constexpr long kMaxTorusUnknowns = 4000;         // a dense Jacobian of 128 MB
+// A dense Jacobian of 512 MB; a run holds about four matrices of that order (rotor 67's torus, 5734
+// unknowns: 1.1 GB resident).
+constexpr long kMaxTorusUnknowns = 8000;
 constexpr long kMaxTorusGridEntries = 1L << 23;  // 64 MB per grid matrix, four of them
 
 // The run's options checked (CaseError naming the option) and resolved.
@@ -39,11 +41,12 @@ TorusOptions torus_options(const CaseDefinition& c, const HarmonicBalance& hbm, 
                     " and N2 >= 2 H2 + 1 = " + std::to_string(2 * t.h2 + 1));
   // Everything is dense: the Jacobian (unknowns^2) and the grid matrices (4 x grid x coefficients).
   const long coefficients = 1 + 2 * (t.h2 + static_cast<long>(t.h1) * (2 * t.h2 + 1));
-  const long unknowns = coefficients * hbm.model().dofs() + 1, grid = static_cast<long>(t.n1) * t.n2;
+  const long dofs = static_cast<long>(torus_retained_dofs(hbm, c.outputs).size());
+  const long unknowns = coefficients * dofs + 1, grid = static_cast<long>(t.n1) * t.n2;
   if (unknowns > kMaxTorusUnknowns)
-    throw CaseError(o.harmonics_name + ": the torus would have " + std::to_string(unknowns) + " unknowns (" +
-                    std::to_string(hbm.model().dofs()) + " dofs x " + std::to_string(coefficients) + " coefficients), at most " +
-                    std::to_string(kMaxTorusUnknowns) + " (its Jacobian is dense): fewer harmonics, or a smaller model");
+    throw CaseError(o.harmonics_name + ": the torus would have " + std::to_string(unknowns) + " unknowns (" + std::to_string(dofs) +
+                    " retained dofs x " + std::to_string(coefficients) + " coefficients), at most " + std::to_string(kMaxTorusUnknowns) +
+                    " (its Jacobian is dense): fewer harmonics, or a smaller model");
   if (grid * coefficients > kMaxTorusGridEntries)
     throw CaseError(o.samples_name + ": the grid of " + std::to_string(grid) + " samples times " + std::to_string(coefficients) +
                     " coefficients is above " + std::to_string(kMaxTorusGridEntries) + " (dense matrices): fewer samples or harmonics");
@@ -59,17 +62,18 @@ RunReport torus(const CaseDefinition& c, const TorusRunOptions& o, ResultSink& s
   // What the torus cannot take is bad input: checked before the folder is touched.
   try {
     const FoldScales unit;
-    TorusSystem check(hbm, TorusBasis(options.h1, options.h2, options.n1, options.n2), unit);
+    TorusSystem check(hbm, TorusBasis(options.h1, options.h2, options.n1, options.n2), unit, torus_retained_dofs(hbm, c.outputs));
   } catch (const std::invalid_argument& e) {
     throw CaseError(c.path + ": " + e.what());
   }
+  std::vector<std::string> retained_names;
+  for (const int d : torus_retained_dofs(hbm, c.outputs)) retained_names.push_back(c.model.dof_names[static_cast<size_t>(d)]);
   json summary = {{"verb", "torus"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   summary["options"]["torus"] = o.origin;
   summary["outputs"] = outputs_json(c);
   sink.open();
   const auto branch = sink.table("branch", torus_branch_header(c));
-  const auto states =
-      sink.table("states", torus_state_header(TorusBasis(options.h1, options.h2, options.n1, options.n2), c.model.dof_names));
+  const auto states = sink.table("states", torus_state_header(TorusBasis(options.h1, options.h2, options.n1, options.n2), retained_names));
   sink.summary(summary);
 
   const FoldScales scales = tracking_scales(hbm, c.nfrc, options.omega_max - options.omega_min);

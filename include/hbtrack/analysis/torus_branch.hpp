@@ -39,14 +39,14 @@ struct TorusEnvelope {
 struct TorusPoint {
   double omega = 0, omega2 = 0;
   double size = 0;                      // the phase pair's cosine coefficient (0 at the NS point)
-  Eigen::VectorXd u;                    // [X, omega2] (row 0: the periodic solution at the NS point, omega2 = nu)
+  Eigen::VectorXd u;                    // [X, omega2] on the retained dofs (row 0: the periodic solution at the NS point, omega2 = nu)
   std::vector<TorusEnvelope> envelope;  // one per output
   int newton_iterations = 0;
 };
 
 struct TorusBranchResult {
   double omega_ns = 0, nu = 0;               // the refined NS point and its frequency
-  int phase_pair = 0, phase_dof = 0;         // what the phase condition fixes
+  int phase_pair = 0, phase_dof = 0;         // what the phase condition fixes (phase_dof: a model dof)
   int k1 = 0, k2 = 0;                        // that pair
   std::vector<TorusPoint> points;            // the NS point (row 0), then the tori
   std::vector<SpecialPoint> special_points;  // the engine's (LP: a fold of the torus branch in omega)
@@ -56,6 +56,10 @@ struct TorusBranchResult {
 };
 
 using TorusObserver = std::function<bool(const TorusPoint&, int)>;
+
+// The dofs a torus keeps as unknowns: every element's and every output's (sorted); the others are
+// linear and condensed out (torus_linear_part.hpp).
+std::vector<int> torus_retained_dofs(const HarmonicBalance& hbm, const std::vector<OutputDof>& outputs);
 
 // Resolved grid sizes of `options` for `hbm` (0 replaced by their defaults).
 TorusOptions resolved_torus_options(const HarmonicBalance& hbm, TorusOptions options);
