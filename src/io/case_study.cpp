@@ -1,12 +1,17 @@
 #include "case_study.hpp"
 
+#include <array>
 #include <string>
+#include <utility>
 
 namespace hbtrack {
 
 namespace {
 
 using Eigen::VectorXd;
+
+// `hbtrack torus`'s own limits (runs/torus.cpp): a dense 2-D basis, H2 = 4 by default.
+constexpr int kMaxTorusHarmonics = 64, kDefaultTorusH2 = 4;
 
 // study.backbone (a table {mode, range} or an array of them) and study.switch (a boolean).
 void read_study_branches(const CaseReader& in, const toml::value& st, CaseDefinition& c) {
@@ -41,6 +46,42 @@ void read_study_branches(const CaseReader& in, const toml::value& st, CaseDefini
   }
 }
 
+// study.torus: true, or a table {harmonics = [H1, H2], samples = [N1, N2]} (each optional) of
+// `hbtrack torus`'s --harmonics and --samples; checked here so that a bad value fails the study
+// before it starts, not as a refused step after its NFRC.
+void read_study_torus(const CaseReader& in, const toml::value& st, CaseDefinition& c) {
+  const toml::value* t = in.find(st, "torus");
+  if (!t) return;
+  StudyTorus& torus = c.study.torus;
+  if (t->is_boolean()) {
+    torus.enabled = t->as_boolean();
+    return;
+  }
+  if (!t->is_table())
+    in.fail(t, "study.torus", "expected true or false, or a table {harmonics = [H1, H2], samples = [N1, N2]} (each optional)");
+  in.check_keys(*t, "study.torus", {"harmonics", "samples"});
+  torus.enabled = true;
+  auto pair = [&](const char* key) -> std::pair<const toml::value*, std::array<int, 2>> {
+    const std::string field = std::string("study.torus.") + key;
+    const toml::value* v = in.find(*t, key);
+    if (!v) return {nullptr, {0, 0}};
+    if (!v->is_array() || v->as_array().size() != 2) in.fail(v, field, "expected two integers [A, B]");
+    return {v, {in.integer(v->as_array()[0], field + "[0]"), in.integer(v->as_array()[1], field + "[1]")}};
+  };
+  const auto [harmonics, h] = pair("harmonics");
+  if (harmonics && !(1 <= h[0] && h[0] <= kMaxTorusHarmonics && 1 <= h[1] && h[1] <= kMaxTorusHarmonics))
+    in.fail(harmonics, "study.torus.harmonics",
+            "must be [H1, H2] with 1 <= H1, H2 <= " + std::to_string(kMaxTorusHarmonics) + " (the forcing's and the NS phase's)");
+  const auto [samples, n] = pair("samples");
+  // Without harmonics the torus takes the case's H and 4 (`hbtrack torus`'s defaults).
+  const int h1 = harmonics ? h[0] : c.harmonic_balance.harmonics, h2 = harmonics ? h[1] : kDefaultTorusH2;
+  if (samples && !(n[0] >= 2 * h1 + 1 && n[1] >= 2 * h2 + 1))
+    in.fail(samples, "study.torus.samples",
+            "must be [N1, N2] with N1 >= 2 H1 + 1 = " + std::to_string(2 * h1 + 1) + " and N2 >= 2 H2 + 1 = " + std::to_string(2 * h2 + 1));
+  if (harmonics) torus.h1 = h[0], torus.h2 = h[1];
+  if (samples) torus.n1 = n[0], torus.n2 = n[1];
+}
+
 }  // namespace
 
 void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
@@ -49,7 +90,7 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
   in.table(*st, "study");
   in.check_keys(*st, "study",
                 {"track", "backbone", "switch", "max_points", "simulate_periods", "simulate_element_steps", "max_added_curves",
-                 "track_ns_pd", "convergence"});
+                 "track_ns_pd", "torus", "convergence"});
   StudySettings& study = c.study;
   study.max_points = in.integer_or(*st, "max_points", "study.max_points", study.max_points);
   if (study.max_points < 2) in.fail(&st->at("max_points"), "study.max_points", "must be >= 2");
@@ -76,6 +117,7 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
       in.fail(conv, "study.convergence", "expected {harmonics = H >= 1, samples = N >= 2 H + 1} (H = 0: no check)");
   }
   read_study_branches(in, *st, c);
+  read_study_torus(in, *st, c);
   const toml::value* track = in.find(*st, "track");
   if (!track) return;
   if (!track->is_array()) in.fail(track, "study.track", "expected an array of tables {parameter = ..., range = [lo, hi]}");
