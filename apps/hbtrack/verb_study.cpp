@@ -23,6 +23,7 @@
 #include <optional>
 #include <set>
 
+#include "child_process.hpp"
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/results/results_writer.hpp"
@@ -97,7 +98,7 @@ bool Study::run_steps(const std::vector<Step>& steps) {
     const Step& s = steps[i];
     const std::string folder = dir_ + "/" + s.folder;
     // Resuming: a step the stopped study saw end, with its finished result, is kept as it is.
-    if (const auto done = previous_.find(s.folder); done != previous_.end() && step_done(dir_, s.folder, done->second, s.must_succeed)) {
+    if (const auto done = previous_.find(s.folder); done != previous_.end() && step_done(dir_, s, done->second)) {
       codes[i] = done->second["exit_code"].get<int>();
       summary_["steps"].push_back(done->second);
       summary_["resumed_steps"] = summary_["resumed_steps"].get<int>() + 1;
@@ -132,13 +133,19 @@ bool Study::run_steps(const std::vector<Step>& steps) {
     relay.forget(s.folder);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_start).count();
     if (!o_.common.quiet) relay.say(step_end_line(s.folder, code, seconds, ended, todo.size(), elapsed));
-    summary_["steps"].push_back({{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}});
+    json record = {{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}};
+    if (code == 2 && s.may_be_refused) {
+      const std::string why = child_error_line(dir_ + "/" + s.folder + "/log.txt");
+      record["skipped"] = why.empty() ? "refused (see " + s.folder + "/log.txt)" : why;
+      if (!o_.common.quiet) relay.say("study:   " + s.folder + " skipped: " + record["skipped"].get<std::string>());
+    }
+    summary_["steps"].push_back(record);
     save();
   });
   for (size_t k = 0; k < todo.size(); ++k) codes[todo[k]] = ran[k];
   for (size_t i = 0; i < steps.size(); ++i) {
     if (interrupted() || codes[i] >= 128 || codes[i] == kTaskNotStarted) return stop(to_string(StopReason::interrupted));
-    if (codes[i] == 0 || (codes[i] == 1 && !steps[i].must_succeed)) continue;
+    if (codes[i] == 0 || (codes[i] == 1 && !steps[i].must_succeed) || (codes[i] == 2 && steps[i].may_be_refused)) continue;
     return stop(steps[i].folder + " failed (exit " + std::to_string(codes[i]) + ", see " + dir_ + "/" + steps[i].folder + "/log.txt)");
   }
   return true;
