@@ -119,10 +119,12 @@ void tori_section(std::ostream& out, const json& s) {
       continue;
     }
     std::string ended = t.value("stop_reason", "no result");
-    if (t.contains("closed_at_ns"))
-      ended = "closed at NS" + std::to_string(t["closed_at_ns"].get<int>()) + " (last row " +
-              num(t.value("closed_at_distance", 0.0), "%.2g") + " from it in omega)";
-    else if (t.value("exit_code", 0) != 0)
+    if (t.contains("closed_at_ns")) {
+      const int at = t["closed_at_ns"].get<int>();
+      ended = "closed at NS" + std::to_string(at) + " (last row " + num(t.value("closed_at_distance", 0.0), "%.2g") + " from it in omega)";
+      // One that turned back (at fewer harmonics than the NFRC's, say) has not covered the band.
+      if (at != t.value("other_ns", 0)) ended += ", not at the band's other end";
+    } else if (t.value("exit_code", 0) != 0)
       ended += " (exit " + std::to_string(t.value("exit_code", 0)) + ")";
     std::string envelope;
     for (const auto& e : t.value("envelope", json::array()))

@@ -156,5 +156,4 @@ void read_study(const CaseReader& in, const toml::value& root, CaseDefinition& c
   }
 }
 
-
 }  // namespace hbtrack
