@@ -61,18 +61,18 @@ void read_study_torus(const CaseReader& in, const toml::value& st, CaseDefinitio
     in.fail(t, "study.torus", "expected true or false, or a table {harmonics = [H1, H2], samples = [N1, N2]} (each optional)");
   in.check_keys(*t, "study.torus", {"harmonics", "samples"});
   torus.enabled = true;
-  auto pair = [&](const char* key) -> std::pair<const toml::value*, std::array<int, 2>> {
+  auto integer_pair = [&](const char* key) -> std::pair<const toml::value*, std::array<int, 2>> {
     const std::string field = std::string("study.torus.") + key;
     const toml::value* v = in.find(*t, key);
     if (!v) return {nullptr, {0, 0}};
     if (!v->is_array() || v->as_array().size() != 2) in.fail(v, field, "expected two integers [A, B]");
     return {v, {in.integer(v->as_array()[0], field + "[0]"), in.integer(v->as_array()[1], field + "[1]")}};
   };
-  const auto [harmonics, h] = pair("harmonics");
+  const auto [harmonics, h] = integer_pair("harmonics");
   if (harmonics && !(1 <= h[0] && h[0] <= kMaxTorusHarmonics && 1 <= h[1] && h[1] <= kMaxTorusHarmonics))
     in.fail(harmonics, "study.torus.harmonics",
             "must be [H1, H2] with 1 <= H1, H2 <= " + std::to_string(kMaxTorusHarmonics) + " (the forcing's and the NS phase's)");
-  const auto [samples, n] = pair("samples");
+  const auto [samples, n] = integer_pair("samples");
   // Without harmonics the torus takes the case's H and 4 (`hbtrack torus`'s defaults).
   const int h1 = harmonics ? h[0] : c.harmonic_balance.harmonics, h2 = harmonics ? h[1] : kDefaultTorusH2;
   if (samples && !(n[0] >= 2 * h1 + 1 && n[1] >= 2 * h2 + 1))
