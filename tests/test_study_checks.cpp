@@ -49,6 +49,19 @@ TEST(StudyChecks, AValidationThatDidNotStartOrAFailedStepFailsTheStudy) {
   EXPECT_NE(failed[1].get<std::string>().find("no_convergence_at_start"), std::string::npos) << failed;
 }
 
+TEST(StudyChecks, ARefusedTorusIsSkippedNotFailedButOneThatStoppedFails) {
+  // Exit 2 with a recorded reason: the torus refused the case's laws (docs/study.md); exit 1: it ran
+  // and stopped, a finding the page must not hide.
+  json s = passing_summary();
+  s["steps"].push_back(
+      {{"folder", "torus_ns1"}, {"exit_code", 2}, {"skipped", "torus: elements[0] (iwan): its force depends on its past"}});
+  EXPECT_TRUE(hbtrack::cli::failed_checks(s).empty()) << hbtrack::cli::failed_checks(s);
+  s["steps"].back() = {{"folder", "torus_ns1"}, {"exit_code", 1}};
+  const json failed = hbtrack::cli::failed_checks(s);
+  ASSERT_EQ(failed.size(), 1u);
+  EXPECT_NE(failed[0].get<std::string>().find("torus_ns1: exit 1"), std::string::npos) << failed;
+}
+
 TEST(StudyChecks, AValidationThatLeftItsRangeIsJudgedWithItsContinuationBeyondIt) {
   json s = passing_summary();
   s["steps"][1]["exit_code"] = 1;

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <fstream>
 
 extern char** environ;
 
@@ -45,6 +46,15 @@ int run_child(const ChildTask& task) {
   while (waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) return -1;  // a signal to this process: the child got it too, wait for it
   return child_exit_code(status);
+}
+
+std::string child_error_line(const std::string& log_path) {
+  const std::string prefix = "hbtrack: ";
+  std::ifstream log(log_path);
+  std::string line, last;
+  while (std::getline(log, line))
+    if (line.rfind(prefix, 0) == 0) last = line.substr(prefix.size());
+  return last;
 }
 
 }  // namespace hbtrack::cli

@@ -28,4 +28,8 @@ int child_exit_code(int wait_status);
 // Starts the child and waits for it: its exit code, -1 when it could not be started.
 int run_child(const ChildTask& task);
 
+// The one-line error an hbtrack child ended with: the last line of its log that starts with
+// "hbtrack: ", without that prefix; "" when there is none.
+std::string child_error_line(const std::string& log_path);
+
 }  // namespace hbtrack::cli

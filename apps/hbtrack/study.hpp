@@ -43,14 +43,17 @@ class Study {
   // Runs independent steps side by side; false when the study cannot go on.
   bool run_steps(const std::vector<Step>& steps);
   bool stop(const std::string& reason);
+  // What summary.json's steps recorded of the step in `folder` (its last run), or an empty object.
+  const json& step_record(const std::string& folder) const;
   void save() const { write_json_atomically(dir_ + "/summary.json", summary_); }
   std::string first_output() const { return c_.outputs.empty() ? "" : c_.outputs.front().name; }
   double case_value(const std::string& name) const { return c_.parameters.value(c_.parameters.find(name)); }
 
   bool nominal();
 
-  // Beside the NFRC, as [study] asks: the backbones side by side, then the branch of each BP and
-  // PD in turn, a point that an earlier switched branch passes through not switched again.
+  // Beside the NFRC, as [study] asks: the backbones and the tori side by side (study_tori.hpp),
+  // then the branch of each BP and PD in turn, a point that an earlier switched branch passes
+  // through not switched again.
   bool branches();
 
   // Round k follows the k-th limit point in every parameter at once; a limit point that already

@@ -25,11 +25,14 @@ inline constexpr const char* kStageNames[kStages] = {"nominal NFRC", "branches",
                                                      "isolas",       "isola simulation", "convergence", "figures"};
 
 // One verb run into DIR/folder. A step that may fail keeps going with what it wrote (exit 1: a
-// tracking leg or a simulation that stopped early still leaves its points).
+// tracking leg or a simulation that stopped early still leaves its points). A step that may be
+// refused (exit 2: its verb cannot take the case, e.g. a torus with a hysteretic law) is recorded
+// as skipped, with the verb's one-line reason, and the study goes on without it.
 struct Step {
   std::string folder;
   std::vector<std::string> args;
   bool must_succeed = false;
+  bool may_be_refused = false;
 };
 
 }  // namespace hbtrack::cli

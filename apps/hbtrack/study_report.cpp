@@ -104,6 +104,41 @@ void branches_section(std::ostream& out, const json& s) {
   }
 }
 
+// The tori [study] torus asked for (study_tori.hpp): one row per unstable band between NS points.
+void tori_section(std::ostream& out, const json& s) {
+  if (!s.contains("tori")) return;
+  out << "## Quasi-periodic response (tori)\n\nFrom the lower NS point of each band of the nominal NFRC where the periodic branch is "
+         "unstable, the torus born there, continued in omega (`hbtrack torus`; its stability is not decided).\n\n"
+         "| NS point (omega) | band to | torus | points | how it ended | omega range | envelope: max (omega), min | time (s) |\n"
+         "|---|---|---|---|---|---|---|---|\n";
+  for (const auto& t : s["tori"]) {
+    out << "| NS" << t.value("ns", 0) << " (" << num(t.value("omega", 0.0)) << ") | NS" << t.value("other_ns", 0) << " ("
+        << num(t.value("other_omega", 0.0)) << ") | ";
+    if (t.contains("skipped")) {
+      out << t.value("folder", "") << " | | skipped: " << t["skipped"].get<std::string>() << " | | | |\n";
+      continue;
+    }
+    std::string ended = t.value("stop_reason", "no result");
+    if (t.contains("closed_at_ns")) {
+      const int at = t["closed_at_ns"].get<int>();
+      ended = "closed at NS" + std::to_string(at) + " (last row " + num(t.value("closed_at_distance", 0.0), "%.2g") + " from it in omega)";
+      // One that turned back (at fewer harmonics than the NFRC's, say) has not covered the band.
+      if (at != t.value("other_ns", 0)) ended += ", not at the band's other end";
+    } else if (t.value("exit_code", 0) != 0)
+      ended += " (exit " + std::to_string(t.value("exit_code", 0)) + ")";
+    std::string envelope;
+    for (const auto& e : t.value("envelope", json::array()))
+      envelope += (envelope.empty() ? "" : "; ") + e.value("name", "") + " " + num(e.value("max", 0.0)) + " (" +
+                  num(e.value("omega_at_max", 0.0)) + "), " + num(e.value("min", 0.0));
+    const json r = t.value("omega_range", json::array());
+    out << "[" << t.value("folder", "") << "](" << t.value("folder", "") << "/) | " << t.value("points", 0) << " | " << ended << " | "
+        << (r.size() == 2 ? num(r[0].get<double>()) + " to " + num(r[1].get<double>()) : "") << " | " << envelope << " | "
+        << num(t.value("wall_s", 0.0), "%.1f") << " |\n";
+  }
+  if (s["tori"].empty()) out << "| (the nominal NFRC has no unstable band between two NS points) | | | | | | | |\n";
+  out << "\n";
+}
+
 void tracking_section(std::ostream& out, const json& s) {
   if (!s.contains("tracking") || s["tracking"].empty()) return;  // nothing tracked: a study of backbones or switches
   out << "## Limit-point tracking\n\n| parameter | range | LP | omega at LP | points | stop | time (s) |\n|---|---|---|---|---|---|---|\n";
@@ -244,12 +279,14 @@ void write_study_report(const std::string& dir, const json& s) {
   nominal_section(out, s);
   friction_loop_gain_section(out, s);
   branches_section(out, s);
+  tori_section(out, s);
   tracking_section(out, s);
   simulation_section(out, s);
   isola_simulation_section(out, s);
   out << "## Steps\n\n| folder | exit code | time (s) |\n|---|---|---|\n";
   for (const auto& st : s["steps"])
-    out << "| " << st.value("folder", "") << " | " << st.value("exit_code", 0) << " | " << num(st.value("wall_s", 0.0), "%.1f") << " |\n";
+    out << "| " << st.value("folder", "") << " | " << st.value("exit_code", 0) << (st.contains("skipped") ? " (skipped)" : "") << " | "
+        << num(st.value("wall_s", 0.0), "%.1f") << " |\n";
   write_file_atomically(dir + "/index.md", out.str());
 }
 

@@ -65,10 +65,11 @@ std::map<std::string, json> steps_to_resume(const std::string& dir, const json& 
   return steps;
 }
 
-bool step_done(const std::string& dir, const std::string& folder, const json& recorded, bool must_succeed) {
+bool step_done(const std::string& dir, const Step& step, const json& recorded) {
   const int code = recorded.value("exit_code", -1);
-  if (code != 0 && (code != 1 || must_succeed)) return false;
-  return finished_result(dir + "/" + folder);
+  if (code == 2 && step.may_be_refused && recorded.contains("skipped")) return true;
+  if (code != 0 && (code != 1 || step.must_succeed)) return false;
+  return finished_result(dir + "/" + step.folder);
 }
 
 }  // namespace hbtrack::cli

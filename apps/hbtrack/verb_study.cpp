@@ -4,6 +4,8 @@
 //   nfrc/                 the nominal NFRC with stability
 //   backbone_modeK/       with [study] backbone: the nonlinear mode K (study_branches.hpp)
 //   switch_bpK/, _pdK/    with [study] switch: the branch born at the NFRC's special point K
+//   torus_nsK/            with [study] torus: the torus born at NS point K, across its band
+//                         (study_tori.hpp)
 //   track_P_lpK/          limit point K followed in parameter P (the case's [study] section)
 //   track_P_nsK/, _pdK/   with [study] track_ns_pd: NS (PD) point K followed in P
 //   validate_P_J/         an NFRC at a parameter value next to each extremum of the P curves
@@ -23,6 +25,7 @@
 #include <optional>
 #include <set>
 
+#include "child_process.hpp"
 #include "cli_common.hpp"
 #include "folder_lock.hpp"
 #include "hbtrack/results/results_writer.hpp"
@@ -39,6 +42,7 @@
 #include "study_report.hpp"
 #include "study_plan.hpp"
 #include "study_resume.hpp"
+#include "study_tori.hpp"
 #include "task_runner.hpp"
 
 namespace hbtrack::cli {
@@ -97,7 +101,7 @@ bool Study::run_steps(const std::vector<Step>& steps) {
     const Step& s = steps[i];
     const std::string folder = dir_ + "/" + s.folder;
     // Resuming: a step the stopped study saw end, with its finished result, is kept as it is.
-    if (const auto done = previous_.find(s.folder); done != previous_.end() && step_done(dir_, s.folder, done->second, s.must_succeed)) {
+    if (const auto done = previous_.find(s.folder); done != previous_.end() && step_done(dir_, s, done->second)) {
       codes[i] = done->second["exit_code"].get<int>();
       summary_["steps"].push_back(done->second);
       summary_["resumed_steps"] = summary_["resumed_steps"].get<int>() + 1;
@@ -132,16 +136,30 @@ bool Study::run_steps(const std::vector<Step>& steps) {
     relay.forget(s.folder);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_start).count();
     if (!o_.common.quiet) relay.say(step_end_line(s.folder, code, seconds, ended, todo.size(), elapsed));
-    summary_["steps"].push_back({{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}});
+    json record = {{"folder", s.folder}, {"exit_code", code}, {"wall_s", seconds}};
+    if (code == 2 && s.may_be_refused) {
+      const std::string why = child_error_line(dir_ + "/" + s.folder + "/log.txt");
+      record["skipped"] = why.empty() ? "refused (see " + s.folder + "/log.txt)" : why;
+      if (!o_.common.quiet) relay.say("study:   " + s.folder + " skipped: " + record["skipped"].get<std::string>());
+    }
+    summary_["steps"].push_back(record);
     save();
   });
   for (size_t k = 0; k < todo.size(); ++k) codes[todo[k]] = ran[k];
   for (size_t i = 0; i < steps.size(); ++i) {
     if (interrupted() || codes[i] >= 128 || codes[i] == kTaskNotStarted) return stop(to_string(StopReason::interrupted));
-    if (codes[i] == 0 || (codes[i] == 1 && !steps[i].must_succeed)) continue;
+    if (codes[i] == 0 || (codes[i] == 1 && !steps[i].must_succeed) || (codes[i] == 2 && steps[i].may_be_refused)) continue;
     return stop(steps[i].folder + " failed (exit " + std::to_string(codes[i]) + ", see " + dir_ + "/" + steps[i].folder + "/log.txt)");
   }
   return true;
+}
+
+const json& Study::step_record(const std::string& folder) const {
+  static const json none = json::object();
+  const json& steps = summary_["steps"];
+  for (auto it = steps.rbegin(); it != steps.rend(); ++it)
+    if (it->value("folder", "") == folder) return *it;
+  return none;
 }
 
 bool Study::stop(const std::string& reason) {
@@ -167,19 +185,27 @@ bool Study::nominal() {
   return true;
 }
 
-// Beside the NFRC, as [study] asks: the backbones side by side, then the branch of each BP and
-// PD in turn, a point that an earlier switched branch passes through not switched again.
+// Beside the NFRC, as [study] asks: the backbones and the tori side by side, then the branch of
+// each BP and PD in turn, a point that an earlier switched branch passes through not switched again.
 bool Study::branches() {
   stage_ = kBranches;
   const std::vector<BranchStep> backbones = backbone_steps(c_.study.backbones, o_.common.case_path);
+  const json points = summary_["nfrc"]["special_points"];
+  std::vector<TorusStep> tori;
+  if (c_.study.torus.enabled)
+    tori = torus_steps(o_.common.case_path, dir_ + "/nfrc", points, c_.study.torus, std::min(c_.nfrc.omega_start, c_.nfrc.omega_end),
+                       std::max(c_.nfrc.omega_start, c_.nfrc.omega_end));
   std::vector<Step> steps;
   for (const BranchStep& b : backbones) steps.push_back({b.folder, b.args, false});
+  // A torus the case's laws or size rule out is skipped (the verb's reason recorded), not a failure.
+  for (const TorusStep& t : tori) steps.push_back({t.folder, t.args, false, true});
   if (!run_steps(steps)) return false;
   for (size_t i = 0; i < backbones.size(); ++i) summary_["backbones"].push_back(backbone_entry(dir_, backbones[i], c_.study.backbones[i]));
+  if (c_.study.torus.enabled) summary_["tori"] = json::array();
+  for (const TorusStep& t : tori) summary_["tori"].push_back(torus_entry(dir_, t, points, c_.outputs, step_record(t.folder)));
   if (!c_.study.switch_branches) return true;
   summary_["switched"] = json::array();
   std::vector<std::string> folders;
-  const json points = summary_["nfrc"]["special_points"];
   for (size_t k = 0; k < points.size(); ++k) {
     const int point = static_cast<int>(k + 1);
     if (!switchable(points[k])) continue;
@@ -218,10 +244,10 @@ int run_study(const StudyOptions& options) {
   const std::unique_ptr<TaskRunner> runner = start_task_runner(o.jobs);
   if (!runner) return 0;
   const CaseDefinition c = load_case(o.common.case_path, o.common.sets);
-  if (c.study.track.empty() && c.study.backbones.empty() && !c.study.switch_branches)
-    throw CaseError(
-        o.common.case_path +
-        ": study.track: missing (the parameters to track, or a backbone or switch = true: nothing to study; see docs/study.md)");
+  if (c.study.track.empty() && c.study.backbones.empty() && !c.study.switch_branches && !c.study.torus.enabled)
+    throw CaseError(o.common.case_path +
+                    ": study.track: missing (the parameters to track, or a backbone, switch = true or torus = true: nothing to study; "
+                    "see docs/study.md)");
   for (const std::string& name : o.only) {
     const bool known = std::any_of(c.study.track.begin(), c.study.track.end(), [&](const StudyTrack& t) { return t.parameter == name; });
     if (!known) throw CaseError("--only: '" + name + "' is not tracked in the case's [study] section");

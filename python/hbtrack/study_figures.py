@@ -3,7 +3,8 @@
     /usr/bin/python3 python/plot_study.py STUDY_DIR [--units m]
 
 nfrc: the nominal NFRC, with the backbones and switched branches the study computed drawn over
-it; period_doubled_K: each branch switched at a PD K, zoomed on its band; per tracked parameter
+it; period_doubled_K: each branch switched at a PD K, zoomed on its band; torus_nsK: each torus
+born at NS point K over the nominal NFRC, the envelope between the NS points; per tracked parameter
 P: tracking_P (the curves on (omega, P) with the limit points of the validation NFRCs, which
 they must pass through), tracking_3d_P (omega, P, ||r(t)||_inf of the first output, validation NFRCs at
 their own value, isolas in colour), validation_P (the curves and the validation NFRCs and isolas on (omega, ||r||_inf of
@@ -25,6 +26,7 @@ from .plot import figures_for
 from .results import read_result
 from .special_points import SpecialPointType
 from .study_paper_figures import nfrc_isolas_simulation_figure, simulation_folder
+from .torus_figures import torus_figure
 from .units import length_factor, scale_lengths
 
 
@@ -43,6 +45,21 @@ def _nfrc_figures(study_dir, summary, length_unit, read=read_result):
         options = result["summary"]["options"]
         if result["kind"] == "switch" and options["switch"]["type"] == SpecialPointType.PERIOD_DOUBLING and len(result["branch"]["omega"]):
             figures[f"period_doubled_{options['switch']['point']}"] = period_doubled_figure(result, nfrc, length_unit)
+    return figures
+
+
+def _torus_figures(study_dir, summary, length_unit, read=read_result):
+    """Each torus of the study (summary "tori": torus_nsK) over the nominal NFRC with its NS points;
+    a skipped torus, or one without a row, has none."""
+    drawn = [t for t in summary.get("tori", []) if os.path.exists(os.path.join(study_dir, t["folder"], "branch.csv"))]
+    if not drawn:
+        return {}
+    nfrc = read(os.path.join(study_dir, "nfrc"))
+    figures = {}
+    for entry in drawn:
+        torus = read(os.path.join(study_dir, entry["folder"]))
+        if len(torus["branch"]["omega"]):
+            figures[entry["folder"]] = torus_figure(torus, nfrc=nfrc, length_unit=length_unit)
     return figures
 
 
@@ -141,6 +158,7 @@ def study_figures(study_dir, length_unit=None, model_unit=None):
     nominal_points = None  # the curves are named by the nominal NFRC's limit points, as its figure has them
     if os.path.exists(os.path.join(study_dir, "nfrc", "summary.json")):
         figures.update(_nfrc_figures(study_dir, summary, length_unit, read))
+        figures.update(_torus_figures(study_dir, summary, length_unit, read))
         nominal_points = read(os.path.join(study_dir, "nfrc"))["special_points"]  # lengths scaled: drawn on the curves
     for entry in summary.get("tracking", []):
         param = entry["parameter"]

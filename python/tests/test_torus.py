@@ -52,3 +52,21 @@ def test_hbtrack_plot_draws_a_torus_folder_over_its_nfrc(results_dir, nltva_frc)
     assert len(axes) == 2  # x1, x2
     labels = [t.get_text() for t in axes[0].get_legend().get_texts()]
     assert "NS (Neimark-Sacker)" in labels and "LP (fold)" in labels and "torus: max over the torus" in labels and "NFRC, unstable" in labels
+
+
+def test_study_draws_its_torus_over_the_nominal_nfrc(tmp_path):
+    # [study] torus = true: the study's torus_ns1/ drawn as `hbtrack plot` draws a torus folder,
+    # into figures/torus_ns1.png, which the summary lists (docs/study.md); on the least grid
+    # alias-free for the cubic springs, a third of the default's time.
+    from hbtrack.study_figures import study_figures
+    with open(NLTVA) as f:
+        (tmp_path / "case.toml").write_text(f.read() + "\n[study]\ntorus = { samples = [32, 17] }\nsimulate_periods = 0\n")
+    out = str(tmp_path / "out")
+    run_cli("study", str(tmp_path / "case.toml"), "--jobs", "1", "-o", out)
+    summary = read_result(out)["summary"]
+    assert "figures/torus_ns1.png" in summary["figures"]
+    figures = study_figures(out)
+    torus = read_result(out + "/torus_ns1")
+    lines = {line.get_label(): line for line in figures["torus_ns1"].get_axes()[1].get_lines()}
+    assert list(lines["torus: max over the torus"].get_ydata()) == list(torus["branch"]["max_x2"])
+    assert "NFRC, unstable" in lines

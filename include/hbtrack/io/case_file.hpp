@@ -35,6 +35,12 @@ struct StudyBackbone {
   int mode = 1;
   double min = 0, max = 0;  // the modal amplitude's range
 };
+// The quasi-periodic response the study computes past the nominal NFRC's NS points (`hbtrack
+// torus --harmonics H1,H2 --samples N1,N2`; 0: the torus' defaults).
+struct StudyTorus {
+  bool enabled = false;
+  int h1 = 0, h2 = 0, n1 = 0, n2 = 0;
+};
 struct StudySettings {
   std::vector<StudyTrack> track;
   std::vector<StudyBackbone> backbones;
@@ -51,6 +57,9 @@ struct StudySettings {
   // `--pd K`): their curves are drawn and listed with the limit points', but no validation NFRC
   // or isola search starts from them.
   bool track_ns_pd = false;
+  // From the lower NS point of every band of the nominal NFRC between two NS points where the
+  // periodic branch is unstable, the torus born there (`torus_nsK/`).
+  StudyTorus torus;
   // The convergence check: the nominal NFRC and the tracking curves recomputed with these
   // harmonics and samples (0: no check), their limit points and extrema compared.
   int convergence_harmonics = 0, convergence_samples = 0;
