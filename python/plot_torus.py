@@ -25,11 +25,12 @@ def main():
     parser.add_argument("--simulate", action="append", default=[], help="a simulate folder inside the band (repeat)")
     parser.add_argument("--zoom", help="LO:HI, the omega interval drawn")
     parser.add_argument("--units", default=None, help="the model's length unit for the labels")
+    parser.add_argument("--extreme", choices=("max", "min"), default="max", help="which extreme of each output is drawn")
     parser.add_argument("-o", "--output", required=True, help="figure file (PNG)")
     args = parser.parse_args()
     zoom = tuple(float(v) for v in args.zoom.split(":")) if args.zoom else None
     figure = torus_figure(read_result(args.torus_dir), nfrc=read_result(args.nfrc_dir), simulations=[read_result(d) for d in args.simulate],
-                          zoom=zoom, length_unit=args.units)
+                          zoom=zoom, length_unit=args.units, extreme=args.extreme)
     figure.savefig(args.output, dpi=130)
 
 

@@ -54,6 +54,24 @@ def test_hbtrack_plot_draws_a_torus_folder_over_its_nfrc(results_dir, nltva_frc)
     assert "NS (Neimark-Sacker)" in labels and "LP (fold)" in labels and "torus: max over the torus" in labels and "NFRC, unstable" in labels
 
 
+def test_torus_figure_draws_the_least_values_when_asked(results_dir, nltva_frc):
+    # extreme="min": the torus' min column, the NFRC's min, and negative axes (rotor 67's tips are
+    # stopped above by the casing: their min is the motion that changes).
+    import numpy as np
+    from hbtrack.torus_figures import torus_figure
+    folder = str(results_dir / "nltva_torus_for_min")
+    run_cli("torus", NLTVA, "--from", nltva_frc["folder"], "--ns", "1", "--range", "1.0:1.3", "--harmonics", "5,2", "-o", folder)
+    torus = read_result(folder)
+    axes = torus_figure(torus, nfrc=nltva_frc, extreme="min").get_axes()
+    drawn = [line for line in axes[1].get_lines() if line.get_label() == "torus: min over the torus"]
+    assert len(drawn) == 1
+    np.testing.assert_array_equal(drawn[0].get_ydata(), torus["branch"]["min_x2"])
+    assert axes[1].get_ylim()[1] == 0.0 and axes[1].get_ylim()[0] < torus["branch"]["min_x2"].min()
+    assert axes[1].get_ylabel().startswith("min x2")
+    with pytest.raises(ValueError, match="extreme must be 'max' or 'min'"):
+        torus_figure(torus, extreme="mean")
+
+
 def test_study_draws_its_torus_over_the_nominal_nfrc(tmp_path):
     # [study] torus = true: the study's torus_ns1/ drawn as `hbtrack plot` draws a torus folder,
     # into figures/torus_ns1.png, which the summary lists (docs/study.md); on the least grid
