@@ -89,7 +89,7 @@ TEST(ForcingGrowth, LinearResponseIsTheClosedFormFrfTimesTheGrowth) {
   m.forcing_growth = {2.0, 1.2};
   ParameterSet p;
   p.set("amplitude", 1.5);
-  HarmonicBalance hbm(m, {}, p, HarmonicBalanceOptions{3, 16, Condensation::none, {}, 1});
+  HarmonicBalance hbm(m, {}, p, HarmonicBalanceOptions{3, 16, Condensation::none, {}, 1, {}});
   for (double omega : {0.5, 1.2, 1.3, 2.5}) {
     const std::complex<double> x1 = 1.5 * std::pow(omega / 1.2, 2) * 0.4 / std::complex<double>(3.0 - 2.0 * omega * omega, 0.1 * omega);
     const VectorXd x = hbm.linear_solution(omega);

@@ -186,7 +186,7 @@ HarmonicBalance jenkins_oscillator() {
   auto e = std::make_shared<ElasticDryFriction>();
   e->weights = VectorXd::Ones(1);
   return HarmonicBalance(m, {with_properties(e, {0}, {1.0, 0.1})}, ParameterSet(),
-                         HarmonicBalanceOptions{21, 4096, Condensation::none, {}, 1});
+                         HarmonicBalanceOptions{21, 4096, Condensation::none, {}, 1, {}});
 }
 
 // Multipliers of the time integrator's own map over one period, by central differences of

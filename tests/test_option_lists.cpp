@@ -43,6 +43,8 @@ KeySet keys_of(const json& object) {
 // name of a choice, the other boolean, a nearby number. Empty when none was found.
 std::string changed_setting(const std::string& key, const json& now) {
   std::vector<std::string> candidates;
+  // A table of settings (harmonic_balance.adaptive, written when on): one the example takes.
+  if (key == "harmonic_balance.adaptive") candidates.push_back("{min=3, max=9, add_above=1e-3, drop_below=1e-5}");
   if (now.is_boolean()) candidates.push_back(now.get<bool>() ? "false" : "true");
   if (now.is_number_integer()) candidates.push_back(std::to_string(now.get<long>() + 1));
   if (now.is_number_float()) {
@@ -83,7 +85,10 @@ std::string changed_setting(const std::string& key, const json& now) {
 // summary.json records every setting the reader accepts, under the same key (the writer may add
 // what it derived: the unknowns and retained dofs of the harmonic balance).
 TEST(OptionLists, SummaryWritesEverySettingTheReaderAccepts) {
-  const json written = settings_of(load_case(kDuffing, {"harmonic_balance.subharmonic=2"}));  // written when not 1
+  json written = settings_of(load_case(kDuffing, {"harmonic_balance.subharmonic=2"}));  // written when not 1
+  // Written when on, which a subharmonic refuses: from a run of its own.
+  written["harmonic_balance"]["adaptive"] =
+      settings_of(load_case(kDuffing, {"harmonic_balance.adaptive={min=3, max=9}"})).at("harmonic_balance").at("adaptive");
   for (const std::string& section : kSettingSections) {
     KeySet keys = keys_of(written.at(section));
     if (section == "harmonic_balance") {

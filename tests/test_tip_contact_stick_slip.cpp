@@ -184,7 +184,7 @@ TEST(TipContactStickSlip, AftJacobianMatchesFiniteDifferences) {
   for (const Regime& r : kRegimes) {
     const std::vector<double> props = properties(r.engine_order, 0.0);
     HarmonicBalance hbm(m, ElementList{tip(ContactLawKind::polynomial, props)}, ParameterSet(),
-                        HarmonicBalanceOptions{3, 64, Condensation::none, {}, 1});
+                        HarmonicBalanceOptions{3, 64, Condensation::none, {}, 1, {}});
     VectorXd x = VectorXd::Zero(hbm.unknowns());
     x(0) = 0.2;  // the mean radial position, 0.1, at the clearance
     for (int c = 1; c < 7; ++c) {

@@ -73,7 +73,7 @@ int run_frc(const FrcOptions& options) {
   const CaseDefinition c = options.from.empty() ? load_case(o.case_path, o.sets) : case_from_point(options, start, start_row);
   if (!options.from.empty()) {
     // The unknowns are recovered from the point's harmonics by the case's own system.
-    start = read_hbm_state(options.from + "/states.csv", start_row, make_system(c));
+    start = read_hbm_state(options.from + "/states.csv", start_row, runs::make_system_at(c, c.harmonic_balance.harmonics));
     run.start = runs::StartPoint{start.omega, start.x, options.from + "/states.csv"};
     run.started_from = {{"folder", options.from}, {"point", start_row}, {"omega", start.omega}};
   }

@@ -46,12 +46,12 @@ from .timeint import simulate
 from .tool_runs import study, sweep
 
 if _core is not None:
-    from ._hbtrack import (Case, ContinuationOptions, ContinuationSection, FoldTrackingOptions, HarmonicBalanceOptions, NfrcOptions,
-                           StabilityOptions, SteadyStateOptions)
+    from ._hbtrack import (AdaptiveHarmonics, Case, ContinuationOptions, ContinuationSection, FoldTrackingOptions, HarmonicBalanceOptions,
+                           NfrcOptions, StabilityOptions, SteadyStateOptions)
 
 __all__ = ["load_case", "case_from_arrays", "frc", "solve", "modes", "campbell", "sweep", "study", "continuation", "backbone", "switch", "track", "isolas", "torus", "limit_point", "simulate",
            "with_settings", "reduce", "normal_modes", "output_harmonics", "residual", "add_python_element", "element_types", "read_result", "plots", "Case", "ContinuationSection", "ContinuationOptions",
-           "StabilityOptions", "HarmonicBalanceOptions", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
+           "StabilityOptions", "HarmonicBalanceOptions", "AdaptiveHarmonics", "NfrcOptions", "FoldTrackingOptions", "SteadyStateOptions"]
 
 
 def __getattr__(name):

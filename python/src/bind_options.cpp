@@ -96,8 +96,16 @@ void bind_options(py::module_& m) {
       .def_readwrite("hill_solver", &StabilityOptions::hill_solver)
       .def_readwrite("cross_check", &StabilityOptions::cross_check)
       .def_readwrite("every_point", &StabilityOptions::every_point);
+  bind_options_class<AdaptiveHarmonics>(m, "AdaptiveHarmonics",
+                                        "Harmonics chosen as frc goes (case file harmonic_balance.adaptive): H within [min, max], "
+                                        "one more above add_above, fewer below drop_below; max = 0: off.",
+                                        {"min", "max", "add_above", "drop_below"})
+      .def_readwrite("min", &AdaptiveHarmonics::min)
+      .def_readwrite("max", &AdaptiveHarmonics::max)
+      .def_readwrite("add_above", &AdaptiveHarmonics::add_above)
+      .def_readwrite("drop_below", &AdaptiveHarmonics::drop_below);
   bind_options_class<HarmonicBalanceOptions>(m, "HarmonicBalanceOptions", "Harmonic balance settings (case file [harmonic_balance]).",
-                                             {"harmonics", "subharmonic", "samples", "condensation"})
+                                             {"harmonics", "subharmonic", "samples", "condensation", "adaptive"})
       // H, or the list of harmonics balanced ([1, 3, 5]: harmonic_balance.harmonics as a list).
       .def_property(
           "harmonics",
@@ -121,7 +129,8 @@ void bind_options(py::module_& m) {
           })
       .def_readwrite("subharmonic", &HarmonicBalanceOptions::subharmonic)
       .def_readwrite("samples", &HarmonicBalanceOptions::samples)
-      .def_readwrite("condensation", &HarmonicBalanceOptions::condensation);
+      .def_readwrite("condensation", &HarmonicBalanceOptions::condensation)
+      .def_readwrite("adaptive", &HarmonicBalanceOptions::adaptive);
   bind_options_class<NfrcOptions>(m, "NfrcOptions",
                                   "NFRC settings: frequency range (rad/s) and length scale (case file [continuation]), "
                                   "continuation and stability.",

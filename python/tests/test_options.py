@@ -9,7 +9,7 @@ import hbtrack
 from conftest import DUFFING
 
 
-@pytest.mark.parametrize("cls", [hbtrack.ContinuationOptions, hbtrack.StabilityOptions, hbtrack.HarmonicBalanceOptions,
+@pytest.mark.parametrize("cls", [hbtrack.ContinuationOptions, hbtrack.StabilityOptions, hbtrack.HarmonicBalanceOptions, hbtrack.AdaptiveHarmonics,
                                  hbtrack.FoldTrackingOptions, hbtrack.SteadyStateOptions])
 def test_repr_rebuilds_an_equal_object(cls):
     original = cls()

@@ -95,7 +95,7 @@ ContinuationResult continue_within(ContinuationProblem& problem, const VectorXd&
     settled = *restart.resume_from;
   } else {
     BranchPoint first;
-    if (!stepper.start(u0, lambda_start, first)) return finish(StopReason::no_convergence_at_start);
+    if (!stepper.start(u0, lambda_start, first, restart.leave_along)) return finish(StopReason::no_convergence_at_start);
     if (!accept({std::move(first)})) return finish(StopReason::interrupted);
   }
   while (true) {

@@ -36,7 +36,7 @@ ContinuationStepper::ContinuationStepper(ContinuationProblem& problem, const Vec
   }
 }
 
-bool ContinuationStepper::start(const VectorXd& u0, double lambda_start, BranchPoint& first) {
+bool ContinuationStepper::start(const VectorXd& u0, double lambda_start, BranchPoint& first, const VectorXd* leave_along) {
   VectorXd u = u0;
   int used = 0;
   const int iterations = fixed_parameter_newton(s_.problem, u, lambda_start, options_.tolerance, 3 * options_.max_iterations, used);
@@ -49,14 +49,21 @@ bool ContinuationStepper::start(const VectorXd& u0, double lambda_start, BranchP
   s_.su = s_.problem.unknown_scale(u);
   x_ = s_.pack(u, lambda_start);
   s_.evaluate(x_);
+  if (leave_along && leave_along->size() != s_.m + 1)
+    throw std::invalid_argument("continuation: the direction to leave the start along has " + std::to_string(leave_along->size()) +
+                                " entries, the problem " + std::to_string(s_.m + 1));
   VectorXd lambda_axis = VectorXd::Zero(s_.m + 1);
   lambda_axis(s_.m) = direction_;
-  Tangent tan = s_.tangent(lambda_axis);
+  // Along a given direction the tangent's border is that direction itself (nearly the tangent,
+  // so the bordered matrix is well conditioned even on a fold) and the orientation follows it.
+  Tangent tan = s_.tangent(leave_along ? VectorXd(leave_along->normalized()) : lambda_axis);
   // Started on a fold (an isola from its limit point), the tangent's lambda component is zero to
   // rounding (1e-13 to 1e-16 on the tutorial's isola), so its sign, which the window's direction
   // would pick, changed with the BLAS kernel: the isola ran either way round on two CPUs. There
   // the branch leaves towards the larger response (|u| growing), a sign the whole state sets.
-  if (std::abs(tan.t(s_.m)) < kStartsOnAFold) {
+  if (leave_along) {
+    // s_.tangent oriented it along the given direction.
+  } else if (std::abs(tan.t(s_.m)) < kStartsOnAFold) {
     if (x_.head(s_.m).dot(tan.t.head(s_.m)) < 0) tan.t = -tan.t;
   } else if (tan.t(s_.m) * direction_ < 0) {
     tan.t = -tan.t;

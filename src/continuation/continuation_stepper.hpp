@@ -32,7 +32,8 @@ class ContinuationStepper {
 
   // The first point: Newton at fixed lambda_start from u0. False when it fails (the iterations
   // tried are counted in summary()).
-  bool start(const VectorXd& u0, double lambda_start, BranchPoint& first);
+  // leave_along: orients the first tangent (ContinuationRestart::leave_along), nullptr: the window.
+  bool start(const VectorXd& u0, double lambda_start, BranchPoint& first, const VectorXd* leave_along = nullptr);
   // Instead of start(): continue from a state taken by state() (indices go on after its points).
   void resume(const ContinuationState& state);
 

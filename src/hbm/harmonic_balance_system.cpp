@@ -61,6 +61,20 @@ void HarmonicBalanceOptions::validate() const {
     throw std::invalid_argument("harmonic_balance.samples: must be >= 2*harmonics+1 = " + std::to_string(2 * harmonics + 1) + ", got " +
                                 std::to_string(samples));
   if (samples > (1 << 20)) throw std::invalid_argument("harmonic_balance.samples: must be <= 1048576");
+  if (!adaptive.enabled()) return;
+  adaptive.validate();
+  // It adds and drops the top harmonic of 0..H, of omega itself.
+  if (!harmonic_list.empty()) throw std::invalid_argument("harmonic_balance.adaptive: not with a list of harmonics (it changes H of 0..H)");
+  if (subharmonic != 1)
+    throw std::invalid_argument("harmonic_balance.adaptive: not with subharmonic = " + std::to_string(subharmonic) +
+                                " (harmonics of omega only)");
+  if (harmonics < adaptive.min || harmonics > adaptive.max)
+    throw std::invalid_argument(
+        "harmonic_balance.harmonics: the H an adaptive run starts from must lie in [adaptive.min, adaptive.max] = [" +
+        std::to_string(adaptive.min) + ", " + std::to_string(adaptive.max) + "], got " + std::to_string(harmonics));
+  if (samples != 0 && samples < 2 * adaptive.max + 1)
+    throw std::invalid_argument("harmonic_balance.samples: must be >= 2*adaptive.max+1 = " + std::to_string(2 * adaptive.max + 1) +
+                                ", got " + std::to_string(samples));
 }
 
 int HarmonicBalanceOptions::effective_samples() const {

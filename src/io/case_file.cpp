@@ -176,12 +176,28 @@ void read_parameters(const CaseReader& in, const toml::value& root, CaseDefiniti
   if (c.parameters.find("amplitude") < 0) c.parameters.set("amplitude", 1.0);
 }
 
+// adaptive = { min = 3, max = 15, add_above = 1e-4, drop_below = 1e-6 }: min and max required.
+void read_adaptive_harmonics(const CaseReader& in, const toml::value& a, AdaptiveHarmonics& out) {
+  const std::string field = "harmonic_balance.adaptive";
+  in.table(a, field);
+  in.check_keys(a, field, {"min", "max", "add_above", "drop_below"});
+  out.min = in.integer(in.require(a, "min", field + ".min"), field + ".min");
+  out.max = in.integer(in.require(a, "max", field + ".max"), field + ".max");
+  out.add_above = in.number_or(a, "add_above", field + ".add_above", out.add_above);
+  out.drop_below = in.number_or(a, "drop_below", field + ".drop_below", out.drop_below);
+  try {
+    out.validate();
+  } catch (const std::invalid_argument& e) {
+    in.fail(&a, "", e.what());
+  }
+}
+
 }  // namespace
 
 void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition& c) {
   if (const toml::value* h = in.find(root, "harmonic_balance")) {
     in.table(*h, "harmonic_balance");
-    in.check_keys(*h, "harmonic_balance", {"harmonics", "samples", "condensation", "subharmonic"});
+    in.check_keys(*h, "harmonic_balance", {"harmonics", "samples", "condensation", "subharmonic", "adaptive"});
     const toml::value* list = in.find(*h, "harmonics");
     if (list && list->is_array()) {
       // A list of harmonics: sorted, unique integers >= 0 (0 only if listed); H is its largest.
@@ -205,6 +221,7 @@ void read_settings(const CaseReader& in, const toml::value& root, CaseDefinition
     c.harmonic_balance.subharmonic = in.integer_or(*h, "subharmonic", "harmonic_balance.subharmonic", 1);
     c.harmonic_balance.samples = in.integer_or(*h, "samples", "harmonic_balance.samples", 0);
     c.harmonic_balance.condensation = in.choice_or(*h, "condensation", Condensation::automatic);
+    if (const toml::value* a = in.find(*h, "adaptive")) read_adaptive_harmonics(in, *a, c.harmonic_balance.adaptive);
     try {
       c.harmonic_balance.validate();
     } catch (const std::invalid_argument& e) {

@@ -37,39 +37,41 @@ toml::value settings_document(const CaseDefinition& c) {
   const ContinuationOptions& co = n.continuation;
   const StabilityOptions& st = n.stability;
   toml::array forcing, elements(c.elements.size(), toml::table{});
+  toml::table harmonic_balance{
+      {"harmonics", harmonics}, {"subharmonic", h.subharmonic}, {"samples", h.samples}, {"condensation", to_string(h.condensation)}};
+  if (h.adaptive.enabled())
+    harmonic_balance["adaptive"] = toml::table{
+        {"min", h.adaptive.min}, {"max", h.adaptive.max}, {"add_above", h.adaptive.add_above}, {"drop_below", h.adaptive.drop_below}};
   for (const auto& f : c.model.forcing) forcing.push_back(toml::table{{"harmonic", f.order}});
-  toml::value root = toml::table{
-      {"parameters", parameters},
-      {"harmonic_balance",
-       toml::table{
-           {"harmonics", harmonics}, {"subharmonic", h.subharmonic}, {"samples", h.samples}, {"condensation", to_string(h.condensation)}}},
-      {"continuation", toml::table{{"omega_start", n.omega_start},
-                                   {"omega_end", n.omega_end},
-                                   {"length_scale", n.length_scale},
-                                   {"step", co.step},
-                                   {"step_min", co.step_min},
-                                   {"step_max", co.step_max},
-                                   {"max_points", co.max_points},
-                                   {"max_iterations", co.max_iterations},
-                                   {"target_iterations", co.target_iterations},
-                                   {"tolerance", co.tolerance},
-                                   {"max_angle", co.max_angle},
-                                   {"target_angle", co.target_angle},
-                                   {"predictor", to_string(co.predictor)},
-                                   {"corrector", to_string(co.corrector)},
-                                   {"wall_time_limit", co.wall_time_limit},
-                                   {"locate", co.locate},
-                                   {"reuse_factorization", co.reuse_factorization},
-                                   {"contraction", co.contraction}}},
-      {"stability", toml::table{{"method", to_string(st.method)},
-                                {"monodromy_steps", st.monodromy_steps},
-                                {"hill_solver", to_string(st.hill_solver)},
-                                {"cross_check", to_string(st.cross_check)},
-                                {"every_point", st.every_point}}},
-      // Only what the checks of the settings against the model read: each forcing's harmonic,
-      // and one (empty) entry per element.
-      {"forcing", forcing},
-      {"elements", elements}};
+  toml::value root = toml::table{{"parameters", parameters},
+                                 {"harmonic_balance", harmonic_balance},
+                                 {"continuation", toml::table{{"omega_start", n.omega_start},
+                                                              {"omega_end", n.omega_end},
+                                                              {"length_scale", n.length_scale},
+                                                              {"step", co.step},
+                                                              {"step_min", co.step_min},
+                                                              {"step_max", co.step_max},
+                                                              {"max_points", co.max_points},
+                                                              {"max_iterations", co.max_iterations},
+                                                              {"target_iterations", co.target_iterations},
+                                                              {"tolerance", co.tolerance},
+                                                              {"max_angle", co.max_angle},
+                                                              {"target_angle", co.target_angle},
+                                                              {"predictor", to_string(co.predictor)},
+                                                              {"corrector", to_string(co.corrector)},
+                                                              {"wall_time_limit", co.wall_time_limit},
+                                                              {"locate", co.locate},
+                                                              {"reuse_factorization", co.reuse_factorization},
+                                                              {"contraction", co.contraction}}},
+                                 {"stability", toml::table{{"method", to_string(st.method)},
+                                                           {"monodromy_steps", st.monodromy_steps},
+                                                           {"hill_solver", to_string(st.hill_solver)},
+                                                           {"cross_check", to_string(st.cross_check)},
+                                                           {"every_point", st.every_point}}},
+                                 // Only what the checks of the settings against the model read: each forcing's harmonic,
+                                 // and one (empty) entry per element.
+                                 {"forcing", forcing},
+                                 {"elements", elements}};
   // The reader derives the step bounds from the step when the file leaves them out: left out
   // here when they are still that, so that an override of the step moves them as `--set` does.
   const ContinuationOptions defaults;

@@ -25,6 +25,9 @@ json options_json(const CaseDefinition& c, const HarmonicBalance& hbm) {
   // harmonic k, a_k then b_k over the retained dofs; k is a multiple of omega / nu).
   if (!c.harmonic_balance.harmonic_list.empty()) harmonic_balance["harmonics"] = c.harmonic_balance.harmonic_list;
   if (c.harmonic_balance.subharmonic != 1) harmonic_balance["subharmonic"] = c.harmonic_balance.subharmonic;
+  // H changes along the branch (harmonics: the H it started from; states.csv is padded to max).
+  if (const AdaptiveHarmonics& a = c.harmonic_balance.adaptive; a.enabled())
+    harmonic_balance["adaptive"] = {{"min", a.min}, {"max", a.max}, {"add_above", a.add_above}, {"drop_below", a.drop_below}};
   json params = json::object();
   for (int i = 0; i < hbm.parameters().size(); ++i) params[hbm.parameters().names()[static_cast<size_t>(i)]] = hbm.parameters().value(i);
   const auto& co = c.nfrc.continuation;
@@ -92,7 +95,12 @@ void add_output_columns(std::vector<std::string>& header, const CaseDefinition& 
   for (const auto& o : c.outputs)
     for (const char* kind : {"max", "min", "h1"}) header.push_back(column_name(kind, "", o.name));
   // The harmonics balanced, named by their multiple of omega (k / nu: "3", "0.5"); h1 is above.
-  const std::vector<int> listed = c.harmonic_balance.selected_harmonics();
+  // An adaptive run's rows hold 0..adaptive.max, zeros above each point's own H.
+  std::vector<int> listed = c.harmonic_balance.selected_harmonics();
+  if (c.harmonic_balance.adaptive.enabled()) {
+    listed.clear();
+    for (int k = 0; k <= c.harmonic_balance.adaptive.max; ++k) listed.push_back(k);
+  }
   const int nu = c.harmonic_balance.subharmonic;
   for (const auto& o : c.outputs) {
     for (int k : listed)
@@ -118,6 +126,8 @@ std::vector<std::string> branch_header(const CaseDefinition& c) {
   std::vector<std::string> h{"omega"};
   if (c.nfrc.stability.enabled()) h.push_back("stable");
   add_output_columns(h, c);
+  // Last, so that the columns other tools read by position stay where they were.
+  if (c.harmonic_balance.adaptive.enabled()) h.push_back("harmonics");
   return h;
 }
 
@@ -125,6 +135,7 @@ std::vector<double> branch_row(const RecordedPoint& p) {
   std::vector<double> row{p.omega};
   if (p.stable >= 0) row.push_back(p.stable);
   add_output_values(row, p);
+  if (p.balanced_harmonics > 0) row.push_back(p.balanced_harmonics);
   return row;
 }
 
@@ -219,6 +230,30 @@ void add_nfrc_summary(json& summary, const CaseDefinition& c, HarmonicBalance& h
     for (const auto& sp : r.continuation.special_points)
       if (!sp.decided_by.empty()) special_decided[sp.decided_by] = special_decided[sp.decided_by].get<int>() + 1;
     summary["stability_methods"] = {{"points", decided}, {"special_points", special_decided}};
+  }
+}
+
+void add_adaptive_harmonics_summary(json& summary, const NfrcResult& r, int retained_dofs) {
+  if (r.recorded.empty()) return;
+  int lowest = r.recorded.front().balanced_harmonics, highest = lowest, changes = 0;
+  double sum = 0;
+  for (size_t i = 0; i < r.recorded.size(); ++i) {
+    const int h = r.recorded[i].balanced_harmonics;
+    lowest = std::min(lowest, h);
+    highest = std::max(highest, h);
+    sum += h;
+    if (i > 0 && h != r.recorded[i - 1].balanced_harmonics) ++changes;
+  }
+  const double mean = sum / static_cast<double>(r.recorded.size());
+  const auto unknowns = [&](double h) { return retained_dofs * (2 * h + 1); };
+  summary["adaptive_harmonics"] = {
+      {"harmonics", {{"min", lowest}, {"max", highest}, {"mean", mean}}},
+      {"unknowns", {{"min", static_cast<int>(unknowns(lowest))}, {"max", static_cast<int>(unknowns(highest))}, {"mean", unknowns(mean)}}},
+      {"changes", changes}};
+  json& special = summary["special_points"];
+  for (size_t i = 0; i < special.size() && i < r.continuation.special_points.size(); ++i) {
+    const size_t row = static_cast<size_t>(r.continuation.special_points[i].index);
+    if (row < r.recorded.size()) special[i]["harmonics"] = r.recorded[row].balanced_harmonics;
   }
 }
 

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
 
+#include "hbtrack/analysis/adaptive_nfrc.hpp"
 #include "hbtrack/results/continuation_state_file.hpp"
 #include "hbtrack/results/result_tables.hpp"
 #include "hbtrack/runs/artefact_warnings.hpp"
@@ -36,7 +38,9 @@ ClusterRecomputation cluster_recomputation(const CaseDefinition& c, const NfrcRe
     const double next = r.continuation.points[static_cast<size_t>(first) + 1].lambda;
     CaseDefinition more = c;
     more.harmonic_balance.samples *= kRelocationSamplesFactor;
-    HarmonicBalance hbm = make_system(more);
+    // An adaptive run's points are padded to its largest H: the stretch is computed again there.
+    const AdaptiveHarmonics& adaptive = c.harmonic_balance.adaptive;
+    HarmonicBalance hbm = make_system_at(more, adaptive.enabled() ? adaptive.max : c.harmonic_balance.harmonics);
     NfrcOptions options = c.nfrc;
     options.stability.method = StabilityMethod::none;  // the limit points are the engine's own
     options.continuation.step /= kRelocationStepFactor;
@@ -63,8 +67,21 @@ using nlohmann::json;
 
 RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& sink, RunMonitor& monitor) {
   const auto t0 = RunClock::now();
-  HarmonicBalance hbm = make_system(c);
-  if (options.start) options.start->require_unknowns(hbm.unknowns());
+  const AdaptiveHarmonics& adaptive = c.harmonic_balance.adaptive;
+  // The systems an adaptive run visits, built once each; the tables are written at its largest
+  // H (its points padded with zeros), which is also `hbm` below.
+  std::map<int, HarmonicBalance> systems;
+  const SystemWithHarmonics system_with = [&](int harmonics) -> HarmonicBalance& {
+    auto found = systems.find(harmonics);
+    if (found == systems.end()) found = systems.emplace(harmonics, make_system_at(c, harmonics)).first;
+    return found->second;
+  };
+  HarmonicBalance hbm = adaptive.enabled() ? system_with(adaptive.max) : make_system(c);
+  if (adaptive.enabled() && sink.resuming())
+    throw CaseError("--resume: " + sink.location() +
+                    " is an adaptive-harmonics run (harmonic_balance.adaptive), which does not resume: run it again");
+  if (options.start)
+    options.start->require_unknowns(adaptive.enabled() ? system_with(c.harmonic_balance.harmonics).unknowns() : hbm.unknowns());
   json summary = {{"verb", "frc"}, {"options", options_json(c, hbm)}, {"stop_reason", to_string(StopReason::running)}};
   if (!options.started_from.is_null()) summary["started_from"] = options.started_from;
   // Static, so known before the first point: a stopped run has it too.
@@ -109,7 +126,13 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
     return monitor.point({index, p.lambda, p.lambda, 0, coverage.add(p.lambda), &rec});
   };
   NfrcResult r;
-  if (!options.start) {
+  if (adaptive.enabled()) {
+    AdaptiveStart start{c.harmonic_balance.harmonics, {}, c.nfrc.omega_start, {}};
+    if (options.start)
+      start = {
+          c.harmonic_balance.harmonics, options.start->x, from, {std::min(from, end), std::max(from, end), end > from ? 1 : -1, false}};
+    r = compute_adaptive_nfrc(system_with, adaptive, start, c.nfrc, c.outputs, record);
+  } else if (!options.start) {
     r = compute_nfrc(hbm, c.nfrc, c.outputs, record, restart);
   } else {
     const ParameterWindow window{std::min(from, end), std::max(from, end), end > from ? 1 : -1, false};
@@ -118,6 +141,7 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   const auto& s = r.continuation.summary;
   const std::string stop_reason = to_string(monitor.stop_reason(s.stop_reason));
   add_nfrc_summary(summary, c, hbm, r);
+  if (adaptive.enabled()) add_adaptive_harmonics_summary(summary, r, hbm.retained_dofs());
   if (summary.contains("stability_methods"))
     for (const auto& [method, count] : earlier_methods.items()) {
       json& points = summary["stability_methods"]["points"];
@@ -129,8 +153,7 @@ RunReport frc(const CaseDefinition& c, const FrcOptions& options, ResultSink& si
   const double omega_range = std::abs(c.nfrc.omega_end - c.nfrc.omega_start);
   for (std::string& w : special_point_clusters(r.continuation.special_points, omega_range, cluster_recomputation(c, r)))
     warnings.push_back(std::move(w));
-  for (std::string& w :
-       unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), c.harmonic_balance.harmonics))
+  for (std::string& w : unconfirmed_hill_bifurcations(r.continuation.special_points, first_nonsmooth_element(c), hbm.basis().harmonics()))
     warnings.push_back(std::move(w));
   for (std::string& w : sticking_slider_warnings(hbm, r.continuation.points)) warnings.push_back(std::move(w));
   summary["warnings"] = warnings;

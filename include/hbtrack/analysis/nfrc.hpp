@@ -65,6 +65,9 @@ struct RecordedPoint {
   // The harmonics balanced (multiples of omega / subharmonic): the hK_/phaseK_ columns written.
   std::vector<int> harmonic_numbers;
   int subharmonic = 1;
+  // An adaptive run's (analysis/adaptive_nfrc.hpp): the H this point was balanced with; the
+  // harmonic_numbers above it hold zeros. 0: the run's one H.
+  int balanced_harmonics = 0;
 };
 
 RecordedPoint record_point(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const std::vector<OutputDof>& outputs);

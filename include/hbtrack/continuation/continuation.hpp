@@ -197,6 +197,11 @@ struct ContinuationRestart {
   // written whole and fsynced: at every point that was 3 s of a 30 s blade NFRC.
   std::function<void(const ContinuationState&)> on_state;
   double state_interval_s = 1.0;  // 0: at every step
+  // Without resume_from: leave the start along this direction (scaled coordinates of this
+  // problem, size + 1 entries, e.g. the tangent of the same branch computed with other
+  // unknowns and mapped onto these) instead of the window's direction; the window still says
+  // which bound ends the branch. Goes on the way a branch already travelled, across a fold too.
+  const Eigen::VectorXd* leave_along = nullptr;
 };
 
 // Follows the branch from u0 at lambda_start (inside the window) in the window's direction

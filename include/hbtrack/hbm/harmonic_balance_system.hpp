@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "hbtrack/elements/nonlinear_element.hpp"
+#include "hbtrack/hbm/adaptive_harmonics.hpp"
 #include "hbtrack/hbm/fourier_basis.hpp"
 #include "hbtrack/hbm/linear_condenser.hpp"
 #include "hbtrack/model/parameters.hpp"
@@ -34,6 +35,9 @@ struct HarmonicBalanceOptions {
   // nu: the harmonics are multiples of omega / nu (1: of omega; 2: a period-doubled solution,
   // period 2 (2 pi / omega)). The forcing's harmonic h is harmonic h nu of the basis.
   int subharmonic = 1;
+  // When enabled, an NFRC changes H along the branch within [min, max], starting from `harmonics`
+  // (analysis/adaptive_nfrc.hpp); a system itself is built at one H.
+  AdaptiveHarmonics adaptive;
   // Throws std::invalid_argument naming the field and the rule broken.
   void validate() const;
   int effective_samples() const;

@@ -42,6 +42,11 @@ std::vector<double> state_row(double omega, const Eigen::VectorXd& x);
 // used, outputs and special_points (each with its own outputs and the options' parameters).
 void add_nfrc_summary(nlohmann::json& summary, const CaseDefinition& c, HarmonicBalance& hbm, const NfrcResult& r);
 
+// An adaptive run's (harmonic_balance.adaptive): "adaptive_harmonics" with the min, max and mean
+// of H and of the unknowns q(2H+1) over the rows, the number of changes of H, and each special
+// point's H ("harmonics", that of its row).
+void add_adaptive_harmonics_summary(nlohmann::json& summary, const NfrcResult& r, int retained_dofs);
+
 // branch.csv of a tracking curve: leg, omega, the parameter, (NS and PD curves) ns_frequency,
 // max_/min_/h1_NAME per output, then the harmonics' columns as branch_header.
 std::vector<std::string> tracking_header(const CaseDefinition& c, const std::string& parameter,
