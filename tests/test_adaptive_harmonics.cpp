@@ -115,7 +115,7 @@ TEST(AdaptiveHarmonics, RisesWhereTheContactActsAndDropsWhereTheResponseIsLinear
   ASSERT_EQ(r.continuation.summary.stop_reason, StopReason::reached_end);
   int highest = 0;
   for (const RecordedPoint& p : r.recorded) highest = std::max(highest, p.balanced_harmonics);
-  EXPECT_GE(highest, 10);  // contact: the top share stays above 1e-3 up to H = 10 at least
+  EXPECT_GE(highest, 10);                // contact: the top share stays above 1e-3 up to H = 10 at least
   EXPECT_EQ(harmonics_near(r, 0.3), 3);  // far below the first resonance (0.62): no contact
   EXPECT_EQ(harmonics_near(r, 2.0), 3);  // and far above the second (1.62)
   // Every point is padded to max, and its own H is recorded.
@@ -127,8 +127,8 @@ TEST(AdaptiveHarmonics, RisesWhereTheContactActsAndDropsWhereTheResponseIsLinear
 
 // Duffing: the limit points of the adaptive run against a fixed run at its max.
 TEST(AdaptiveHarmonics, LimitPointsAgreeWithTheFixedRunAtMax) {
-  const CaseDefinition c = load_case(
-      kDuffing, {"harmonic_balance.harmonics=3", "harmonic_balance.adaptive={min=3, max=9, add_above=1e-4, drop_below=1e-7}"});
+  const CaseDefinition c =
+      load_case(kDuffing, {"harmonic_balance.harmonics=3", "harmonic_balance.adaptive={min=3, max=9, add_above=1e-4, drop_below=1e-7}"});
   const NfrcResult adaptive = adaptive_run(c), fixed = fixed_run(c, 9);
   const std::vector<double> a = limit_points(adaptive), f = limit_points(fixed);
   ASSERT_EQ(a.size(), 2u);
@@ -148,9 +148,9 @@ TEST(AdaptiveHarmonics, LimitPointsAgreeWithTheFixedRunAtMax) {
 // once: a change of H that would move a fold across its junction waits.
 TEST(AdaptiveHarmonics, NoJunctionLosesOrRepeatsALimitPoint) {
   for (const char* band : {"add_above=1e-2, drop_below=1e-4", "add_above=1e-3, drop_below=1e-6", "add_above=3e-5, drop_below=1e-8"}) {
-    const CaseDefinition c = load_case(
-        kDuffing, {"harmonic_balance.harmonics=5", std::string("harmonic_balance.adaptive={min=3, max=11, ") + band + "}",
-                   "stability.method=\"none\""});
+    const CaseDefinition c =
+        load_case(kDuffing, {"harmonic_balance.harmonics=5", std::string("harmonic_balance.adaptive={min=3, max=11, ") + band + "}",
+                             "stability.method=\"none\""});
     const NfrcResult r = adaptive_run(c);
     int changes = 0;
     for (size_t i = 1; i < r.recorded.size(); ++i) changes += r.recorded[i].balanced_harmonics != r.recorded[i - 1].balanced_harmonics;
@@ -184,7 +184,8 @@ TEST(AdaptiveHarmonics, BadSettingsFailNamingTheFieldAndTheRule) {
       {h + "adaptive = {min = 2, max = 9}", "harmonic_balance.adaptive.min: must be >= 3"},
       {h + "adaptive = {min = 6, max = 4}", "harmonic_balance.adaptive.max: must be >= min = 6"},
       {h + "adaptive = {min = 3, max = 9, drop_below = 0}", "harmonic_balance.adaptive.drop_below: must be > 0"},
-      {h + "adaptive = {min = 3, max = 9, add_above = 1e-6, drop_below = 1e-5}", "harmonic_balance.adaptive.add_above: must be > drop_below"},
+      {h + "adaptive = {min = 3, max = 9, add_above = 1e-6, drop_below = 1e-5}",
+       "harmonic_balance.adaptive.add_above: must be > drop_below"},
       {h + "adaptive = {min = 3, max = 9, add_above = 2}", "harmonic_balance.adaptive.add_above: must be < 1"},
       {h + "adaptive = {min = 3}", "harmonic_balance.adaptive.max: missing (required)"},
       {h + "adaptive = {min = 3, max = 9, add = 1}", "harmonic_balance.adaptive.add: unknown key"},
@@ -218,7 +219,7 @@ TEST(AdaptiveHarmonics, CliWritesEachPointsHAndRefusesResumeAndOtherVerbs) {
   const std::string out = (dir / "frc").string();
   ASSERT_EQ(test::run_cli("frc " + kDuffing + " -q -o " + out + sets).exit_code, 0);
   const nlohmann::json summary = test::read_json(dir / "frc" / "summary.json");
-  EXPECT_EQ(summary.at("adaptive_harmonics").at("unknowns").at("min"), 7);  // 1 dof, H = 3
+  EXPECT_EQ(summary.at("adaptive_harmonics").at("unknowns").at("min"), 7);     // 1 dof, H = 3
   EXPECT_EQ(summary.at("options").at("harmonic_balance").at("unknowns"), 19);  // the tables' H = max = 9
   std::ifstream branch(dir / "frc" / "branch.csv");
   std::string header;
@@ -229,8 +230,8 @@ TEST(AdaptiveHarmonics, CliWritesEachPointsHAndRefusesResumeAndOtherVerbs) {
   EXPECT_EQ(resume.exit_code, 2);
   EXPECT_NE(resume.err.find("--resume: " + out + " is an adaptive-harmonics run"), std::string::npos) << resume.err;
   EXPECT_EQ(std::count(resume.err.begin(), resume.err.end(), '\n'), 1) << resume.err;
-  const test::CliRun track =
-      test::run_cli("track " + kDuffing + " --from " + out + " --lp 1 --param amplitude --range 0.5:1.5 -q -o " + (dir / "t").string() + sets);
+  const test::CliRun track = test::run_cli("track " + kDuffing + " --from " + out + " --lp 1 --param amplitude --range 0.5:1.5 -q -o " +
+                                           (dir / "t").string() + sets);
   EXPECT_EQ(track.exit_code, 2);
   EXPECT_NE(track.err.find("harmonic_balance.adaptive: only frc changes H along a branch"), std::string::npos) << track.err;
 }

@@ -56,9 +56,7 @@ struct JunctionSide {
   int fold_sign = 0;
   int stable = -1;
 };
-JunctionSide side_of(const BranchPoint& p, const RecordedPoint& rec) {
-  return {p.tangent(p.tangent.size() - 1) >= 0 ? 1 : -1, rec.stable};
-}
+JunctionSide side_of(const BranchPoint& p, const RecordedPoint& rec) { return {p.tangent(p.tangent.size() - 1) >= 0 ? 1 : -1, rec.stable}; }
 
 // A point of the branch and the H it was balanced with (unpadded).
 struct SegmentEnd {
@@ -71,7 +69,8 @@ struct SegmentEnd {
 // the chord, in the units of the arc length: max|u| and the omega range).
 bool ahead_of(const BranchPoint& from, const BranchPoint& to, const SpecialPoint& sp, double omega_range) {
   const double unit = std::max(from.u.cwiseAbs().maxCoeff(), 1e-300);
-  return (sp.u - from.u).dot(to.u - from.u) / (unit * unit) + (sp.lambda - from.lambda) * (to.lambda - from.lambda) / (omega_range * omega_range) >
+  return (sp.u - from.u).dot(to.u - from.u) / (unit * unit) +
+             (sp.lambda - from.lambda) * (to.lambda - from.lambda) / (omega_range * omega_range) >
          0;
 }
 
@@ -84,7 +83,8 @@ struct Resolved {
 // and, with `climb` while they are more than h, with one more as long as the top share stays
 // above add_above (the last that converged). nullopt when Newton fails at `wanted`.
 std::optional<Resolved> solve_with_harmonics(const SystemWithHarmonics& system_with, const AdaptiveHarmonics& a, const BranchPoint& p,
-                                             int dofs, int h, int wanted, bool climb, const ContinuationOptions& co, int& newton_iterations) {
+                                             int dofs, int h, int wanted, bool climb, const ContinuationOptions& co,
+                                             int& newton_iterations) {
   std::optional<Resolved> solved;
   for (int trial = wanted;; ++trial) {
     const Eigen::VectorXd guess = with_harmonic_count(solved ? solved->x : p.u, dofs, trial);
@@ -147,7 +147,7 @@ NfrcResult compute_adaptive_nfrc(const SystemWithHarmonics& system_with, const A
     const int offset = passed - (first_passed_on ? 1 : 0);  // the branch index of this segment's point 0
     std::optional<int> wanted;
     bool sides_differ = false, stopped_by_caller = false;
-    SegmentEnd last;                    // the last point of the segment kept
+    SegmentEnd last;  // the last point of the segment kept
     int last_index = -1;
     std::optional<SegmentEnd> too_few;  // the point after it, which asked for more harmonics
     const RecordedObserver segment_observer = [&](const BranchPoint& p, const RecordedPoint& rec, int index) {
@@ -228,7 +228,8 @@ NfrcResult compute_adaptive_nfrc(const SystemWithHarmonics& system_with, const A
     const ContinuationOptions& co = options.continuation;
     int target = *wanted;
     if (too_few)
-      if (const auto needed = solve_with_harmonics(system_with, adaptive, too_few->point, q, h, *wanted, true, co, counts.newton_iterations))
+      if (const auto needed =
+              solve_with_harmonics(system_with, adaptive, too_few->point, q, h, *wanted, true, co, counts.newton_iterations))
         target = needed->harmonics;
     const auto junction = solve_with_harmonics(system_with, adaptive, last.point, q, h, target, !too_few, co, counts.newton_iterations);
     before_junction = last;

@@ -11,15 +11,15 @@ namespace {
 std::string adaptive_field(const char* key) { return std::string("harmonic_balance.adaptive.") + key; }
 
 // sum over the dofs of a_k^2 + b_k^2 (dense harmonic-major layout: a_k at block 2k-1, b_k at 2k).
-double harmonic_energy(const Eigen::VectorXd& x, int dofs, int k) {
-  return x.segment((2 * k - 1) * dofs, 2 * dofs).squaredNorm();
-}
+double harmonic_energy(const Eigen::VectorXd& x, int dofs, int k) { return x.segment((2 * k - 1) * dofs, 2 * dofs).squaredNorm(); }
 }  // namespace
 
 void AdaptiveHarmonics::validate() const {
   if (!enabled()) return;
   // Two harmonics above the first are measured (top_harmonic_share): H - 1 >= 2.
-  if (min < 3) throw std::invalid_argument(adaptive_field("min") + ": must be >= 3 (the criterion reads harmonics H-1 and H above the first), got " + std::to_string(min));
+  if (min < 3)
+    throw std::invalid_argument(adaptive_field("min") + ": must be >= 3 (the criterion reads harmonics H-1 and H above the first), got " +
+                                std::to_string(min));
   if (max < min)
     throw std::invalid_argument(adaptive_field("max") + ": must be >= min = " + std::to_string(min) + ", got " + std::to_string(max));
   if (max > 500) throw std::invalid_argument(adaptive_field("max") + ": must be <= 500, got " + std::to_string(max));
