@@ -53,19 +53,11 @@ MatrixXd eigenvector_samples(const VectorXcd& v, int n, const FourierBasis& peri
   return out;
 }
 
-// The columns of `samples` (grid x model-or-Hill dofs, `dof_of` mapping a column to its model
-// dof) that the torus keeps, in its column order.
-MatrixXd retained_columns(const MatrixXd& samples, const std::vector<int>& dof_of, const TorusSystem& system) {
-  MatrixXd out = MatrixXd::Zero(samples.rows(), system.dofs());
-  for (size_t k = 0; k < dof_of.size(); ++k)
-    if (const int column = system.column(dof_of[k]); column >= 0) out.col(column) = samples.col(static_cast<Eigen::Index>(k));
+// The columns of `samples` (grid x model dofs) that the torus keeps, in its column order.
+MatrixXd retained_columns(const MatrixXd& samples, const TorusSystem& system) {
+  MatrixXd out(samples.rows(), system.dofs());
+  for (int column = 0; column < system.dofs(); ++column) out.col(column) = samples.col(system.retained()[static_cast<size_t>(column)]);
   return out;
-}
-
-std::vector<int> identity_dofs(int n) {
-  std::vector<int> dofs(static_cast<size_t>(n));
-  for (int d = 0; d < n; ++d) dofs[static_cast<size_t>(d)] = d;
-  return dofs;
 }
 
 // x(theta1, theta2) of one dof (its coefficients in the basis' layout), its gradient and Hessian.
@@ -209,15 +201,12 @@ TorusBranchResult torus_branch(const HarmonicBalance& hbm, const VectorXd& x_ns,
   HarmonicBalance evaluator(hbm);
   const int model_dofs = hbm.model().dofs();
   const VectorXd full = evaluator.expand(z.head(q), result.omega_ns);
-  const MatrixXd periodic = retained_columns(periodic_samples(full, model_dofs, system.basis()), identity_dofs(model_dofs), system);
+  const MatrixXd periodic = retained_columns(periodic_samples(full, model_dofs, system.basis()), system);
   VectorXd u_periodic(system.size());
   u_periodic << system.project(periodic), result.nu;
-  // Hill's pencil is on every dof or on the balance's retained ones.
-  const int hill_dofs = static_cast<int>(v.size()) / hbm.basis().coefficients();
-  const std::vector<int> hill_dof_of = hill_dofs == model_dofs ? identity_dofs(model_dofs) : hbm.retained();
-  if (static_cast<int>(hill_dof_of.size()) != hill_dofs) throw std::logic_error("torus: Hill's eigenvector fits neither dof list");
+  // Hill's pencil (CriticalExponentSystem) is on every dof of the model, condensed balance or not.
   const auto shape_of = [&](const VectorXcd& vector) {
-    return system.project(retained_columns(eigenvector_samples(vector, hill_dofs, hbm.basis(), system.basis()), hill_dof_of, system));
+    return system.project(retained_columns(eigenvector_samples(vector, model_dofs, hbm.basis(), system.basis()), system));
   };
   VectorXd shape = shape_of(v);
 
