@@ -140,7 +140,15 @@ TEST(StudyCli, BadStudyInputGivesOneLineErrors) {
   const CliRun ns_pd = run_cli("study " + kSmallBlade + " --set study.track_ns_pd=1 -o " + dir.string());
   EXPECT_EQ(ns_pd.exit_code, 2);
   EXPECT_NE(ns_pd.err.find("study.track_ns_pd: expected true or false"), std::string::npos) << ns_pd.err;
-  for (const CliRun& run : {no_study, only, range, ns_pd}) EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  // An adaptive-harmonics case: refused before its nominal NFRC (only frc changes H; the study's
+  // tracking step would refuse it after that NFRC), naming the file and the field.
+  const CliRun adaptive = run_cli(
+      "study " + kSmallBlade + " --set harmonic_balance.harmonics=3 --set 'harmonic_balance.adaptive={min=3, max=9}' -o " + dir.string());
+  EXPECT_EQ(adaptive.exit_code, 2);
+  EXPECT_NE(adaptive.err.find(kSmallBlade + ": harmonic_balance.adaptive: a study holds one H"), std::string::npos) << adaptive.err;
+  EXPECT_FALSE(fs::exists(dir / "nfrc" / "summary.json"));
+  for (const CliRun& run : {no_study, only, range, ns_pd, adaptive})
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
   fs::remove_all(dir);
 }
 

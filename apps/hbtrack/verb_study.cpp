@@ -248,6 +248,12 @@ int run_study(const StudyOptions& options) {
     throw CaseError(o.common.case_path +
                     ": study.track: missing (the parameters to track, or a backbone, switch = true or torus = true: nothing to study; "
                     "see docs/study.md)");
+  // Checked before the nominal NFRC: frc alone changes H along a branch; the tracking, isolas
+  // and tori the study runs next would refuse the case after minutes of work.
+  if (c.harmonic_balance.adaptive.enabled())
+    throw CaseError(o.common.case_path +
+                    ": harmonic_balance.adaptive: a study holds one H (its tracking, isolas and tori take no adaptive harmonics); "
+                    "leave adaptive out, or --set harmonic_balance.adaptive.max=0");
   for (const std::string& name : o.only) {
     const bool known = std::any_of(c.study.track.begin(), c.study.track.end(), [&](const StudyTrack& t) { return t.parameter == name; });
     if (!known) throw CaseError("--only: '" + name + "' is not tracked in the case's [study] section");
