@@ -58,6 +58,8 @@ def torus_against_simulation(torus, simulation, names=None):
     branch = torus["branch"]
     if names is None:
         names = [c[4:] for c in branch if c.startswith("max_")]
+    if not names:
+        raise ValueError("names: no output to compare (the torus' branch has no max_NAME column: give the case [[outputs]])")
     extremes = []
     for name in names:
         for extreme in ("max", "min"):

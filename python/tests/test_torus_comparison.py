@@ -58,3 +58,10 @@ def test_compare_torus_prints_the_table_and_refuses_an_omega_without_a_row(band,
     bad = subprocess.run([sys.executable, script, torus, other], capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stdout == ""
     assert bad.stderr.strip().startswith(f"compare_torus.py: {other}: omega: the torus has no row at the simulation's omega = 1.15")
+
+
+def test_a_torus_without_outputs_is_refused_in_one_line(band):
+    torus, sim, _, _ = band
+    bare = dict(torus, branch={k: v for k, v in torus["branch"].items() if not k.startswith(("max_", "min_"))})
+    with pytest.raises(ValueError, match="names: no output to compare"):
+        torus_against_simulation(bare, sim)
