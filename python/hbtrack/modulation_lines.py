@@ -68,6 +68,11 @@ def modulation_lines(simulation, name, *, around=None, width=None, count=8):
     >>> lines = modulation_lines(read_result("out/r67_sim_2100"), "te")
     >>> [round(f - 2099.674, 2) for f, _ in lines[:3]]     # the carrier and the two sidebands
     """
+    return _lines(simulation, name, around, width)[0][:count]
+
+
+def _lines(simulation, name, around=None, width=None):
+    """Every line kept (strongest first, relative amplitudes) and the record's resolution."""
     dt, x = _record(simulation, name)
     omega = float(simulation["summary"]["omega"]) if around is None else float(around)
     half = 0.5 * omega if width is None else float(width)
@@ -78,8 +83,6 @@ def modulation_lines(simulation, name, *, around=None, width=None, count=8):
     inside = np.nonzero((frequency > omega - half) & (frequency < omega + half))[0]
     inside = inside[(inside > 0) & (inside < len(magnitude) - 1)]
     peaks = [j for j in inside if magnitude[j] > magnitude[j - 1] and magnitude[j] >= magnitude[j + 1]]
-    if not peaks:
-        return []
     lines = []
     for j in peaks:
         a, b, c = np.log(magnitude[j - 1 : j + 2] + 1e-300)
@@ -92,8 +95,17 @@ def modulation_lines(simulation, name, *, around=None, width=None, count=8):
         leaked = any(size < _leakage_level(abs(f - g) / resolution) * other for g, other in kept)
         if not leaked:
             kept.append((f, size))
-    strongest = kept[0][1]
-    return [(float(f), size / strongest) for f, size in kept[:count]]
+    strongest = kept[0][1] if kept else 1.0
+    return [(float(f), size / strongest) for f, size in kept], resolution
+
+
+def second_frequency(lines, omega, resolution, name="x"):
+    """omega2 from lines (as :func:`modulation_lines` returns them, strongest first): the offset of
+    the strongest one more than 2.5 resolutions from omega. ValueError when there is none."""
+    for f, _ in lines:
+        if abs(f - omega) > 2.5 * resolution:
+            return abs(f - omega)
+    raise ValueError(f"signals: no line of {name!r} beside omega = {omega}: the record looks periodic")
 
 
 def modulation_frequency(simulation, name):
@@ -120,9 +132,5 @@ def modulation_frequency(simulation, name):
     >>> modulation_frequency(read_result("out/r67_sim_2100"), "te")
     """
     omega = float(simulation["summary"]["omega"])
-    dt, x = _record(simulation, name)
-    resolution = 2.0 * np.pi / (dt * len(x))
-    for f, _ in modulation_lines(simulation, name, count=64):
-        if abs(f - omega) > 2.5 * resolution:
-            return abs(f - omega)
-    raise ValueError(f"signals: no line of {name!r} beside omega = {omega}: the record looks periodic")
+    lines, resolution = _lines(simulation, name)
+    return second_frequency(lines, omega, resolution, name)

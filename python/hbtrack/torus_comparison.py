@@ -3,7 +3,7 @@ frequency, and whether the integration's modulation has doubled its period (pyth
 docs/analyses.md, "Rotor 67's band")."""
 import numpy as np
 
-from .modulation_lines import modulation_frequency, modulation_lines
+from .modulation_lines import _lines, second_frequency
 from .torus_figures import simulated_extreme
 
 # A line counts as omega + (j + 1/2) omega2 when its offset is that within 2 % of omega2: lines of
@@ -41,12 +41,13 @@ def torus_against_simulation(torus, simulation, names=None):
     -------
     dict
         ``omega``; ``omega2`` (the torus row's) and ``omega2_simulated``
-        (:func:`modulation_frequency` of the first output); ``extremes``: one dict per output
+        (:func:`~hbtrack.modulation_lines.modulation_frequency` of the first output); ``extremes``: one dict per output
         and extreme (``name``, ``extreme`` "max"/"min", ``simulated``, ``torus``, ``difference`` =
         (torus - simulated) / |simulated|); ``half_lines``: the simulation's lines at omega +-
         (j + 1/2) omega2_simulated ((frequency, amplitude relative to the strongest), strongest
-        first; those above a thousandth of the strongest), which no torus of (omega, omega2) has: present, the integration's modulation has
-        doubled its period (a torus doubling) and the row is not its attractor.
+        first; those above a thousandth of the strongest), which no torus of (omega, omega2)
+        has: present, the integration's modulation has doubled its period (a torus doubling)
+        and the row is not its attractor.
 
     Examples
     --------
@@ -70,9 +71,10 @@ def torus_against_simulation(torus, simulation, names=None):
             value = float(branch[column][row])
             extremes.append({"name": name, "extreme": extreme, "simulated": simulated, "torus": value,
                              "difference": (value - simulated) / abs(simulated)})
-    omega2_simulated = modulation_frequency(simulation, names[0])
+    lines, resolution = _lines(simulation, names[0])  # one spectrum for omega2 and the half lines
+    omega2_simulated = second_frequency(lines, omega, resolution, names[0])
     half_lines = []
-    for f, size in modulation_lines(simulation, names[0], count=32):
+    for f, size in lines:
         halves = abs(f - omega) / (0.5 * omega2_simulated)
         nearest_odd = 2 * np.floor(halves / 2) + 1
         if size >= _HALF_LINE_FLOOR and abs(halves - nearest_odd) * 0.5 < _HALF_LINE_TOLERANCE:
