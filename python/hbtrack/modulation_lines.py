@@ -99,7 +99,7 @@ def _lines(simulation, name, around=None, width=None):
     return [(float(f), size / strongest) for f, size in kept], resolution
 
 
-def second_frequency(lines, omega, resolution, name="x"):
+def _second_frequency(lines, omega, resolution, name="x"):
     """omega2 from lines (as :func:`modulation_lines` returns them, strongest first): the offset of
     the strongest one more than 2.5 resolutions from omega. ValueError when there is none."""
     for f, _ in lines:
@@ -133,4 +133,4 @@ def modulation_frequency(simulation, name):
     """
     omega = float(simulation["summary"]["omega"])
     lines, resolution = _lines(simulation, name)
-    return second_frequency(lines, omega, resolution, name)
+    return _second_frequency(lines, omega, resolution, name)

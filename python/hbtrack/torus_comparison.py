@@ -3,7 +3,7 @@ frequency, and whether the integration's modulation has doubled its period (pyth
 docs/analyses.md, "Rotor 67's band")."""
 import numpy as np
 
-from .modulation_lines import _lines, second_frequency
+from .modulation_lines import _lines, _second_frequency
 from .torus_figures import simulated_extreme
 
 # A line counts as omega + (j + 1/2) omega2 when its offset is that within 2 % of omega2: lines of
@@ -72,7 +72,7 @@ def torus_against_simulation(torus, simulation, names=None):
             extremes.append({"name": name, "extreme": extreme, "simulated": simulated, "torus": value,
                              "difference": (value - simulated) / abs(simulated)})
     lines, resolution = _lines(simulation, names[0])  # one spectrum for omega2 and the half lines
-    omega2_simulated = second_frequency(lines, omega, resolution, names[0])
+    omega2_simulated = _second_frequency(lines, omega, resolution, names[0])
     half_lines = []
     for f, size in lines:
         halves = abs(f - omega) / (0.5 * omega2_simulated)
