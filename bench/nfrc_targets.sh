@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Issue 34's NFRC targets, measured in one run on one core: the blade and rotor 67 (both friction
-# senses) with stability sampled (the default), with Hill at every point, and without stability.
+# senses) with stability sampled (the default), with Hill at every point, and without stability;
+# NLvib's two-dof contact example (at NLvib's settings, H = 21, N = 1024) and the 8-mass contact
+# chain with their defaults (Hill cross-checked by shooting at every point) and without stability.
 # Prints a Markdown table from each run's summary.json (points, corrector iterations, dense LUs
 # per point, Hill evaluations, wall time, Hill's time and its ratio to the continuation's).
 #
-#   bash bench/nfrc_targets.sh [HBTRACK]        (default build/hbtrack)
+#   bash bench/nfrc_targets.sh [HBTRACK [CASE...]]   (default build/hbtrack, every case below)
 #
 # Not part of CI. Run it with nothing else on the machine (a build on the other core inflates
 # the times 3-10x) and say what else was running.
@@ -20,16 +22,20 @@ run() {  # run NAME CASE [ARGS...]
   shift 2
   OPENBLAS_NUM_THREADS=1 taskset -c 1 "$hbtrack" frc "$case" -o "$work/$name" -q "$@" 2> /dev/null || true
 }
-echo "| case | stability | points | iterations | LUs / point | Hill at | wall [s] | Hill [s] | Hill / continuation |"
+echo "| case | stability | points | iterations | LUs / point | Floquet at | wall [s] | stability [s] | stability / continuation |"
 echo "|---|---|---|---|---|---|---|---|---|"
-for c in blade rotor67 rotor67_reversed; do
+cases=(blade rotor67 rotor67_reversed nlvib_two_dof_contact chain_contact)
+[ $# -gt 1 ] && cases=("${@:2}")
+for c in "${cases[@]}"; do
   case_file=examples/${c%_reversed}/nominal.toml
+  modes=(sampled every none)
+  [ -f "examples/$c.toml" ] && case_file=examples/$c.toml modes=(sampled none)  # small: every point anyway
   extra=()
   [ "$c" = rotor67_reversed ] && extra=("${reversed[@]}")
   run "$c-sampled" "$case_file" "${extra[@]}"
-  run "$c-every" "$case_file" "${extra[@]}" --set stability.every_point=true
+  [ "${#modes[@]}" = 3 ] && run "$c-every" "$case_file" "${extra[@]}" --set stability.every_point=true
   run "$c-none" "$case_file" "${extra[@]}" --set 'stability.method="none"'
-  for mode in sampled every none; do
+  for mode in "${modes[@]}"; do
     /usr/bin/python3 - "$work/$c-$mode/summary.json" "$c" "$mode" << 'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))

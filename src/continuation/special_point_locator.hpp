@@ -15,7 +15,8 @@ struct TestValues {
 };
 
 // Zero of one test function between two accepted points, by the Illinois variant of the secant
-// method on the pseudo-arclength coordinate s along the tangent `t0` at the first point.
+// method on the pseudo-arclength coordinate s along the tangent `t0` at the first point; where
+// the function jumps across zero instead (a C0 law), by bisection onto the jump.
 struct Locator {
   Scaled& s;
   const ContinuationOptions& options;

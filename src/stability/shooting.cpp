@@ -70,13 +70,17 @@ class PeriodFlow {
   }
   // A(t, z) = [[0, I], [-M^-1 (K + df/dx), -M^-1 (C + df/dv)]].
   // (The time matters to history elements only, which shooting_floquet refuses.)
-  MatrixXd tangent(const VectorXd& z) {
+  // The last derivatives' A is kept: on a piecewise-linear law they repeat between switches.
+  const MatrixXd& tangent(const VectorXd& z) {
     eq_.nonlinear_force(0.0, z.head(n_), z.tail(n_), nonlinear_, &dfdx_, &dfdv_);
-    MatrixXd a = MatrixXd::Zero(2 * n_, 2 * n_);
-    a.topRightCorner(n_, n_).setIdentity();
-    a.bottomLeftCorner(n_, n_) = -mass_inverse_ * (eq_.stiffness() + dfdx_);
-    a.bottomRightCorner(n_, n_) = -mass_inverse_ * (eq_.damping() + dfdv_);
-    return a;
+    if (last_a_.size() > 0 && dfdx_ == last_dfdx_ && dfdv_ == last_dfdv_) return last_a_;
+    last_dfdx_ = dfdx_;
+    last_dfdv_ = dfdv_;
+    last_a_ = MatrixXd::Zero(2 * n_, 2 * n_);
+    last_a_.topRightCorner(n_, n_).setIdentity();
+    last_a_.bottomLeftCorner(n_, n_) = -mass_inverse_ * (eq_.stiffness() + dfdx_);
+    last_a_.bottomRightCorner(n_, n_) = -mass_inverse_ * (eq_.damping() + dfdv_);
+    return last_a_;
   }
   void switching(const VectorXd& z, VectorXd& g) { eq_.switching_values(z.head(n_), z.tail(n_), g); }
   VectorXd rk4(double t, const VectorXd& z, double h) {
@@ -127,15 +131,26 @@ class PeriodFlow {
   void advance_variational(double h, const VectorXd& z0, const VectorXd& f0, const VectorXd& z1, const VectorXd& f1, MatrixXd& phi) {
     const double c = std::sqrt(3.0) / 6.0;
     const MatrixXd a1 = tangent(hermite(0.5 - c, h, z0, f0, z1, f1));
-    const MatrixXd a2 = tangent(hermite(0.5 + c, h, z0, f0, z1, f1));
-    const MatrixXd omega = 0.5 * h * (a1 + a2) + std::sqrt(3.0) * h * h / 12.0 * (a2 * a1 - a1 * a2);
-    phi = omega.exp() * phi;
+    const MatrixXd& a2 = tangent(hermite(0.5 + c, h, z0, f0, z1, f1));
+    // Equal A at both Gauss points (A constant over the step) commute: the commutator is zero.
+    const MatrixXd omega =
+        a1 == a2 ? MatrixXd(0.5 * h * (a1 + a2)) : MatrixXd(0.5 * h * (a1 + a2) + std::sqrt(3.0) * h * h / 12.0 * (a2 * a1 - a1 * a2));
+    // A piecewise-linear law (a penalty spring, a gap) leaves A(t) constant between switches, so
+    // at a fixed step most steps repeat the last step's Omega exactly: its exponential, the
+    // step's main cost (a Pade approximant with scaling and squaring), is then reused as is.
+    if (!(omega.size() == last_omega_.size() && omega == last_omega_)) {
+      last_omega_ = omega;
+      last_exponential_ = omega.exp();
+    }
+    phi = last_exponential_ * phi;
   }
 
   EquationOfMotion& eq_;
   int n_;
   int periods_;
   MatrixXd mass_inverse_, dfdx_, dfdv_;
+  MatrixXd last_dfdx_, last_dfdv_, last_a_;  // the last derivatives tangent() saw and their A
+  MatrixXd last_omega_, last_exponential_;   // the last step's Magnus exponent and its exponential
   VectorXd force_, nonlinear_;
 };
 
