@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hbtrack/continuation/continuation.hpp"
+#include "straight_branch.hpp"
 
 namespace hbtrack_tests::file_lazy_monitor {
 
@@ -17,22 +18,6 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
 namespace {
-
-// R(u, lambda) = u - lambda: a straight branch, so nothing but the monitor sizes the steps.
-class StraightBranch final : public ContinuationProblem {
- public:
-  int size() const override { return 1; }
-  void evaluate(const VectorXd& u, double lambda, VectorXd& r, MatrixXd* jac, VectorXd* r_lambda) override {
-    r = VectorXd::Constant(1, u(0) - lambda);
-    if (jac) {
-      *jac = MatrixXd::Ones(1, 1);
-      *r_lambda = VectorXd::Constant(1, -1.0);
-    }
-  }
-  VectorXd unknown_scale(const VectorXd&) const override { return VectorXd::Ones(1); }
-  double parameter_scale() const override { return 1.0; }
-  double residual_scale() const override { return 1.0; }
-};
 
 // Its test function changes sign at lambda = kChange within a width of 1e-3 and is flat (+-1 to
 // 1e-300) a step away: no extrapolation sees the zero coming.
