@@ -47,7 +47,8 @@ MonitoredRun run(bool jump) {
   SignMonitor monitor(jump);
   ContinuationOptions options;
   options.step_max = 0.3;
-  const ContinuationResult r = continue_within(problem, VectorXd::Zero(1), 0.0, ParameterWindow{0.0, 10.0, 1, false}, options, {}, &monitor);
+  const ContinuationResult r =
+      continue_within(problem, VectorXd::Zero(1), 0.0, ParameterWindow{0.0, 10.0, 1, false}, options, {}, &monitor);
   return {r, monitor.evaluations, static_cast<int>(r.points.size())};
 }
 
