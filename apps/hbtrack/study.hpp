@@ -6,6 +6,7 @@
 // study_validation_stage.cpp (validation NFRCs, isolas, simulations), study_convergence_stage.cpp.
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -14,6 +15,7 @@
 #include "cli_common.hpp"
 #include "hbtrack/io/case_file.hpp"
 #include "hbtrack/results/results_writer.hpp"
+#include "study_comparisons.hpp"
 #include "study_curves.hpp"
 #include "study_plan.hpp"
 #include "task_runner.hpp"
@@ -108,12 +110,22 @@ class Study {
 
   void compare_simulation();
 
-  // The paper's Fig. 12: a stable point of an isolated branch, integrated in time.
-  bool isola_simulation();
+  // The paper's Fig. 12 (a stable point of an isolated branch, integrated in time) and the
+  // convergence stage's refined NFRC, side by side: neither reads the other, and the integration
+  // would otherwise hold one core alone for minutes. Then the convergence's tracking curves.
+  bool isola_simulation_and_convergence();
+  struct IsolaSimulation {
+    Step step;
+    std::string from;     // the isola's folder
+    cli::BranchPoint at;  // the isola's stable point
+  };
+  std::optional<IsolaSimulation> isola_simulation_step() const;
+  void record_isola_simulation(const IsolaSimulation& run);
 
-  // Every event recomputed with more harmonics and samples: the nominal NFRC, then each tracking
-  // curve from the refined NFRC's limit point nearest the original's.
-  bool convergence();
+  // Every event recomputed with more harmonics and samples: the nominal NFRC (this step), then
+  // each tracking curve from the refined NFRC's limit point nearest the original's.
+  std::optional<Step> refined_nfrc_step() const;
+  bool convergence_tracking();
 
   // Figures are a convenience: a missing matplotlib costs the pictures, not the study.
   void figures();

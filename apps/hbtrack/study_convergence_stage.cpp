@@ -12,19 +12,30 @@ namespace hbtrack::cli {
 
 using nlohmann::json;
 
-// Every event recomputed with more harmonics and samples: the nominal NFRC, then each tracking
-// curve from the refined NFRC's limit point nearest the original's.
-bool Study::convergence() {
+namespace {
+std::vector<std::string> refinement(const CaseDefinition& c) {
+  return {"--set", "harmonic_balance.harmonics=" + std::to_string(c.study.convergence_harmonics), "--set",
+          "harmonic_balance.samples=" + std::to_string(c.study.convergence_samples)};
+}
+}  // namespace
+
+std::optional<Step> Study::refined_nfrc_step() const {
+  if (c_.study.convergence_harmonics <= 0) return std::nullopt;
+  std::vector<std::string> args{"frc", o_.common.case_path, "--set", "stability.method=none"};
+  for (const std::string& a : refinement(c_)) args.push_back(a);
+  return Step{"converged/nfrc", args, false};
+}
+
+// Each tracking curve again from the refined NFRC's limit point nearest the original's, and the
+// events compared.
+bool Study::convergence_tracking() {
   stage_ = kConvergence;
   const int h = c_.study.convergence_harmonics, n = c_.study.convergence_samples;
-  if (h <= 0) return true;
-  const std::vector<std::string> refine{"--set", "harmonic_balance.harmonics=" + std::to_string(h), "--set",
-                                        "harmonic_balance.samples=" + std::to_string(n)};
+  const std::vector<std::string> refine = refinement(c_);
   auto with_refine = [&](std::vector<std::string> args) {
     args.insert(args.end(), refine.begin(), refine.end());
     return args;
   };
-  if (!run_steps({{"converged/nfrc", with_refine({"frc", o_.common.case_path, "--set", "stability.method=none"}), false}})) return false;
   const json refined = read_summary(dir_ + "/converged/nfrc");
   json report = {{"harmonics", h},
                  {"samples", n},

@@ -21,7 +21,7 @@ using nlohmann::json;
 // integration: all independent of each other.
 bool Study::validation_and_simulation() {
   stage_ = kValidation;
-  std::vector<Step> frcs, crossings;
+  std::vector<Step> frcs, crossings;  // run as one batch, the time integration first
   for (const StudyTrack& t : tracked_) {
     if (curves_[t.parameter].empty()) continue;
     std::vector<double> probes = probe_values(curves_[t.parameter], t.min, t.max, kProbeOffset);
@@ -52,9 +52,13 @@ bool Study::validation_and_simulation() {
     simulate.args.insert(simulate.args.end(),
                          {"--max-periods", std::to_string(periods), "--record-periods", std::to_string(std::min(4, periods)),
                           "--element-steps", std::to_string(c_.study.simulate_element_steps)});
-    frcs.push_back(simulate);
+    // First: the longest step of the stage (3 minutes on rotor 67, a validation NFRC 10-30 s)
+    // starts at once instead of running alone on one core after the others.
+    frcs.insert(frcs.begin(), simulate);
   }
-  if (!run_steps(frcs) || !run_steps(crossings) || !continue_validations_beyond_the_range()) return false;
+  // One batch: nothing here waits for anything else here.
+  frcs.insert(frcs.end(), crossings.begin(), crossings.end());
+  if (!run_steps(frcs) || !continue_validations_beyond_the_range()) return false;
   for (const Probe& p : probes_) compare(p);
   if (start.fold > 0 || start.point >= 0) compare_simulation();
   return true;
@@ -162,14 +166,13 @@ void Study::compare_simulation() {
   save();
 }
 
-// The paper's Fig. 12: a stable point of an isolated branch, integrated in time.
-bool Study::isola_simulation() {
-  stage_ = kIsolaSimulation;
-  if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return true;
+std::optional<Study::IsolaSimulation> Study::isola_simulation_step() const {
+  if (c_.study.simulate_periods <= 0 || c_.outputs.empty()) return std::nullopt;
   json tracking = json::array();
-  for (const StudyTrack& t : tracked_) tracking.push_back(entries_[t.parameter]);
+  for (const StudyTrack& t : tracked_)
+    if (const auto e = entries_.find(t.parameter); e != entries_.end()) tracking.push_back(e->second);
   const auto at = stable_isola_point(dir_, tracking, first_output());
-  if (!at) return true;
+  if (!at) return std::nullopt;
   const int periods = c_.study.simulate_periods;
   // `simulate --from` takes the isola's parameter values from its folder's summary.
   const std::string from = dir_ + "/" + at->folder;
@@ -179,12 +182,26 @@ bool Study::isola_simulation() {
                                 "--max-periods",    std::to_string(periods),
                                 "--record-periods", std::to_string(std::min(4, periods)),
                                 "--element-steps",  std::to_string(c_.study.simulate_element_steps)};
-  if (!run_steps({{"simulate_isola", args, false}})) return false;
-  summary_["isola_simulation"] = compare_with_simulation(from, at->point, read_summary(dir_ + "/simulate_isola"), c_.outputs);
-  summary_["isola_simulation"]["folder"] = at->folder;
-  summary_["isola_simulation"]["stable_margin"] = at->margin;
+  return IsolaSimulation{{"simulate_isola", args, false}, from, *at};
+}
+
+void Study::record_isola_simulation(const IsolaSimulation& run) {
+  summary_["isola_simulation"] = compare_with_simulation(run.from, run.at.point, read_summary(dir_ + "/simulate_isola"), c_.outputs);
+  summary_["isola_simulation"]["folder"] = run.at.folder;
+  summary_["isola_simulation"]["stable_margin"] = run.at.margin;
   save();
-  return true;
+}
+
+bool Study::isola_simulation_and_convergence() {
+  const std::optional<IsolaSimulation> isola = isola_simulation_step();
+  const std::optional<Step> refined = refined_nfrc_step();
+  std::vector<Step> batch;  // the integration first: the longer of the two
+  if (isola) batch.push_back(isola->step);
+  if (refined) batch.push_back(*refined);
+  stage_ = isola ? kIsolaSimulation : kConvergence;
+  if (!run_steps(batch)) return false;
+  if (isola) record_isola_simulation(*isola);
+  return !refined || convergence_tracking();
 }
 
 }  // namespace hbtrack::cli

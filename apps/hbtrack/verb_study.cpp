@@ -64,7 +64,7 @@ int Study::run() {
   if (resuming) summary_["resumed_steps"] = 0;
   save();
   const bool ok = nominal() && branches() && tracking() && ns_pd_tracking() && validation_and_simulation() && added_families() &&
-                  isolas() && isola_simulation() && convergence();
+                  isolas() && isola_simulation_and_convergence();
   // Only the parameters tracking reached: a study stopped at its nominal NFRC has none (a
   // null entry here made the checks and the page fail on "cannot use value() with null").
   for (const StudyTrack& t : tracked_)
