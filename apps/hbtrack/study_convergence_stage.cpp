@@ -13,17 +13,17 @@ namespace hbtrack::cli {
 using nlohmann::json;
 
 namespace {
-std::vector<std::string> refinement(const CaseDefinition& c) {
-  return {"--set", "harmonic_balance.harmonics=" + std::to_string(c.study.convergence_harmonics), "--set",
-          "harmonic_balance.samples=" + std::to_string(c.study.convergence_samples)};
+// A verb's arguments with the convergence's harmonics and samples set.
+std::vector<std::string> with_refinement(const CaseDefinition& c, std::vector<std::string> args) {
+  args.insert(args.end(), {"--set", "harmonic_balance.harmonics=" + std::to_string(c.study.convergence_harmonics), "--set",
+                           "harmonic_balance.samples=" + std::to_string(c.study.convergence_samples)});
+  return args;
 }
 }  // namespace
 
 std::optional<Step> Study::refined_nfrc_step() const {
   if (c_.study.convergence_harmonics <= 0) return std::nullopt;
-  std::vector<std::string> args{"frc", o_.common.case_path, "--set", "stability.method=none"};
-  for (const std::string& a : refinement(c_)) args.push_back(a);
-  return Step{"converged/nfrc", args, false};
+  return Step{"converged/nfrc", with_refinement(c_, {"frc", o_.common.case_path, "--set", "stability.method=none"}), false};
 }
 
 // Each tracking curve again from the refined NFRC's limit point nearest the original's, and the
@@ -31,11 +31,6 @@ std::optional<Step> Study::refined_nfrc_step() const {
 bool Study::convergence_tracking() {
   stage_ = kConvergence;
   const int h = c_.study.convergence_harmonics, n = c_.study.convergence_samples;
-  const std::vector<std::string> refine = refinement(c_);
-  auto with_refine = [&](std::vector<std::string> args) {
-    args.insert(args.end(), refine.begin(), refine.end());
-    return args;
-  };
   const json refined = read_summary(dir_ + "/converged/nfrc");
   json report = {{"harmonics", h},
                  {"samples", n},
@@ -52,9 +47,9 @@ bool Study::convergence_tracking() {
       if (lp == 0) continue;
       const std::string folder = "converged/" + curve.value("folder", std::string());
       steps.push_back({folder,
-                       with_refine({"track", o_.common.case_path, "--from", dir_ + "/converged/nfrc", "--lp", std::to_string(lp), "--param",
-                                    t.parameter, "--range", number_text(t.min) + ":" + number_text(t.max), "--set",
-                                    "continuation.max_points=" + std::to_string(c_.study.max_points)}),
+                       with_refinement(c_, {"track", o_.common.case_path, "--from", dir_ + "/converged/nfrc", "--lp", std::to_string(lp),
+                                            "--param", t.parameter, "--range", number_text(t.min) + ":" + number_text(t.max), "--set",
+                                            "continuation.max_points=" + std::to_string(c_.study.max_points)}),
                        false});
       which.push_back(&t);
     }

@@ -35,22 +35,24 @@ bool any_element_without_stepping(const HarmonicBalance& hbm) {
     if (e->history_dependent() && e->history_state_size() == 0) return true;
   return false;
 }
-}  // namespace
 
-namespace {
 // Whether the time domain can check Hill on this model at every point.
 bool cross_check_possible(const HarmonicBalance& hbm, const StabilityOptions& options) {
   return options.method == StabilityMethod::hill && options.cross_check != CrossCheck::off && hbm.model().dofs() <= kCrossCheckDofs &&
          !any_element_without_stepping(hbm);
 }
+
+// Whether the time domain decides every point whatever Hill finds there. Hysteretic (history)
+// elements are not smooth either, and there Hill is worse than slow: the harmonic balance
+// linearises the hysteresis for periodic perturbations only (lambda = 0), which can miss most
+// of the friction's damping of a perturbation (docs/stability.md).
+bool time_domain_decides(const HarmonicBalance& hbm, const StabilityOptions& options) {
+  return cross_check_possible(hbm, options) && !all_laws_smooth(hbm);
+}
 }  // namespace
 
 bool hill_needs_cross_check(const HarmonicBalance& hbm, const FloquetResult& hill, const StabilityOptions& options) {
-  if (!cross_check_possible(hbm, options)) return false;
-  // Hysteretic (history) elements are not smooth either, and there Hill is worse than slow:
-  // the harmonic balance linearises the hysteresis for periodic perturbations only (lambda = 0),
-  // which can miss most of the friction's damping of a perturbation (docs/stability.md).
-  return !all_laws_smooth(hbm) || hill.centroid_spread > kSpreadLimit;
+  return time_domain_decides(hbm, options) || (cross_check_possible(hbm, options) && hill.centroid_spread > kSpreadLimit);
 }
 
 namespace {
@@ -71,9 +73,8 @@ FloquetResult shooting_or_monodromy(HarmonicBalance& hbm, const Eigen::VectorXd&
 FloquetResult floquet(HarmonicBalance& hbm, const Eigen::VectorXd& x, double omega, const StabilityOptions& options) {
   if (options.method == StabilityMethod::monodromy) return monodromy_floquet(hbm, x, omega, options.monodromy_steps);
   if (options.method == StabilityMethod::shooting) return shooting_or_monodromy(hbm, x, omega, options.monodromy_steps);
-  // A law that is not smooth sends every point to the time domain whatever Hill finds there:
   // Hill's eigenvalues would be thrown away (on the 8-mass contact chain, a sixth of the run).
-  if (cross_check_possible(hbm, options) && !all_laws_smooth(hbm)) return shooting_or_monodromy(hbm, x, omega, options.monodromy_steps);
+  if (time_domain_decides(hbm, options)) return shooting_or_monodromy(hbm, x, omega, options.monodromy_steps);
   FloquetResult hill = hill_floquet(hbm, x, omega, options.hill_solver);
   if (hill_needs_cross_check(hbm, hill, options)) return shooting_or_monodromy(hbm, x, omega, options.monodromy_steps);
   return hill;
