@@ -11,12 +11,18 @@
 
 #include "hbtrack/continuation/continuation.hpp"
 #include "hbtrack/util/dense_lu.hpp"
+#include "hbtrack/util/single_precision_lu.hpp"
 #include "hbtrack/util/phase_timer.hpp"
 
 namespace hbtrack::continuation_detail {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+
+// The Newton matrix's size from which the chord corrector factors it in single precision:
+// below, its O(m^3) factorization is a small part of an iteration (the AFT is most of it on the
+// one- and two-dof examples), so double keeps their iterations as they were.
+constexpr int kSinglePrecisionFrom = 128;
 
 inline double inf_norm(const VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
@@ -43,6 +49,10 @@ struct Scaled {
   MatrixXd newton_matrix{};   // the bordered matrix last factored by the corrector
   MatrixXd tangent_matrix{};  // the bordered matrix at the converged point
   DenseLU lu{};               // factors of newton_matrix, or of tangent_matrix after a fresh tangent
+  // The chord corrector's Newton matrix in single precision (newton_single): its steps are
+  // approximate anyway, and the residual that decides convergence is evaluated in double.
+  SinglePrecisionLU newton_lu_single{};
+  bool newton_single = false;
   VectorXd solution{}, refinement_residual{}, product{};
   VectorXd y_before{};  // where the corrector's last step started
   int residual_evaluations = 0;
@@ -89,7 +99,8 @@ struct Scaled {
   Tangent tangent(const VectorXd& reference) {
     bordered(reference, tangent_matrix);
     Tangent out;
-    const bool same_border = newton_factors_current && newton_matrix.row(m).transpose() == reference;
+    // Single-precision factors would give the determinant's sign of the rounded matrix.
+    const bool same_border = newton_factors_current && !newton_single && newton_matrix.row(m).transpose() == reference;
     newton_factors_current = false;
     if (!(same_border && tangent_from_newton_factors(out))) {
       const ScopedPhase timing(Phase::factorization);
@@ -143,11 +154,27 @@ struct Scaled {
     return inf_norm(r) / rtol;
   }
   // Factors the Newton matrix [J; row] at the last evaluated point.
-  void factor_newton_matrix(const VectorXd& row) {
+  void factor_newton_matrix(const VectorXd& row, bool single) {
     bordered(row, newton_matrix);
     const ScopedPhase timing(Phase::factorization);
-    lu.compute(newton_matrix);
+    if (single)
+      newton_lu_single.compute(newton_matrix);
+    else
+      lu.compute(newton_matrix);
+    newton_single = single;
     ++factorizations;
+  }
+  // step <- N^-1 step with the Newton matrix's factors; single-precision factors whose
+  // solve is not finite are replaced by double ones.
+  void solve_newton(VectorXd& step) {
+    const ScopedPhase timing(Phase::factorization);
+    if (newton_single && newton_lu_single.solve_in_place(step)) return;
+    if (newton_single) {
+      lu.compute(newton_matrix);
+      newton_single = false;
+      ++factorizations;
+    }
+    lu.solve_in_place(step);
   }
 
   // Newton on [R(y); P(y)] = 0 from y, with P the pseudo-arclength plane direction.(y - x) = ds
@@ -156,7 +183,9 @@ struct Scaled {
   // last Newton matrix (a chord step: one residual and an O(m^2) solve instead of a Jacobian
   // and an O(m^3) factorization) as long as each step shrinks the error by options.contraction;
   // after a step that does not, the corrector goes on as Newton, from where that step started
-  // when it made the error worse.
+  // when it made the error worse. From kSinglePrecisionFrom unknowns, on a problem that allows
+  // it (single_precision_chords), the chord corrector factors in single precision; the Newton
+  // that takes over after a failed contraction factors in double.
   bool correct(VectorXd& y, const VectorXd& x, const VectorXd& direction, double ds, bool hypersphere, const ContinuationOptions& options,
                int& iterations) {
     newton_factors_current = false;
@@ -191,14 +220,12 @@ struct Scaled {
       }
       if (!std::isfinite(residual)) return false;
       if (it == options.max_iterations) return false;
-      if (!chord) factor_newton_matrix(p_row);
+      if (!chord)
+        factor_newton_matrix(p_row, options.reuse_factorization && m + 1 >= kSinglePrecisionFrom && problem.single_precision_chords());
       solution.resize(m + 1);
       solution.head(m) = -r;
       solution(m) = -p;
-      {
-        const ScopedPhase timing(Phase::factorization);
-        lu.solve_in_place(solution);
-      }
+      solve_newton(solution);
       newton_factors_current = true;
       if (!solution.allFinite()) return false;
       if (chord) ++chord_iterations;

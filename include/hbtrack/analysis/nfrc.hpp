@@ -41,6 +41,7 @@ class NfrcProblem final : public ContinuationProblem {
   double parameter_scale() const override { return omega_scale_; }
   double residual_scale() const override { return force_scale_; }
   bool has_corners() const override { return hbm_.has_corners(); }
+  bool single_precision_chords() const override { return true; }
 
  private:
   HarmonicBalance& hbm_;
