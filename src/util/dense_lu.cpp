@@ -9,7 +9,6 @@ extern "C" {
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
 void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv, double* b, const int* ldb,
              int* info);
-void openblas_set_num_threads(int threads);
 char* openblas_get_corename(void);
 }
 #endif
@@ -42,9 +41,7 @@ void DenseLU::compute(const MatrixXd& a) {
   factors_ = a;  // no allocation when the size is that of the previous factorization
   const int n = static_cast<int>(a.rows());
 #ifdef HBTRACK_OPENBLAS
-  // The target is one core: a threaded OpenBLAS would also compete with the caller's threads.
-  static const bool one_thread = (openblas_set_num_threads(1), true);
-  (void)one_thread;
+  use_one_openblas_thread();
   pivots_.resize(static_cast<size_t>(n));
   int info = 0;
   if (n > 0) {

@@ -7,7 +7,6 @@ extern "C" {
 // BLAS's Fortran interface as OpenBLAS exports it (column-major).
 void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k, const double* alpha, const double* a,
             const int* lda, const double* b, const int* ldb, const double* beta, double* c, const int* ldc);
-void openblas_set_num_threads(int threads);
 }
 #endif
 
@@ -19,8 +18,7 @@ void multiply(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const
   if (a.cols() != b.rows()) throw std::invalid_argument("multiply: inner dimensions differ");
   c.resize(a.rows(), b.cols());
 #ifdef HBTRACK_OPENBLAS
-  static const bool one_thread = (openblas_set_num_threads(1), true);
-  (void)one_thread;
+  use_one_openblas_thread();
   const int m = static_cast<int>(a.rows()), n = static_cast<int>(b.cols()), k = static_cast<int>(a.cols());
   if (m == 0 || n == 0) return;
   if (k == 0) {

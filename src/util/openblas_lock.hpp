@@ -12,4 +12,15 @@ inline std::mutex& openblas_mutex() {
   return m;
 }
 
+#ifdef HBTRACK_OPENBLAS
+extern "C" void openblas_set_num_threads(int threads);
+
+// The target is one core: a threaded OpenBLAS would also compete with the caller's threads. Set
+// once, before a kernel's first call.
+inline void use_one_openblas_thread() {
+  static const bool set = (openblas_set_num_threads(1), true);
+  (void)set;
+}
+#endif
+
 }  // namespace hbtrack

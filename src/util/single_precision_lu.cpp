@@ -9,7 +9,6 @@ extern "C" {
 void sgetrf_(const int* m, const int* n, float* a, const int* lda, int* ipiv, int* info);
 void sgetrs_(const char* trans, const int* n, const int* nrhs, const float* a, const int* lda, const int* ipiv, float* b, const int* ldb,
              int* info);
-void openblas_set_num_threads(int threads);
 }
 #endif
 
@@ -45,8 +44,7 @@ void SinglePrecisionLU::compute(const Eigen::MatrixXd& a) {
   factors_ = a.cast<float>();  // no allocation when the size is that of the previous factorization
   const int n = static_cast<int>(a.rows());
 #ifdef HBTRACK_OPENBLAS
-  static const bool one_thread = (openblas_set_num_threads(1), true);  // as DenseLU: one core
-  (void)one_thread;
+  use_one_openblas_thread();
   pivots_.resize(static_cast<size_t>(n));
   int info = 0;
   if (n > 0) {

@@ -32,9 +32,9 @@ class ContinuationProblem {
   // which the engine recognises (a turn that does not shrink with the step) and steps over.
   virtual bool has_corners() const { return false; }
   // True when the chord corrector may factor the Newton matrix in single precision (from 128
-  // unknowns): right where the matrix is well enough conditioned that single precision's
-  // rounding barely slows the chord steps (NFRCs: 15-18 % faster on the blade and rotor 67),
-  // not on the fold systems of `track`, whose chords then failed more often than they saved.
+  // unknowns): where the matrix is well enough conditioned that single precision's rounding
+  // barely slows the chord steps (NFRCs without stability: 16-20 % less time on the blade and
+  // rotor 67), not on the fold systems of `track`, whose chords then failed more than they saved.
   virtual bool single_precision_chords() const { return false; }
 };
 
